@@ -1,0 +1,322 @@
+/*
+ * libsample — texture filtering and mipmap sampling.
+ *
+ * This header is the manual. Read it top to bottom.
+ *
+ * 1. QUICK START
+ *
+ *     sample_image img = { .width = w, .height = h, .channels = 4,
+ *                          .format = SAMPLE_FORMAT_F32, .data = pixels };
+ *     sample_mip_params mip;  sample_mip_params_init(&mip);
+ *     sample_texture *tex;
+ *     sample_error err;
+ *     if (sample_texture_create(&img, &mip, &tex, &err) != SAMPLE_OK)
+ *         fprintf(stderr, "%s\n", err.message);
+ *     sample_sampler s;  sample_sampler_init(&s);     // OpenGL defaults
+ *     s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;     // trilinear
+ *     float rgba[4];
+ *     sample_one(tex, &s, &(sample_query){ u, v, dsdx, dtdx, dsdy, dtdy }, rgba);
+ *     sample_texture_destroy(tex);
+ *
+ * 2. COORDINATES (doc/semantics.md, DESIGN §2)
+ *
+ *   Normalized (s, t): texel (i, j) of a w × h level has its centre at
+ *   ((i + ½)/w, (j + ½)/h). Row 0 in memory is at t = 0. A query carries the
+ *   screen-space Jacobian in GLSL textureGrad order: dPdx = (dsdx, dtdx),
+ *   dPdy = (dsdy, dtdy). A zero Jacobian means "no footprint" (magnification
+ *   of the base level). Filtering is always done on linear values; 8-bit sRGB
+ *   texels are decoded with the exact sRGB EOTF first. Output is float RGBA:
+ *   1 channel reads as (r, 0, 0, 1), 2 as (r, g, 0, 1), 3 as (r, g, b, 1),
+ *   as OpenGL's R, RG and RGB formats do.
+ *
+ * 3. API LEVELS
+ *
+ *   sample_batch() is the primary entry point: one sampler state, an array of
+ *   queries, arrays of results. It validates and specializes once per call.
+ *   sample_one() is a thin wrapper over it.
+ *
+ * 4. MEMORY AND THREADS
+ *
+ *   A texture is immutable after creation: every function taking a
+ *   `const sample_texture *` may be called from any number of threads at once.
+ *   Nothing is allocated while sampling. There is no global state.
+ *   sample_texture_destroy() must not race with readers of the same texture.
+ *
+ * 5. BAD INPUT (DESIGN §10, doc/guarantees.md)
+ *
+ *   Creation validates everything and returns a status plus a message;
+ *   nothing half-built is ever returned. A query whose (s, t) or Jacobian
+ *   holds NaN or ±inf returns the sampler's border colour. Coordinates far
+ *   outside [0, 1] wrap as specified and never index out of bounds. Every
+ *   footprint filter reads at most SAMPLE_MAX_FOOTPRINT_TEXELS texels.
+ */
+#ifndef SAMPLE_SAMPLE_H
+#define SAMPLE_SAMPLE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SAMPLE_VERSION_MAJOR 0
+#define SAMPLE_VERSION_MINOR 1
+#define SAMPLE_VERSION_PATCH 0
+#define SAMPLE_VERSION_STRING "0.1.0"
+
+/* Largest texture side accepted, and the number of levels that implies. */
+#define SAMPLE_MAX_SIZE 65536
+#define SAMPLE_MAX_LEVELS 17
+/* Texel budget of one footprint-filtered query (anisotropic, Blinn–Newell,
+ * EWA), summed over the levels it reads. A degenerate or huge footprint is
+ * clamped to stay within it, so no query can stall a renderer. */
+#define SAMPLE_MAX_FOOTPRINT_TEXELS 1024
+
+/* ---- Errors ----------------------------------------------------------- */
+
+typedef enum sample_status {
+    SAMPLE_OK = 0,
+    SAMPLE_E_INVALID_ARGUMENT = 1, /* NULL where an object is needed, bad enum */
+    SAMPLE_E_BAD_SIZE = 2,         /* zero, negative or inconsistent sizes */
+    SAMPLE_E_TOO_LARGE = 3,        /* over SAMPLE_MAX_SIZE or bytes overflow */
+    SAMPLE_E_OUT_OF_MEMORY = 4,    /* an allocation failed; nothing was kept */
+    SAMPLE_E_UNSUPPORTED = 5,      /* valid request this build cannot serve */
+    SAMPLE_E_IO = 6,               /* libsample_io: file could not be read/written */
+    SAMPLE_E_CORRUPT = 7,          /* libsample_io: file is malformed */
+    SAMPLE_E_COLOR = 8,            /* libsample_io: colour-space conversion failed */
+    SAMPLE_STATUS_COUNT
+} sample_status;
+
+/* A short, static, English name of a status ("invalid argument"). */
+const char *sample_strerror(sample_status status);
+
+/* Optional detail for creation calls: pass NULL if not wanted. */
+typedef struct sample_error {
+    sample_status status;
+    char message[256]; /* what was wrong, with the offending values */
+} sample_error;
+
+/* ---- Textures ---------------------------------------------------------- */
+
+typedef enum sample_format {
+    SAMPLE_FORMAT_F32 = 0,    /* 32-bit float per channel */
+    SAMPLE_FORMAT_F16 = 1,    /* IEEE half per channel */
+    SAMPLE_FORMAT_UNORM8 = 2, /* 8-bit, value/255 */
+    SAMPLE_FORMAT_SRGB8 = 3,  /* 8-bit sRGB-encoded colour; alpha (4th) is linear */
+    SAMPLE_FORMAT_COUNT
+} sample_format;
+
+/* Bytes of one channel of a format (4, 2, 1, 1). */
+size_t sample_format_bytes(sample_format format);
+
+/* A caller-owned image: the library copies what it needs. */
+typedef struct sample_image {
+    int width, height;
+    int channels;         /* 1 to 4 */
+    sample_format format;
+    const void *data;     /* row 0 first (t = 0), channels interleaved */
+    size_t row_stride;    /* bytes between rows; 0 means tightly packed */
+} sample_image;
+
+typedef enum sample_wrap {
+    SAMPLE_WRAP_REPEAT = 0,                 /* i mod n */
+    SAMPLE_WRAP_MIRRORED_REPEAT = 1,        /* mirror every other period */
+    SAMPLE_WRAP_CLAMP_TO_EDGE = 2,          /* clamp(i, 0, n−1) */
+    SAMPLE_WRAP_CLAMP_TO_BORDER = 3,        /* outside reads the border colour */
+    SAMPLE_WRAP_MIRROR_CLAMP_TO_EDGE = 4,   /* mirror once, then clamp to edge */
+    SAMPLE_WRAP_CLAMP = 5,                  /* legacy GL_CLAMP: LINEAR blends border */
+    SAMPLE_WRAP_MIRROR_CLAMP = 6,           /* GL_MIRROR_CLAMP_EXT */
+    SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER = 7, /* GL_MIRROR_CLAMP_TO_BORDER_EXT */
+    SAMPLE_WRAP_COUNT
+} sample_wrap;
+
+typedef enum sample_mipgen {
+    SAMPLE_MIPGEN_NONE = 0,     /* base level only */
+    SAMPLE_MIPGEN_BOX = 1,      /* 2-tap box, 3-tap polyphase box on odd axes */
+    SAMPLE_MIPGEN_LANCZOS3 = 2, /* windowed sinc, a = 3 */
+    SAMPLE_MIPGEN_KAISER = 3,   /* Kaiser-windowed sinc (alpha 4, width 3) */
+    SAMPLE_MIPGEN_COUNT
+} sample_mipgen;
+
+/* How a pyramid is built at creation (DESIGN §6). Down-sampling is done on
+ * linear values; kernels that reach past an edge read as the wrap modes say
+ * (a texture meant to tile should be built with REPEAT). */
+typedef struct sample_mip_params {
+    sample_mipgen filter; /* default SAMPLE_MIPGEN_BOX */
+    sample_wrap wrap_s, wrap_t; /* default CLAMP_TO_EDGE */
+    int max_levels;       /* 0 = all the way to 1×1 */
+} sample_mip_params;
+
+void sample_mip_params_init(sample_mip_params *params);
+
+typedef struct sample_texture sample_texture;
+
+/* Copy `image` into a new texture and, unless mip is NULL or mip->filter is
+ * SAMPLE_MIPGEN_NONE, build its pyramid. */
+sample_status sample_texture_create(const sample_image *image,
+                                    const sample_mip_params *mip,
+                                    sample_texture **out, sample_error *err);
+
+/* Create from caller-supplied levels (e.g. read from a mip-mapped file).
+ * levels[k] must be max(1, ⌊w/2^k⌋) × max(1, ⌊h/2^k⌋) with the same channel
+ * count and format as levels[0]. A partial chain (count < full) is allowed. */
+sample_status sample_texture_create_levels(const sample_image *levels, int count,
+                                           sample_texture **out, sample_error *err);
+
+void sample_texture_destroy(sample_texture *tex); /* accepts NULL */
+
+typedef struct sample_texture_info {
+    int width, height, channels, levels;
+    sample_format format;
+    size_t bytes; /* texel memory held, all levels */
+} sample_texture_info;
+
+void sample_texture_info_get(const sample_texture *tex, sample_texture_info *info);
+/* Size of level k (0 ≤ k < levels); returns 0 and zeros if k is out of range. */
+int sample_texture_level_size(const sample_texture *tex, int level, int *w, int *h);
+/* Decoded linear RGBA float of texel (i, j) of a level, no wrapping: for
+ * tests and tools, not for sampling loops. Out-of-range gives 0. */
+void sample_texture_texel(const sample_texture *tex, int level, int i, int j, float rgba[4]);
+
+/* ---- Sampler state (mirrors an OpenGL sampler object) ------------------- */
+
+typedef enum sample_filter {
+    SAMPLE_NEAREST = 0,
+    SAMPLE_LINEAR = 1,
+    SAMPLE_NEAREST_MIPMAP_NEAREST = 2,
+    SAMPLE_LINEAR_MIPMAP_NEAREST = 3,
+    SAMPLE_NEAREST_MIPMAP_LINEAR = 4,
+    SAMPLE_LINEAR_MIPMAP_LINEAR = 5, /* trilinear */
+    /* Engine extensions: Catmull–Rom/B-spline/Mitchell (see `cubic`) per level. */
+    SAMPLE_CUBIC = 6,                /* mag or min: one level (the base) */
+    SAMPLE_CUBIC_MIPMAP_NEAREST = 7,
+    SAMPLE_CUBIC_MIPMAP_LINEAR = 8,
+    SAMPLE_FILTER_COUNT
+} sample_filter;
+
+typedef enum sample_cubic {
+    SAMPLE_CUBIC_CATMULL_ROM = 0, /* B = 0, C = ½: interpolating (VK_EXT_filter_cubic) */
+    SAMPLE_CUBIC_BSPLINE = 1,     /* B = 1, C = 0: smoothing, non-negative */
+    SAMPLE_CUBIC_MITCHELL = 2,    /* B = C = ⅓ */
+    SAMPLE_CUBIC_COUNT
+} sample_cubic;
+
+/* Minification beyond the OpenGL filters (DESIGN §7). When not NONE it
+ * replaces min_filter whenever λ > 0; magnification still uses mag_filter. */
+typedef enum sample_footprint {
+    SAMPLE_FOOTPRINT_NONE = 0,         /* min_filter, as OpenGL */
+    SAMPLE_FOOTPRINT_ANISOTROPIC = 1,  /* GPU-style probes (EXT_texture_filter_anisotropic) */
+    SAMPLE_FOOTPRINT_BLINN_NEWELL = 2, /* pyramid-weighted quadrilateral (1976) */
+    SAMPLE_FOOTPRINT_EWA = 3,          /* elliptical Gaussian (Heckbert 1989, pbrt-v4) */
+    SAMPLE_FOOTPRINT_COUNT
+} sample_footprint;
+
+/* Options that change a specified behaviour; all off by default. */
+enum {
+    /* Pre-4.5 rule: switch-over c = 0.5 when mag is LINEAR and min is
+     * NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR (GL 4.6 §8.14.3 note). */
+    SAMPLE_OPT_LEGACY_SWITCHOVER = 1u << 0,
+    /* NEAREST_MIPMAP_*: d = ⌊base + λ + ½⌋ (allowed alternative, Mesa's)
+     * instead of the preferred ⌈base + λ + ½⌉ − 1. */
+    SAMPLE_OPT_NEAREST_LEVEL_FLOOR = 1u << 1,
+    /* Clamp Catmull–Rom / Mitchell overshoot to the 2×2 neighbourhood range. */
+    SAMPLE_OPT_CUBIC_CLAMP = 1u << 2,
+    /* Anisotropic: round the probe count up to a power of two. */
+    SAMPLE_OPT_ANISO_POW2 = 1u << 3,
+};
+
+typedef struct sample_sampler {
+    sample_wrap wrap_s, wrap_t;   /* default REPEAT */
+    sample_filter min_filter;     /* default NEAREST_MIPMAP_LINEAR (GL default) */
+    sample_filter mag_filter;     /* NEAREST, LINEAR or CUBIC; default LINEAR */
+    float border_color[4];        /* linear RGBA; default 0,0,0,0 */
+    float lod_bias;               /* GL_TEXTURE_LOD_BIAS; default 0 */
+    float min_lod, max_lod;       /* default −1000, 1000 */
+    int base_level, max_level;    /* default 0, 1000 */
+    float max_anisotropy;         /* ≥ 1; default 1. Used by ANISOTROPIC */
+    float max_lod_bias;           /* |sampler + per-call bias| limit; default 16 */
+    sample_footprint footprint;   /* default NONE */
+    sample_cubic cubic;           /* default CATMULL_ROM */
+    unsigned options;             /* SAMPLE_OPT_* */
+} sample_sampler;
+
+/* OpenGL's initial sampler-object state (GL 4.6 table 23.18). */
+void sample_sampler_init(sample_sampler *sampler);
+/* Checks enums and ranges; sample_batch() calls it too. */
+sample_status sample_sampler_validate(const sample_sampler *sampler);
+
+/* ---- Queries ----------------------------------------------------------- */
+
+/* 6 floats, the order of the `lookup` query file. */
+typedef struct sample_query {
+    float s, t;
+    float dsdx, dtdx; /* dPdx */
+    float dsdy, dtdy; /* dPdy */
+} sample_query;
+
+/* The exact texture-space images of the corners of the 2 × 2-pixel region
+ * centred on the pixel, screen offsets (−1,−1), (+1,−1), (+1,+1), (−1,+1) in
+ * that order, as (s, t) pairs. Used by Blinn–Newell; other filters ignore it. */
+typedef struct sample_quad {
+    float st[4][2];
+} sample_quad;
+
+/* What one query did; for benchmarks and tests. */
+typedef struct sample_stats {
+    uint32_t texels;   /* texel reads (a footprint filter's visited texels) */
+    int16_t level0;    /* first level read (−1: none, e.g. NaN input) */
+    int16_t level1;    /* second level blended, or −1 */
+    float level_frac;  /* weight of level1 */
+    float lod;         /* λ after bias and clamps */
+} sample_stats;
+
+typedef struct sample_batch_args {
+    size_t count;
+    const sample_query *queries; /* count entries; required */
+    const sample_quad *corners;  /* optional: exact footprint corners */
+    const float *lod_bias;       /* optional: per-query bias (GLSL `bias`) */
+    float *rgba;                 /* count × 4 results; required */
+    float *drgba_ds;             /* optional: count × 4, ∂result/∂s */
+    float *drgba_dt;             /* optional: count × 4, ∂result/∂t */
+    sample_stats *stats;         /* optional: count entries */
+} sample_batch_args;
+
+/* Sample `count` queries. Results are bit-for-bit independent of how a job is
+ * split into batches or threads. Derivatives are of the filtered result with
+ * respect to (s, t) at fixed footprint; NEAREST gives 0. */
+sample_status sample_batch(const sample_texture *tex, const sample_sampler *sampler,
+                           const sample_batch_args *args);
+
+/* One query; a thin wrapper over sample_batch(). */
+sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,
+                         const sample_query *query, float rgba[4]);
+
+/* ---- Names ------------------------------------------------------------- */
+
+/* Lower-case names as the command line spells them ("clamp_to_edge",
+ * "linear_mipmap_linear", "catmull-rom", "blinn-newell"). Parsing returns −1
+ * for an unknown name. */
+const char *sample_wrap_name(sample_wrap wrap);
+int sample_wrap_parse(const char *name);
+const char *sample_filter_name(sample_filter filter);
+int sample_filter_parse(const char *name);
+const char *sample_cubic_name(sample_cubic cubic);
+int sample_cubic_parse(const char *name);
+const char *sample_footprint_name(sample_footprint footprint);
+int sample_footprint_parse(const char *name);
+const char *sample_mipgen_name(sample_mipgen mipgen);
+int sample_mipgen_parse(const char *name);
+const char *sample_format_name(sample_format format);
+
+/* ---- Colour helpers ---------------------------------------------------- */
+
+float sample_srgb_to_linear(float v); /* exact sRGB EOTF (IEC 61966-2-1) */
+float sample_linear_to_srgb(float v); /* its inverse */
+float sample_half_to_float(uint16_t h);
+uint16_t sample_float_to_half(float f); /* round to nearest even */
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* SAMPLE_SAMPLE_H */

@@ -1,0 +1,158 @@
+/*
+ * Reconstruction on one level (DESIGN §4, GL 4.6 §8.14.2):
+ * NEAREST, LINEAR (bilinear) and CUBIC (Mitchell–Netravali family).
+ */
+#include "internal.h"
+
+/* Mitchell–Netravali (B, C) kernel, Mitchell & Netravali 1988 eq. 8:
+ *   k(x) = 1/6 [ (12 − 9B − 6C)|x|³ + (−18 + 12B + 6C)|x|² + (6 − 2B) ]     |x| < 1
+ *   k(x) = 1/6 [ (−B − 6C)|x|³ + (6B + 30C)|x|² + (−12B − 48C)|x| + 8B + 24C ] 1 ≤ |x| < 2
+ * Catmull–Rom is (0, ½), the cubic B-spline (1, 0), Mitchell (⅓, ⅓). */
+static const double cubic_bc[SAMPLE_CUBIC_COUNT][2] = {
+    [SAMPLE_CUBIC_CATMULL_ROM] = {0.0, 0.5},
+    [SAMPLE_CUBIC_BSPLINE] = {1.0, 0.0},
+    [SAMPLE_CUBIC_MITCHELL] = {1.0 / 3.0, 1.0 / 3.0},
+};
+
+/* k(x) and k'(x) for x ≥ 0. */
+static void kernel(double B, double C, double x, double *k, double *dk)
+{
+    if (x < 1.0) {
+        double a = 12 - 9 * B - 6 * C, b = -18 + 12 * B + 6 * C, c = 6 - 2 * B;
+        *k = ((a * x + b) * x * x + c) / 6.0;
+        *dk = (3 * a * x + 2 * b) * x / 6.0;
+    } else if (x < 2.0) {
+        double a = -B - 6 * C, b = 6 * B + 30 * C, c = -12 * B - 48 * C, d = 8 * B + 24 * C;
+        *k = (((a * x + b) * x + c) * x + d) / 6.0;
+        *dk = ((3 * a * x + 2 * b) * x + c) / 6.0;
+    } else {
+        *k = 0.0;
+        *dk = 0.0;
+    }
+}
+
+void cubic_weights(sample_cubic kind, float f, float w[4], float dw[4])
+{
+    /* Taps −1, 0, 1, 2 sit at distances 1 + f, f, 1 − f, 2 − f; the
+     * distance grows with f for the first two and shrinks for the others.
+     * Evaluated in double so that the weights sum to 1 and reproduce linear
+     * ramps to float rounding. */
+    const double B = cubic_bc[kind][0], C = cubic_bc[kind][1];
+    const double x[4] = {1.0 + f, f, 1.0 - f, 2.0 - f}, sgn[4] = {1, 1, -1, -1};
+    double k[4], dk[4];
+    int n;
+    for (n = 0; n < 4; ++n) kernel(B, C, x[n], &k[n], &dk[n]);
+    /* The kernel family is a partition of unity; renormalize the last
+     * rounding so that constants come back exactly. */
+    k[1] = 1.0 - (k[0] + k[2] + k[3]);
+    for (n = 0; n < 4; ++n) {
+        w[n] = (float)k[n];
+        if (dw) dw[n] = (float)(sgn[n] * dk[n]);
+    }
+}
+
+static void zero4(float *v)
+{
+    if (v) v[0] = v[1] = v[2] = v[3] = 0.0f;
+}
+
+static uint32_t recon_nearest(const sample_ctx *c, int lv, float u, float v, float out[4])
+{
+    /* i = ⌊u⌋, j = ⌊v⌋ (GL 4.6 eq. 8.12). */
+    ctx_texel(c, lv, floorf(u), floorf(v), 0, out);
+    return 1;
+}
+
+static uint32_t recon_linear(const sample_ctx *c, int lv, float u, float v, float out[4],
+                             float ddu[4], float ddv[4])
+{
+    /* i0 = ⌊u − ½⌋, α = frac(u − ½) (GL 4.6 §8.14.2, eq. 8.13). Computed in
+     * float, as the specification's reference implementations do. */
+    float a = u - 0.5f, b = v - 0.5f;
+    float i0 = floorf(a), j0 = floorf(b);
+    float al = a - i0, be = b - j0;
+    float t00[4], t10[4], t01[4], t11[4];
+    int k;
+    ctx_texel(c, lv, i0, j0, 1, t00);
+    ctx_texel(c, lv, (double)i0 + 1.0, j0, 1, t10);
+    ctx_texel(c, lv, i0, (double)j0 + 1.0, 1, t01);
+    ctx_texel(c, lv, (double)i0 + 1.0, (double)j0 + 1.0, 1, t11);
+    for (k = 0; k < 4; ++k) {
+        out[k] = (1.0f - al) * (1.0f - be) * t00[k] + al * (1.0f - be) * t10[k] +
+                 (1.0f - al) * be * t01[k] + al * be * t11[k];
+        if (ddu) ddu[k] = (1.0f - be) * (t10[k] - t00[k]) + be * (t11[k] - t01[k]);
+        if (ddv) ddv[k] = (1.0f - al) * (t01[k] - t00[k]) + al * (t11[k] - t10[k]);
+    }
+    return 4;
+}
+
+static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float out[4],
+                            float ddu[4], float ddv[4])
+{
+    float a = u - 0.5f, b = v - 0.5f;
+    float i0 = floorf(a), j0 = floorf(b);
+    float wx[4], wy[4], dwx[4], dwy[4];
+    float lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    float acc[4] = {0, 0, 0, 0}, au[4] = {0, 0, 0, 0}, av[4] = {0, 0, 0, 0};
+    int x, y, k;
+    cubic_weights(c->smp->cubic, a - i0, wx, dwx);
+    cubic_weights(c->smp->cubic, b - j0, wy, dwy);
+    for (y = 0; y < 4; ++y) {
+        for (x = 0; x < 4; ++x) {
+            float tx[4];
+            ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, tx);
+            for (k = 0; k < 4; ++k) {
+                acc[k] += wx[x] * wy[y] * tx[k];
+                au[k] += dwx[x] * wy[y] * tx[k];
+                av[k] += wx[x] * dwy[y] * tx[k];
+                if ((x == 1 || x == 2) && (y == 1 || y == 2)) {
+                    lo[k] = fminf(lo[k], tx[k]);
+                    hi[k] = fmaxf(hi[k], tx[k]);
+                }
+            }
+        }
+    }
+    for (k = 0; k < 4; ++k) {
+        out[k] = acc[k];
+        if (ddu) ddu[k] = au[k];
+        if (ddv) ddv[k] = av[k];
+        /* Optional overshoot clamp to the central 2×2 range; where it
+         * clamps, the result is locally constant. */
+        if ((c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) && (acc[k] < lo[k] || acc[k] > hi[k])) {
+            out[k] = acc[k] < lo[k] ? lo[k] : hi[k];
+            if (ddu) ddu[k] = 0.0f;
+            if (ddv) ddv[k] = 0.0f;
+        }
+    }
+    return 16;
+}
+
+uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
+                     float out[4], float dds[4], float ddt[4])
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    float u = wrap_coord(c->smp->wrap_s, s, L->w) * (float)L->w;
+    float v = wrap_coord(c->smp->wrap_t, t, L->h) * (float)L->h;
+    uint32_t n;
+    int k;
+    switch (kind) {
+    case SAMPLE_NEAREST:
+        zero4(dds);
+        zero4(ddt);
+        return recon_nearest(c, lv, u, v, out);
+    case SAMPLE_CUBIC:
+        n = recon_cubic(c, lv, u, v, out, dds, ddt);
+        break;
+    case SAMPLE_LINEAR:
+    default:
+        n = recon_linear(c, lv, u, v, out, dds, ddt);
+        break;
+    }
+    /* ∂/∂s = ∂/∂u · w (before any mirror-clamp fold, which the derivative
+     * ignores). */
+    for (k = 0; k < 4; ++k) {
+        if (dds) dds[k] *= (float)L->w;
+        if (ddt) ddt[k] *= (float)L->h;
+    }
+    return n;
+}

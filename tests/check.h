@@ -1,0 +1,54 @@
+/*
+ * A tiny test harness (after lcms2's testbed): CHECK(cond, fmt, ...) records
+ * a failure with its location and keeps going; RUN(fn) runs one test
+ * function; check_finish() prints "N passed, N failed" and returns the exit
+ * code. Header-only: each test program includes it once.
+ */
+#ifndef SAMPLE_TEST_CHECK_H
+#define SAMPLE_TEST_CHECK_H
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static int check_pass_count, check_fail_count, check_case_failed;
+
+#define CHECK(cond, ...)                                                        \
+    do {                                                                        \
+        if (!(cond)) {                                                          \
+            if (check_fail_count + check_case_failed < 50) {                    \
+                fprintf(stderr, "%s:%d: CHECK(%s) failed: ", __FILE__, __LINE__, #cond); \
+                fprintf(stderr, __VA_ARGS__);                                   \
+                fputc('\n', stderr);                                            \
+            }                                                                   \
+            check_case_failed++;                                                \
+        }                                                                       \
+    } while (0)
+
+/* |a − b| ≤ tol, NaN never close. */
+#define CHECK_NEAR(a, b, tol)                                                   \
+    CHECK(fabs((double)(a) - (double)(b)) <= (double)(tol), "%s = %.9g, expected %.9g (tol %.3g)", #a, \
+          (double)(a), (double)(b), (double)(tol))
+
+#define CHECK_EQF(a, b)                                                         \
+    CHECK((float)(a) == (float)(b), "%s = %.9g, expected exactly %.9g", #a, (double)(a), (double)(b))
+
+#define RUN(fn)                                                                 \
+    do {                                                                        \
+        check_case_failed = 0;                                                  \
+        fn();                                                                   \
+        if (check_case_failed) {                                                \
+            fprintf(stderr, "FAIL %s (%d checks)\n", #fn, check_case_failed);   \
+            check_fail_count++;                                                 \
+        } else {                                                                \
+            check_pass_count++;                                                 \
+        }                                                                       \
+    } while (0)
+
+static int check_finish(void)
+{
+    printf("%d passed, %d failed\n", check_pass_count, check_fail_count);
+    return check_fail_count ? 1 : 0;
+}
+
+#endif

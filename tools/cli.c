@@ -1,0 +1,243 @@
+/* Shared command-line plumbing. */
+#define _POSIX_C_SOURCE 200809L
+#include "cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static int report(int code, const char *sub, const char *fmt, va_list ap)
+{
+    fprintf(stderr, "texsample %s: ", sub);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    return code;
+}
+
+int cli_usage_error(const char *sub, const char *fmt, ...)
+{
+    va_list ap;
+    int r;
+    va_start(ap, fmt);
+    r = report(EXIT_USAGE, sub, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "Try 'texsample %s --help'.\n", sub);
+    return r;
+}
+
+int cli_runtime_error(const char *sub, const char *fmt, ...)
+{
+    va_list ap;
+    int r;
+    va_start(ap, fmt);
+    r = report(EXIT_RUNTIME, sub, fmt, ap);
+    va_end(ap);
+    return r;
+}
+
+int cli_is_help(const char *a) { return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0; }
+
+int cli_opt(int argc, char **argv, int *i, const char *name, const char **val)
+{
+    if (strcmp(argv[*i], name) != 0) return 0;
+    if (val) {
+        if (*i + 1 >= argc) {
+            *val = NULL;
+            return 1;
+        }
+        *val = argv[++*i];
+    }
+    return 1;
+}
+
+int cli_parse_int(const char *s, int *out)
+{
+    char *end;
+    long v;
+    if (!s || !*s) return 0;
+    errno = 0;
+    v = strtol(s, &end, 10);
+    if (*end || errno || v < -2147483647L || v > 2147483647L) return 0;
+    *out = (int)v;
+    return 1;
+}
+
+int cli_parse_float(const char *s, float *out)
+{
+    char *end;
+    double v;
+    if (!s || !*s) return 0;
+    v = strtod(s, &end);
+    if (*end || !isfinite(v) || fabs(v) > 3.0e38) return 0;
+    *out = (float)v;
+    return 1;
+}
+
+int cli_parse_float4(const char *s, float out[4])
+{
+    char buf[256], *p, *save = NULL;
+    int n = 0;
+    if (!s || strlen(s) >= sizeof buf) return 0;
+    strcpy(buf, s);
+    for (p = strtok_r(buf, ",", &save); p; p = strtok_r(NULL, ",", &save)) {
+        if (n >= 4 || !cli_parse_float(p, &out[n])) return 0;
+        ++n;
+    }
+    if (n == 1) out[1] = out[2] = out[3] = out[0];
+    return n == 1 || n == 4;
+}
+
+const char cli_sampler_help[] =
+    "Sampler state (named after OpenGL sampler parameters):\n"
+    "  --wrap-s MODE, --wrap-t MODE, --wrap MODE (both)\n"
+    "        repeat | mirrored_repeat | clamp_to_edge | clamp_to_border |\n"
+    "        mirror_clamp_to_edge | clamp | mirror_clamp | mirror_clamp_to_border\n"
+    "  --mag nearest|linear|cubic               (default linear)\n"
+    "  --min nearest|linear|nearest_mipmap_nearest|linear_mipmap_nearest|\n"
+    "        nearest_mipmap_linear|linear_mipmap_linear|cubic|cubic_mipmap_nearest|\n"
+    "        cubic_mipmap_linear                (default nearest_mipmap_linear, as GL)\n"
+    "  --border R,G,B,A                         border colour (linear)\n"
+    "  --cubic catmull-rom|bspline|mitchell     cubic variant\n"
+    "  --cubic-clamp                            clamp cubic overshoot to the 2x2 range\n"
+    "  --lod-bias B, --min-lod L, --max-lod L, --base-level N, --max-level N\n"
+    "  --filter none|aniso|blinn-newell|ewa     footprint filter for minification\n"
+    "  --aniso N                                max anisotropy (default 1; 16 with --filter aniso)\n"
+    "  --nearest-level-floor                    NEAREST_MIPMAP_*: floor(base+lambda+1/2)\n"
+    "  --legacy-switchover                      pre-GL-4.5 c = 0.5 rule\n";
+
+#define ENUM_FLAG(opt, parse, field, what)                                          \
+    if (cli_opt(argc, argv, i, opt, &v)) {                                          \
+        int e = v ? parse(v) : -1;                                                  \
+        if (e < 0) {                                                                \
+            cli_usage_error(sub, "%s: unknown %s '%s'", opt, what, v ? v : "");     \
+            return -1;                                                              \
+        }                                                                           \
+        field;                                                                      \
+        return 1;                                                                   \
+    }
+
+#define FLOAT_FLAG(opt, field)                                                      \
+    if (cli_opt(argc, argv, i, opt, &v)) {                                          \
+        float f;                                                                    \
+        if (!cli_parse_float(v, &f)) {                                              \
+            cli_usage_error(sub, "%s needs a finite number, not '%s'", opt, v ? v : ""); \
+            return -1;                                                              \
+        }                                                                           \
+        field = f;                                                                  \
+        return 1;                                                                   \
+    }
+
+#define INT_FLAG(opt, field)                                                        \
+    if (cli_opt(argc, argv, i, opt, &v)) {                                          \
+        int n;                                                                      \
+        if (!cli_parse_int(v, &n) || n < 0) {                                       \
+            cli_usage_error(sub, "%s needs a non-negative integer, not '%s'", opt, v ? v : ""); \
+            return -1;                                                              \
+        }                                                                           \
+        field = n;                                                                  \
+        return 1;                                                                   \
+    }
+
+int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_sampler *s)
+{
+    const char *v = NULL;
+    ENUM_FLAG("--wrap-s", sample_wrap_parse, s->wrap_s = (sample_wrap)e, "wrap mode")
+    ENUM_FLAG("--wrap-t", sample_wrap_parse, s->wrap_t = (sample_wrap)e, "wrap mode")
+    ENUM_FLAG("--wrap", sample_wrap_parse, s->wrap_s = s->wrap_t = (sample_wrap)e, "wrap mode")
+    ENUM_FLAG("--min", sample_filter_parse, s->min_filter = (sample_filter)e, "filter")
+    ENUM_FLAG("--cubic", sample_cubic_parse, s->cubic = (sample_cubic)e, "cubic variant")
+    ENUM_FLAG("--filter", sample_footprint_parse,
+              { s->footprint = (sample_footprint)e;
+                if (e == SAMPLE_FOOTPRINT_ANISOTROPIC && s->max_anisotropy == 1.0f) s->max_anisotropy = 16.0f; },
+              "footprint filter")
+    if (cli_opt(argc, argv, i, "--mag", &v)) {
+        int e = v ? sample_filter_parse(v) : -1;
+        if (e != SAMPLE_NEAREST && e != SAMPLE_LINEAR && e != SAMPLE_CUBIC) {
+            cli_usage_error(sub, "--mag must be nearest, linear or cubic, not '%s'", v ? v : "");
+            return -1;
+        }
+        s->mag_filter = (sample_filter)e;
+        return 1;
+    }
+    if (cli_opt(argc, argv, i, "--border", &v)) {
+        if (!cli_parse_float4(v, s->border_color)) {
+            cli_usage_error(sub, "--border needs R,G,B,A, not '%s'", v ? v : "");
+            return -1;
+        }
+        return 1;
+    }
+    FLOAT_FLAG("--lod-bias", s->lod_bias)
+    FLOAT_FLAG("--min-lod", s->min_lod)
+    FLOAT_FLAG("--max-lod", s->max_lod)
+    FLOAT_FLAG("--aniso", s->max_anisotropy)
+    INT_FLAG("--base-level", s->base_level)
+    INT_FLAG("--max-level", s->max_level)
+    if (cli_opt(argc, argv, i, "--cubic-clamp", NULL)) { s->options |= SAMPLE_OPT_CUBIC_CLAMP; return 1; }
+    if (cli_opt(argc, argv, i, "--nearest-level-floor", NULL)) { s->options |= SAMPLE_OPT_NEAREST_LEVEL_FLOOR; return 1; }
+    if (cli_opt(argc, argv, i, "--legacy-switchover", NULL)) { s->options |= SAMPLE_OPT_LEGACY_SWITCHOVER; return 1; }
+    return 0;
+}
+
+int cli_read_file(const char *path, void **data, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    long n;
+    void *buf;
+    *data = NULL;
+    *size = 0;
+    if (!f) return 0;
+    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return 0;
+    }
+    buf = malloc(n > 0 ? (size_t)n : 1);
+    if (!buf || fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        fclose(f);
+        return 0;
+    }
+    fclose(f);
+    *data = buf;
+    *size = (size_t)n;
+    return 1;
+}
+
+int cli_write_file(const char *path, const void *data, size_t size)
+{
+    size_t len = strlen(path);
+    char *tmp = (char *)malloc(len + 16);
+    FILE *f;
+    int ok;
+    if (!tmp) return 0;
+    snprintf(tmp, len + 16, "%s.tmp%ld", path, (long)getpid());
+    f = fopen(tmp, "wb");
+    if (!f) {
+        free(tmp);
+        return 0;
+    }
+    ok = fwrite(data, 1, size, f) == size;
+    ok = (fclose(f) == 0) && ok;
+    if (ok) ok = rename(tmp, path) == 0;
+    if (!ok) remove(tmp);
+    free(tmp);
+    return ok;
+}
+
+void cli_progress(const char *what, size_t done, size_t total)
+{
+    static const int width = 30;
+    if (!isatty(2) && !getenv("TEXSAMPLE_PROGRESS")) return;
+    if (total == 0) return;
+    {
+        int pct = (int)(100.0 * (double)done / (double)total), k, fill = pct * width / 100;
+        fprintf(stderr, "\r%-10s [", what);
+        for (k = 0; k < width; ++k) fputc(k < fill ? '#' : ' ', stderr);
+        fprintf(stderr, "] %3d%%", pct);
+        if (done >= total) fputc('\n', stderr);
+        fflush(stderr);
+    }
+}

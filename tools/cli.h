@@ -1,0 +1,50 @@
+/* Shared command-line plumbing for texsample's subcommands. */
+#ifndef TEXSAMPLE_CLI_H
+#define TEXSAMPLE_CLI_H
+
+#include "sample/sample.h"
+
+#include <stddef.h>
+
+/* Exit codes of every subcommand. */
+enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
+
+/* A subcommand: returns one of the exit codes above. */
+typedef int (*cli_command_fn)(int argc, char **argv);
+
+/* Print "texsample SUB: message" to stderr and return EXIT_USAGE / EXIT_RUNTIME. */
+int cli_usage_error(const char *sub, const char *fmt, ...);
+int cli_runtime_error(const char *sub, const char *fmt, ...);
+
+/* Is argv[*i] the option `name`? If it takes a value, *val gets argv[*i+1]
+ * and *i advances; a missing value is reported and *val is NULL. */
+int cli_opt(int argc, char **argv, int *i, const char *name, const char **val);
+int cli_is_help(const char *arg);
+
+/* Strict number parsing: whole string, finite. Return 0 on failure. */
+int cli_parse_int(const char *s, int *out);
+int cli_parse_float(const char *s, float *out);
+/* "r,g,b,a" (or a single value for all four). */
+int cli_parse_float4(const char *s, float out[4]);
+
+/* The sampler flags shared by lookup, render and compare:
+ *   --wrap-s/--wrap-t/--wrap, --min, --mag, --border, --cubic, --cubic-clamp,
+ *   --lod-bias, --min-lod, --max-lod, --base-level, --max-level,
+ *   --filter none|aniso|blinn-newell|ewa, --aniso N,
+ *   --nearest-level-floor, --legacy-switchover
+ * Returns 1 if argv[*i] was one of them (consumed), 0 if not, −1 on a bad
+ * value (already reported). */
+int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_sampler *s);
+/* The help text for those flags. */
+extern const char cli_sampler_help[];
+
+/* Whole-file read/write (write goes to FILE.tmp, then renames, so a failed
+ * write leaves no truncated file). */
+int cli_read_file(const char *path, void **data, size_t *size);
+int cli_write_file(const char *path, const void *data, size_t size);
+
+/* Progress on stderr for long work ("render 42%"); silent unless stderr is a
+ * terminal or force is set. done == total ends the line. */
+void cli_progress(const char *what, size_t done, size_t total);
+
+#endif

@@ -1,0 +1,23 @@
+/* Where a subcommand's texture comes from: raw float files or an image file. */
+#ifndef TEXSAMPLE_TEXLOAD_H
+#define TEXSAMPLE_TEXLOAD_H
+
+#include "sample/sample.h"
+
+typedef struct tl_source {
+    const char *raw;        /* --raw FILE: float32 RGBA */
+    int w, h;               /* --w, --h */
+    const char *levels;     /* --levels PREFIX: PREFIX.k.raw for k ≥ 1 */
+    const char *image;      /* --image FILE (libsample_io) */
+    const char *colorspace; /* --colorspace NAME for --image */
+} tl_source;
+
+void tl_source_init(tl_source *src);
+/* Consumes --raw, --w, --h, --levels, --image, --colorspace. Returns 1 if
+ * consumed, 0 if not ours, −1 on a bad value (reported). */
+int tl_source_flag(const char *sub, int argc, char **argv, int *i, tl_source *src);
+int tl_source_given(const tl_source *src);
+/* Loads the texture; errors are reported on stderr. Returns 0 on success. */
+int tl_load(const char *sub, const tl_source *src, const sample_mip_params *mip, sample_texture **out);
+
+#endif
