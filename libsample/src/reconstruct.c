@@ -4,6 +4,8 @@
  */
 #include "internal.h"
 
+#include <float.h>
+
 /* Mitchell–Netravali (B, C) kernel, Mitchell & Netravali 1988 eq. 8:
  *   k(x) = 1/6 [ (12 − 9B − 6C)|x|³ + (−18 + 12B + 6C)|x|² + (6 − 2B) ]     |x| < 1
  *   k(x) = 1/6 [ (−B − 6C)|x|³ + (6B + 30C)|x|² + (−12B − 48C)|x| + 8B + 24C ] 1 ≤ |x| < 2
@@ -127,12 +129,19 @@ static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float
     return 16;
 }
 
+/* s·n may overflow to ±inf for finite s near FLT_MAX; keep it finite so that
+ * the fractional weights stay defined (α = u − ⌊u⌋ would be inf − inf). */
+static float finite_texel_coord(float u)
+{
+    return u > FLT_MAX ? FLT_MAX : (u < -FLT_MAX ? -FLT_MAX : u);
+}
+
 uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
                      float out[4], float dds[4], float ddt[4])
 {
     const struct sample_level *L = &c->tex->level[lv];
-    float u = wrap_coord(c->smp->wrap_s, s, L->w) * (float)L->w;
-    float v = wrap_coord(c->smp->wrap_t, t, L->h) * (float)L->h;
+    float u = finite_texel_coord(wrap_coord(c->smp->wrap_s, s, L->w) * (float)L->w);
+    float v = finite_texel_coord(wrap_coord(c->smp->wrap_t, t, L->h) * (float)L->h);
     uint32_t n;
     int k;
     switch (kind) {

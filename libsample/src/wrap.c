@@ -8,6 +8,8 @@
  */
 #include "internal.h"
 
+#include <float.h>
+
 float wrap_coord(sample_wrap mode, float s, int n)
 {
     float lo = 0.5f / (float)n, a = fabsf(s);
@@ -36,6 +38,10 @@ static double mirror(double a) { return a >= 0.0 ? a : -(1.0 + a); }
 int wrap_index(sample_wrap mode, double i, int n, int linear)
 {
     double nd = (double)n;
+    /* s·n can overflow float to ±inf for |s| near FLT_MAX; fmod(inf) is NaN
+     * and NaN → int is undefined, so saturate first. */
+    if (!(i >= -DBL_MAX)) i = -DBL_MAX;
+    if (!(i <= DBL_MAX)) i = DBL_MAX;
     switch (mode) {
     case SAMPLE_WRAP_REPEAT: {
         /* True modulo, also for negative i (fmod is exact on doubles). */
