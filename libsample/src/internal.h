@@ -70,12 +70,14 @@ static inline void tex_decode(const sample_texture *tex, const struct sample_lev
         }
         break;
     case SAMPLE_FORMAT_UNORM8:
-        for (c = 0; c < nc; ++c) v[c] = (float)p[c] * (1.0f / 255.0f);
+        /* c / 255 correctly rounded (GL 4.6 eq. 2.1); a multiply by the
+         * rounded reciprocal is off by an ulp for some codes. */
+        for (c = 0; c < nc; ++c) v[c] = (float)p[c] / 255.0f;
         break;
     case SAMPLE_FORMAT_SRGB8:
         /* Alpha of an sRGB format is linear (GL 4.6 §8.24). */
         for (c = 0; c < nc; ++c)
-            v[c] = (c < 3) ? sample_srgb_table[p[c]] : (float)p[c] * (1.0f / 255.0f);
+            v[c] = (c < 3) ? sample_srgb_table[p[c]] : (float)p[c] / 255.0f;
         break;
     default:
         break;
@@ -140,7 +142,7 @@ uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, f
 
 /* Cubic kernel weights for fractional offset f ∈ [0, 1): taps at −1, 0, 1, 2,
  * and their derivatives d/df (dw may be NULL). */
-void cubic_weights(sample_cubic kind, float f, float w[4], float dw[4]);
+void cubic_weights(sample_cubic kind, float f, double w[4], double dw[4]);
 
 /* ---- Level of detail (lod.c) --------------------------------------------- */
 

@@ -33,7 +33,7 @@ static void kernel(double B, double C, double x, double *k, double *dk)
     }
 }
 
-void cubic_weights(sample_cubic kind, float f, float w[4], float dw[4])
+void cubic_weights(sample_cubic kind, float f, double w[4], double dw[4])
 {
     /* Taps −1, 0, 1, 2 sit at distances 1 + f, f, 1 − f, 2 − f; the
      * distance grows with f for the first two and shrinks for the others.
@@ -48,8 +48,8 @@ void cubic_weights(sample_cubic kind, float f, float w[4], float dw[4])
      * rounding so that constants come back exactly. */
     k[1] = 1.0 - (k[0] + k[2] + k[3]);
     for (n = 0; n < 4; ++n) {
-        w[n] = (float)k[n];
-        if (dw) dw[n] = (float)(sgn[n] * dk[n]);
+        w[n] = k[n];
+        if (dw) dw[n] = sgn[n] * dk[n];
     }
 }
 
@@ -93,9 +93,11 @@ static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float
 {
     float a = u - 0.5f, b = v - 0.5f;
     float i0 = floorf(a), j0 = floorf(b);
-    float wx[4], wy[4], dwx[4], dwy[4];
+    double wx[4], wy[4], dwx[4], dwy[4];
     float lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
-    float acc[4] = {0, 0, 0, 0}, au[4] = {0, 0, 0, 0}, av[4] = {0, 0, 0, 0};
+    /* Accumulated in double: 16 products in float would lose the exact
+     * reproduction of constants and ramps that the kernels guarantee. */
+    double acc[4] = {0, 0, 0, 0}, au[4] = {0, 0, 0, 0}, av[4] = {0, 0, 0, 0};
     int x, y, k;
     cubic_weights(c->smp->cubic, a - i0, wx, dwx);
     cubic_weights(c->smp->cubic, b - j0, wy, dwy);
@@ -115,13 +117,13 @@ static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float
         }
     }
     for (k = 0; k < 4; ++k) {
-        out[k] = acc[k];
-        if (ddu) ddu[k] = au[k];
-        if (ddv) ddv[k] = av[k];
+        out[k] = (float)acc[k];
+        if (ddu) ddu[k] = (float)au[k];
+        if (ddv) ddv[k] = (float)av[k];
         /* Optional overshoot clamp to the central 2×2 range; where it
          * clamps, the result is locally constant. */
-        if ((c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) && (acc[k] < lo[k] || acc[k] > hi[k])) {
-            out[k] = acc[k] < lo[k] ? lo[k] : hi[k];
+        if ((c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) && (out[k] < lo[k] || out[k] > hi[k])) {
+            out[k] = out[k] < lo[k] ? lo[k] : hi[k];
             if (ddu) ddu[k] = 0.0f;
             if (ddv) ddv[k] = 0.0f;
         }
