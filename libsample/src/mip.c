@@ -1,36 +1,289 @@
-/* Pyramid building (DESIGN §6). Placeholder: 2×2 box on linear values,
- * nearest for odd axes — to be replaced by the polyphase builder. */
+/*
+ * Pyramid building (DESIGN §6, doc/mip-and-lod.md).
+ *
+ * Every level is made from the stored level above it by a separable
+ * resampler: one tap table per axis (source indices and weights for each
+ * output texel), a horizontal pass into a float buffer, a vertical pass that
+ * encodes into the level. The box, the odd-axis polyphase box and the
+ * windowed-sinc kernels differ only in how the tap table is filled, so the
+ * resampling loop exists once.
+ *
+ * All arithmetic is on decoded linear values (tex_decode / tex_encode):
+ * sRGB texels are decoded with the exact EOTF before weighting and the
+ * result is re-encoded (averaging codes would darken: black and white give
+ * code 128, linear 0.216, not 0.5). Channels are filtered independently (no alpha premultiplication),
+ * as glGenerateMipmap does.
+ */
 #include "internal.h"
+
+#include <stdlib.h>
+
+/* Kernel half-width in destination texels for Lanczos-3 and Kaiser. */
+#define MIP_KERNEL_RADIUS 3.0
+/* Kaiser window shape parameter (sample.h: alpha 4). */
+#define MIP_KAISER_ALPHA 4.0
+/* Most taps one output texel can have: the source/destination ratio is at
+ * most 3 (a 3-texel axis becomes 1), so the kernel spans 2·3·3 source
+ * texels, plus one for the rounding of its ends. */
+#define MIP_MAX_TAPS 20
+
+typedef struct mip_axis {
+    int n_src, n_dst, taps; /* taps per output texel (unused ones weigh 0) */
+    int *idx;               /* n_dst × taps source indices */
+    float *w;               /* n_dst × taps weights, each row sums to 1 */
+} mip_axis;
+
+/* ---- Kernels ------------------------------------------------------------- */
+
+static double sinc(double x)
+{
+    const double pi = 3.14159265358979323846;
+    if (x == 0.0) return 1.0;
+    return sin(pi * x) / (pi * x);
+}
+
+/* Modified Bessel function of the first kind, order 0, by its power series
+ * Σ ((x/2)^k / k!)²; for x ≤ 4 the terms fall below 1e-17 of the sum long
+ * before k = 30. */
+static double bessel_i0(double x)
+{
+    double sum = 1.0, term = 1.0, q = 0.25 * x * x;
+    int k;
+    for (k = 1; k < 30; ++k) {
+        term *= q / ((double)k * (double)k);
+        sum += term;
+    }
+    return sum;
+}
+
+/* Kernel value at x destination texels from the output centre. */
+static double kernel_eval(sample_mipgen f, double x)
+{
+    const double R = MIP_KERNEL_RADIUS;
+    double r;
+    if (fabs(x) >= R) return 0.0;
+    if (f == SAMPLE_MIPGEN_LANCZOS3) return sinc(x) * sinc(x / R); /* Lanczos window, a = 3 */
+    /* Kaiser window I0(α√(1 − (x/R)²)) / I0(α) on the same sinc. */
+    r = x / R;
+    return sinc(x) * bessel_i0(MIP_KAISER_ALPHA * sqrt(1.0 - r * r)) / bessel_i0(MIP_KAISER_ALPHA);
+}
+
+/* ---- Edges --------------------------------------------------------------- */
+
+/* Source index for a kernel tap at integer position i, or −1 when the tap is
+ * dropped. The wrap modes that read a texel (repeat, mirror, clamp to edge)
+ * do so through wrap_index, the addressing function every sampler filter
+ * uses. The border colour is sampler state the pyramid cannot know, so the
+ * border-reading modes drop the tap and the remaining weights are
+ * renormalized; the mirror-clamp-to-border modes first mirror about the
+ * lower edge (|s| in EXT_texture_mirror_clamp), then drop what lies past the
+ * upper one. */
+static int tap_index(sample_wrap mode, int i, int n)
+{
+    switch (mode) {
+    case SAMPLE_WRAP_MIRROR_CLAMP:
+    case SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER:
+        if (i < 0) i = -1 - i;
+        return wrap_index(SAMPLE_WRAP_CLAMP_TO_BORDER, (double)i, n, 1);
+    case SAMPLE_WRAP_CLAMP:
+    case SAMPLE_WRAP_CLAMP_TO_BORDER:
+        return wrap_index(SAMPLE_WRAP_CLAMP_TO_BORDER, (double)i, n, 1);
+    default:
+        return wrap_index(mode, (double)i, n, 0);
+    }
+}
+
+/* ---- Tap tables ---------------------------------------------------------- */
+
+/* The box family. n_src = n_dst (an axis already 1 texel) copies. An even
+ * axis averages texels 2i and 2i + 1. An odd axis n = 2m + 1 → m: output i
+ * covers source texels [i·n/m, (i+1)·n/m) of the box-reconstructed signal,
+ * which overlaps texels 2i, 2i + 1, 2i + 2 by (m − i)/n, m/n and (i + 1)/n of
+ * its width. Each source texel then contributes m/n in total, so the mean is
+ * kept, and output centres sit at (i + ½)·n/m: the texel-centre alignment of
+ * the level rule. Only in-range texels are read, so the wrap mode is moot. */
+static void fill_box(mip_axis *ax)
+{
+    int i, n = ax->n_src, m = ax->n_dst;
+    for (i = 0; i < m; ++i) {
+        int *ix = ax->idx + (size_t)i * ax->taps;
+        float *w = ax->w + (size_t)i * ax->taps;
+        if (n == m) {
+            ix[0] = i; w[0] = 1.0f;
+        } else if (n == 2 * m) {
+            ix[0] = 2 * i; w[0] = 0.5f;
+            ix[1] = 2 * i + 1; w[1] = 0.5f;
+        } else {
+            ix[0] = 2 * i; w[0] = (float)((double)(m - i) / n);
+            ix[1] = 2 * i + 1; w[1] = (float)((double)m / n);
+            ix[2] = 2 * i + 2; w[2] = (float)((double)(i + 1) / n);
+        }
+    }
+}
+
+/* A windowed sinc stretched to the destination spacing r = n_src / n_dst,
+ * centred on output i's centre in source index space, c = (i + ½)·r − ½.
+ * Weights are normalized to sum to 1 over the taps kept, so constants stay
+ * constant whatever the edges do. Returns 0 when the kept weights cancel
+ * (cannot happen for these kernels, whose central lobe always lands on an
+ * in-range texel; checked rather than assumed). */
+static int fill_kernel(mip_axis *ax, sample_mipgen f, sample_wrap wrap)
+{
+    int i, n = ax->n_src, m = ax->n_dst;
+    double r = (double)n / (double)m;
+    for (i = 0; i < m; ++i) {
+        int *ix = ax->idx + (size_t)i * ax->taps;
+        float *w = ax->w + (size_t)i * ax->taps;
+        double c = ((double)i + 0.5) * r - 0.5, wd[MIP_MAX_TAPS], sum = 0.0;
+        int j, j0, t = 0;
+        if (n == m) {
+            ix[0] = i; w[0] = 1.0f;
+            continue;
+        }
+        j0 = (int)ceil(c - MIP_KERNEL_RADIUS * r);
+        for (j = j0; t < ax->taps && (double)j < c + MIP_KERNEL_RADIUS * r; ++j) {
+            int s = tap_index(wrap, j, n);
+            double k = kernel_eval(f, ((double)j - c) / r);
+            if (s < 0 || k == 0.0) continue;
+            ix[t] = s;
+            wd[t] = k;
+            sum += k;
+            ++t;
+        }
+        if (!(sum > 1e-6)) return 0;
+        for (j = 0; j < t; ++j) w[j] = (float)(wd[j] / sum);
+    }
+    return 1;
+}
+
+static void axis_free(mip_axis *ax)
+{
+    free(ax->idx);
+    free(ax->w);
+    ax->idx = NULL;
+    ax->w = NULL;
+}
+
+static int axis_make(mip_axis *ax, int n_src, int n_dst, sample_mipgen f, sample_wrap wrap)
+{
+    size_t cells;
+    ax->n_src = n_src;
+    ax->n_dst = n_dst;
+    ax->taps = (f == SAMPLE_MIPGEN_BOX) ? 3 : MIP_MAX_TAPS;
+    cells = (size_t)n_dst * (size_t)ax->taps;
+    /* Unused taps read texel 0 with weight 0. */
+    ax->idx = (int *)calloc(cells, sizeof *ax->idx);
+    ax->w = (float *)calloc(cells, sizeof *ax->w);
+    if (!ax->idx || !ax->w) {
+        axis_free(ax);
+        return 0;
+    }
+    if (f == SAMPLE_MIPGEN_BOX) {
+        fill_box(ax);
+        return 1;
+    }
+    if (!fill_kernel(ax, f, wrap)) {
+        axis_free(ax);
+        return 0;
+    }
+    return 1;
+}
+
+/* ---- Resampling ---------------------------------------------------------- */
+
+/* Level k from level k − 1 through the two tap tables. `row` holds one
+ * decoded source row (n_src(x) RGBA floats), `tmp` the horizontally filtered
+ * image (n_dst(x) × n_src(y) RGBA floats). Sums run in double and round once,
+ * so each pass adds one float rounding per value. */
+static void resample(sample_texture *tex, int k, const mip_axis *ax, const mip_axis *ay,
+                     float *row, float *tmp)
+{
+    const struct sample_level *S = &tex->level[k - 1];
+    struct sample_level *D = &tex->level[k];
+    int i, j, t, c;
+    for (j = 0; j < S->h; ++j) {
+        for (i = 0; i < S->w; ++i) tex_decode(tex, S, i, j, row + 4 * (size_t)i);
+        for (i = 0; i < ax->n_dst; ++i) {
+            const int *ix = ax->idx + (size_t)i * ax->taps;
+            const float *w = ax->w + (size_t)i * ax->taps;
+            double acc[4] = {0, 0, 0, 0};
+            for (t = 0; t < ax->taps; ++t)
+                for (c = 0; c < 4; ++c) acc[c] += (double)w[t] * row[4 * (size_t)ix[t] + c];
+            for (c = 0; c < 4; ++c) tmp[4 * ((size_t)j * ax->n_dst + i) + c] = (float)acc[c];
+        }
+    }
+    for (j = 0; j < ay->n_dst; ++j) {
+        const int *iy = ay->idx + (size_t)j * ay->taps;
+        const float *w = ay->w + (size_t)j * ay->taps;
+        for (i = 0; i < ax->n_dst; ++i) {
+            double acc[4] = {0, 0, 0, 0};
+            float v[4];
+            for (t = 0; t < ay->taps; ++t)
+                for (c = 0; c < 4; ++c) acc[c] += (double)w[t] * tmp[4 * ((size_t)iy[t] * ax->n_dst + i) + c];
+            for (c = 0; c < 4; ++c) v[c] = (float)acc[c];
+            tex_encode(tex, v, D->data + (size_t)j * D->stride + (size_t)i * tex->texel_bytes);
+        }
+    }
+}
+
+/* Drop levels 1 … so that a failed build leaves the texture as it came. */
+static void drop_levels(sample_texture *tex)
+{
+    int k;
+    for (k = 1; k < tex->nlevels; ++k) {
+        struct sample_level *L = &tex->level[k];
+        tex->bytes -= L->stride * (size_t)L->h;
+        free(L->data);
+        memset(L, 0, sizeof *L);
+    }
+    tex->nlevels = 1;
+}
+
+/* Allocate and fill level k from level k − 1. */
+static sample_status build_level(sample_texture *tex, int k, const sample_mip_params *p,
+                                 float *row, float *tmp, sample_error *err)
+{
+    const struct sample_level *S = &tex->level[k - 1];
+    mip_axis ax, ay;
+    sample_status st = tex_alloc_level(tex, k, err);
+    if (st != SAMPLE_OK) return st;
+    tex->nlevels = k + 1;
+    memset(&ax, 0, sizeof ax);
+    memset(&ay, 0, sizeof ay);
+    if (!axis_make(&ax, S->w, tex->level[k].w, p->filter, p->wrap_s) ||
+        !axis_make(&ay, S->h, tex->level[k].h, p->filter, p->wrap_t)) {
+        axis_free(&ax);
+        axis_free(&ay);
+        return sample_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate filter taps for level %d", k);
+    }
+    resample(tex, k, &ax, &ay, row, tmp);
+    axis_free(&ax);
+    axis_free(&ay);
+    return SAMPLE_OK;
+}
 
 sample_status mip_build(sample_texture *tex, const sample_mip_params *p, sample_error *err)
 {
     int k, full = 1, m = tex->width > tex->height ? tex->width : tex->height;
+    sample_status st = SAMPLE_OK;
+    float *row, *tmp;
     while (m > 1) { m >>= 1; ++full; }
     if (p->max_levels > 0 && p->max_levels < full) full = p->max_levels;
-    for (k = 1; k < full; ++k) {
-        const struct sample_level *S = &tex->level[k - 1];
-        struct sample_level *D;
-        int i, j, c;
-        sample_status st = tex_alloc_level(tex, k, err);
-        if (st != SAMPLE_OK) return st;
-        tex->nlevels = k + 1;
-        D = &tex->level[k];
-        for (j = 0; j < D->h; ++j)
-            for (i = 0; i < D->w; ++i) {
-                float acc[4] = {0, 0, 0, 0}, t[4];
-                int di, dj, cnt = 0;
-                for (dj = 0; dj < 2; ++dj)
-                    for (di = 0; di < 2; ++di) {
-                        int x = 2 * i + di, y = 2 * j + dj;
-                        if (x >= S->w) x = S->w - 1;
-                        if (y >= S->h) y = S->h - 1;
-                        tex_decode(tex, S, x, y, t);
-                        for (c = 0; c < 4; ++c) acc[c] += t[c];
-                        ++cnt;
-                    }
-                for (c = 0; c < 4; ++c) acc[c] /= (float)cnt;
-                tex_encode(tex, acc, D->data + (size_t)j * D->stride + (size_t)i * tex->texel_bytes);
-            }
+    if (full < 2) return SAMPLE_OK;
+    /* Scratch sized for the largest pass, the first: one base row, and the
+     * base's height × level 1's width. */
+    row = (float *)malloc((size_t)tex->width * 4 * sizeof(float));
+    tmp = (float *)malloc((size_t)(tex->width > 1 ? tex->width / 2 : 1) * (size_t)tex->height * 4 *
+                          sizeof(float));
+    if (!row || !tmp) {
+        free(row);
+        free(tmp);
+        return sample_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate mip scratch for a %d x %d texture",
+                           tex->width, tex->height);
     }
-    return SAMPLE_OK;
+    for (k = 1; k < full && st == SAMPLE_OK; ++k) st = build_level(tex, k, p, row, tmp, err);
+    free(row);
+    free(tmp);
+    if (st != SAMPLE_OK) drop_levels(tex);
+    return st;
 }
