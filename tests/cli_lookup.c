@@ -1,0 +1,125 @@
+/*
+ * texsample lookup end to end: writes a raw texture, a query file and
+ * explicit levels, runs the program, and checks the output file against
+ * hand-computed values and against the library called directly. Also the
+ * exit codes: 0 success, 1 runtime error, 2 usage error.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+#include "sample/sample.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static char *exe;
+static char dir[256];
+
+static void put(const char *name, const void *data, size_t n)
+{
+    char p[512];
+    FILE *f;
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    f = fopen(p, "wb");
+    CHECK(f && fwrite(data, 1, n, f) == n, "write %s", p);
+    if (f) fclose(f);
+}
+
+static size_t get(const char *name, void *data, size_t n)
+{
+    char p[512];
+    FILE *f;
+    size_t r = 0;
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    f = fopen(p, "rb");
+    if (f) {
+        r = fread(data, 1, n, f);
+        fclose(f);
+    }
+    return r;
+}
+
+static int run(const char *args)
+{
+    char cmd[2048];
+    int st;
+    snprintf(cmd, sizeof cmd, "cd %s && %s %s >out.txt 2>err.txt", dir, exe, args);
+    st = system(cmd);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* 2×2 texture R = 1, 2 / 3, 5; queries at the centre and a texel centre. */
+static void lookup_values(void)
+{
+    const float tex[16] = {1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1, 5, 0, 0, 1};
+    const float q[12] = {0.5f, 0.5f, 0, 0, 0, 0, 0.75f, 0.25f, 0, 0, 0, 0};
+    float out[8] = {0};
+    put("tex.raw", tex, sizeof tex);
+    put("q.raw", q, sizeof q);
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --out r.raw --wrap clamp_to_edge") == 0, "exit 0");
+    CHECK(get("r.raw", out, sizeof out) == sizeof out, "output size");
+    CHECK_EQF(out[0], 2.75f); /* (1+2+3+5)/4 */
+    CHECK_EQF(out[4], 2.0f);  /* texel (1, 0) */
+    CHECK_EQF(out[7], 1.0f);
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --out r.raw --mag nearest --wrap repeat") == 0, "nearest");
+    get("r.raw", out, sizeof out);
+    CHECK_EQF(out[0], 5.0f); /* u = v = 1 → texel (1, 1) */
+}
+
+/* Explicit levels: level 1 of a 4×4 is given as a constant 7, and a query
+ * with ρ = 2 texels (λ = 1) under NEAREST_MIPMAP_NEAREST reads it. */
+static void explicit_levels(void)
+{
+    float l0[4 * 4 * 4], l1[2 * 2 * 4], l2[4] = {9, 0, 0, 1}, out[4] = {0};
+    const float q[6] = {0.5f, 0.5f, 0.5f, 0, 0, 0.5f}; /* 0.5 × 4 = 2 texels */
+    int k;
+    for (k = 0; k < 64; ++k) l0[k] = 1.0f;
+    for (k = 0; k < 16; ++k) l1[k] = (k % 4 == 0) ? 7.0f : 1.0f;
+    put("base.raw", l0, sizeof l0);
+    put("lv.1.raw", l1, sizeof l1);
+    put("lv.2.raw", l2, sizeof l2);
+    put("q2.raw", q, sizeof q);
+    CHECK(run("lookup --raw base.raw --w 4 --h 4 --levels lv --queries q2.raw --out r2.raw --min nearest_mipmap_nearest") == 0,
+          "levels run");
+    get("r2.raw", out, sizeof out);
+    CHECK_EQF(out[0], 7.0f);
+    CHECK(run("lookup --raw base.raw --w 4 --h 4 --levels lv --queries q2.raw --out r2.raw --min nearest_mipmap_nearest --lod-bias 1") == 0,
+          "bias run");
+    get("r2.raw", out, sizeof out);
+    CHECK_EQF(out[0], 9.0f); /* λ = 2 → level 2 */
+}
+
+static void exit_codes(void)
+{
+    CHECK(run("lookup --help") == 0, "help is 0");
+    CHECK(run("--help") == 0, "program help is 0");
+    CHECK(run("lookup --queries q.raw") == 2, "missing texture is a usage error");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --wrap-s sideways") == 2, "bad wrap name");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --min-lod 3 --max-lod 1") == 2, "inconsistent lods");
+    CHECK(run("lookup --raw missing.raw --w 2 --h 2 --queries q.raw") == 1, "unreadable texture is a runtime error");
+    CHECK(run("lookup --raw tex.raw --w 3 --h 2 --queries q.raw") == 1, "wrong texture size");
+    put("bad.raw", "abc", 3);
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries bad.raw") == 1, "query file not a multiple of 24");
+    CHECK(run("nonsense") == 2, "unknown command");
+    CHECK(run("lookup --raw tex.raw --w 0 --h 2 --queries q.raw") == 2, "zero width");
+}
+
+int main(int argc, char **argv)
+{
+    char tmpl[] = "/tmp/texsample_cli_XXXXXX";
+    if (argc < 2) return 2;
+    exe = realpath(argv[1], NULL); /* the commands run in the scratch dir */
+    if (!exe) return 1;
+    if (!mkdtemp(tmpl)) return 1;
+    snprintf(dir, sizeof dir, "%s", tmpl);
+    RUN(lookup_values);
+    RUN(explicit_levels);
+    RUN(exit_codes);
+    {
+        char cmd[512];
+        snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+        if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
+    }
+    return check_finish();
+}
