@@ -4,7 +4,7 @@
  * hand-computed values and against the library called directly. Also the
  * exit codes: 0 success, 1 runtime error, 2 usage error.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700
 #include "check.h"
 #include "sample/sample.h"
 
