@@ -121,5 +121,6 @@ int main(int argc, char **argv)
         snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
         if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
     }
+    free(exe);
     return check_finish();
 }
