@@ -1,0 +1,26 @@
+# libFuzzer targets (configure with CC=clang CXX=clang++ -DSAMPLE_FUZZ=ON).
+# sample_add_fuzzer(NAME SOURCE CORPUS_DIR [LIBS...]) builds tests/fuzz/SOURCE
+# and registers a bounded ctest run (label "fuzz") that starts from the
+# committed corpus and writes new inputs only into the build tree.
+# Longer runs: build-fuzz/tests/NAME -max_total_time=3600 DIR tests/fuzz/CORPUS_DIR
+set(SAMPLE_FUZZ_SECONDS 25 CACHE STRING "Seconds each fuzzer runs in ctest")
+if(SAMPLE_FUZZ AND NOT TARGET fuzzers)
+  add_custom_target(fuzzers) # `cmake --build B --target fuzzers` builds them all
+endif()
+function(sample_add_fuzzer name source corpus)
+  if(NOT SAMPLE_FUZZ)
+    return()
+  endif()
+  add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/${source})
+  add_dependencies(fuzzers ${name})
+  target_compile_options(${name} PRIVATE -fsanitize=fuzzer,address,undefined)
+  target_link_options(${name} PRIVATE -fsanitize=fuzzer,address,undefined)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/libsample/src ${CMAKE_CURRENT_SOURCE_DIR})
+  target_link_libraries(${name} PRIVATE ${ARGN})
+  set(work ${CMAKE_CURRENT_BINARY_DIR}/fuzz_${name})
+  add_test(NAME ${name}
+    COMMAND sh -c "mkdir -p '${work}' && exec '$<TARGET_FILE:${name}>' -max_total_time=${SAMPLE_FUZZ_SECONDS} -timeout=10 -rss_limit_mb=2048 -artifact_prefix='${work}/' '${work}' '${CMAKE_CURRENT_SOURCE_DIR}/fuzz/${corpus}'")
+  set_tests_properties(${name} PROPERTIES LABELS fuzz TIMEOUT 600)
+endfunction()
+
+sample_add_fuzzer(fuzz_sample fuzz_sample.c corpus_sample sample)
