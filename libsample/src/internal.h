@@ -60,7 +60,15 @@ static inline void tex_decode(const sample_texture *tex, const struct sample_lev
     int c, nc = tex->channels;
     switch (tex->format) {
     case SAMPLE_FORMAT_F32:
-        memcpy(v, p, (size_t)nc * sizeof(float));
+        /* Constant-size copies inline to plain loads; a variable-length copy
+         * (which GCC also makes of a per-channel loop) is a libc call per
+         * texel. */
+        switch (nc) {
+        case 4: memcpy(v, p, 16); break;
+        case 3: memcpy(v, p, 12); break;
+        case 2: memcpy(v, p, 8); break;
+        default: memcpy(v, p, 4); break;
+        }
         break;
     case SAMPLE_FORMAT_F16:
         for (c = 0; c < nc; ++c) {
@@ -188,6 +196,80 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
                          sample_stats *st);
 uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
                 float dds[4], float ddt[4], sample_stats *st);
+
+/* ---- Footprint geometry shared by the filters (footprint_common.c) ----- */
+
+/* Blinn–Newell and EWA run on the level where the footprint's minor
+ * semi-axis (smaller singular value of the Jacobian, in texels) is
+ * FP_MINOR_TEXELS, i.e. the minor axis of the 2 × 2-pixel region spans four
+ * texels; eccentricity (major / minor) is clamped to FP_MAX_ECCENTRICITY by
+ * lengthening the minor axis (doc/footprint-filters.md). */
+#define FP_MINOR_TEXELS 2.0
+#define FP_MAX_ECCENTRICITY 16.0
+
+/* J = U · diag(s) · Vᵀ with s[0] ≥ s[1] ≥ 0 and U, V orthogonal;
+ * J = [[a, b], [c, d]] (row-major, a = ∂u/∂x, b = ∂u/∂y, …). */
+typedef struct fp_svd {
+    double U[2][2], s[2], V[2][2];
+} fp_svd;
+void fp_svd2(double a, double b, double c, double d, fp_svd *out);
+/* U · diag(s0, s1) · Vᵀ into m (row-major). */
+void fp_svd_compose(const fp_svd *d, double s0, double s1, double m[2][2]);
+
+/* Raise the minor singular value to at least s[0] / FP_MAX_ECCENTRICITY. */
+void fp_clamp_eccentricity(fp_svd *d);
+
+/* The normalized Jacobian J (rows s, t; columns x, y) in texel units of level
+ * lv, with the rows of a mirrored axis (fp_center) negated. */
+void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
+                       double out[2][2]);
+
+/* Weighted sums of one level: Σw, Σw·T and, for ∂/∂(u0, v0) of the centre at
+ * fixed footprint, Σ∂w and Σ∂w·T. In double so that a constant texture comes
+ * back exactly and sums over a thousand texels keep float precision. */
+typedef struct fp_accum {
+    double sw, sdu, sdv;
+    double sT[4], sTdu[4], sTdv[4];
+    uint32_t texels;
+} fp_accum;
+
+void fp_accum_init(fp_accum *a);
+
+static inline void fp_accum_add(fp_accum *a, double w, double dwdu, double dwdv, const float T[4])
+{
+    int k;
+    a->sw += w;
+    a->sdu += dwdu;
+    a->sdv += dwdv;
+    for (k = 0; k < 4; ++k) {
+        a->sT[k] += w * T[k];
+        a->sTdu[k] += dwdu * T[k];
+        a->sTdv[k] += dwdv * T[k];
+    }
+    a->texels++;
+}
+
+/* One level of a footprint filter: when `count_only`, returns (as a double,
+ * +inf if unbounded) how many texels the level would visit, reading none;
+ * otherwise accumulates into `acc` and returns the texels read. */
+typedef double (*fp_level_fn)(const sample_ctx *c, const void *geom, int lv, fp_accum *acc,
+                              int count_only);
+
+/* The level loop shared by Blinn–Newell and EWA: levels from the minor
+ * semi-axis (base texels, after the eccentricity clamp) and the bias, moved
+ * coarser while the two levels together would exceed
+ * SAMPLE_MAX_FOOTPRINT_TEXELS, blended in double; bilinear at the coarsest
+ * level if even that does not fit. Fills out/dds/ddt/st; returns texels. */
+uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base,
+                float s, float t, float call_bias, float out[4], float dds[4], float ddt[4],
+                sample_stats *st);
+
+/* The footprint centre on level lv in texel units with texel centres at
+ * integers (u0 = s·w − ½), after the coordinate transform of the wrap modes
+ * that have one (wrap_coord); `flip_s`/`flip_t` say whether a mirror-clamp
+ * reflected the centre, which mirrors the footprint too. */
+void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
+               int *flip_t);
 
 /* One OpenGL-filtered query (LOD + level selection + reconstruction +
  * blend); the anisotropic probes use it. Returns texels read. */

@@ -56,26 +56,33 @@ static void blend(float a[4], const float b[4], float f)
     for (k = 0; k < 4; ++k) a[k] = (1.0f - f) * a[k] + f * b[k];
 }
 
+/* Reconstruct and blend the levels an OpenGL filter chose for λ. */
+static uint32_t gl_apply(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
+                         float out[4], float dds[4], float ddt[4], sample_stats *st)
+{
+    uint32_t n = recon_level(c, ch->level0, ch->kind, q->s, q->t, out, dds, ddt);
+    if (ch->level1 >= 0) {
+        float o1[4], ds1[4], dt1[4];
+        n += recon_level(c, ch->level1, ch->kind, q->s, q->t, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
+        blend(out, o1, ch->frac);
+        if (dds) blend(dds, ds1, ch->frac);
+        if (ddt) blend(ddt, dt1, ch->frac);
+    }
+    if (st) {
+        st->level0 = (int16_t)ch->level0;
+        st->level1 = (int16_t)ch->level1;
+        st->level_frac = ch->frac;
+        st->lod = lam;
+    }
+    return n;
+}
+
 uint32_t sample_gl(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
                    float dds[4], float ddt[4], sample_stats *st)
 {
     float lam = lod_lambda(c, lod_lambda_base(c, q), call_bias);
     lod_choice ch = lod_select(c, lam);
-    uint32_t n = recon_level(c, ch.level0, ch.kind, q->s, q->t, out, dds, ddt);
-    if (ch.level1 >= 0) {
-        float o1[4], ds1[4], dt1[4];
-        n += recon_level(c, ch.level1, ch.kind, q->s, q->t, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
-        blend(out, o1, ch.frac);
-        if (dds) blend(dds, ds1, ch.frac);
-        if (ddt) blend(ddt, dt1, ch.frac);
-    }
-    if (st) {
-        st->level0 = (int16_t)ch.level0;
-        st->level1 = (int16_t)ch.level1;
-        st->level_frac = ch.frac;
-        st->lod = lam;
-    }
-    return n;
+    return gl_apply(c, q, lam, &ch, out, dds, ddt, st);
 }
 
 static int query_finite(const sample_query *q)
@@ -92,8 +99,60 @@ static int quad_finite(const sample_quad *qd)
     return 1;
 }
 
-/* One query through the dispatch chosen for the batch. */
-static void sample_query_at(const sample_ctx *c, const sample_batch_args *a, size_t i)
+/* What a query will do, decided for a block of queries before any texel is
+ * read, so that the texel rows can be prefetched: random queries into a
+ * large texture are bound by memory latency, and overlapping the misses of
+ * several queries is worth more than any arithmetic saving. */
+typedef struct query_plan {
+    enum { PLAN_BORDER, PLAN_GL, PLAN_FOOTPRINT } kind;
+    float lam;
+    lod_choice ch;
+} query_plan;
+
+enum { PLAN_BLOCK = 16 };
+
+#if defined(__GNUC__)
+#define PREFETCH(p) __builtin_prefetch(p)
+#else
+#define PREFETCH(p) ((void)(p))
+#endif
+
+/* Touch the two texel rows a bilinear read near (s, t) needs. Wrapping is
+ * ignored (a prefetch is only a hint), but the address is kept inside the
+ * level so that no invalid pointer is ever formed. */
+static void prefetch_level(const sample_ctx *c, int lv, float s, float t)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    float u = s * (float)L->w - 0.5f, v = t * (float)L->h - 0.5f;
+    int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
+    int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
+    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * c->tex->texel_bytes;
+    PREFETCH(p);
+    if (j + 1 < L->h) PREFETCH(p + L->stride);
+}
+
+static void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i, query_plan *pl)
+{
+    const sample_query *q = &a->queries[i];
+    float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
+    if (!query_finite(q) || !isfinite(bias) || (a->corners && !quad_finite(&a->corners[i]))) {
+        /* DESIGN §10: non-finite input gives the border colour, decided
+         * before any arithmetic could turn it into an index. */
+        pl->kind = PLAN_BORDER;
+        return;
+    }
+    pl->lam = lod_lambda(c, lod_lambda_base(c, q), bias);
+    if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && pl->lam > 0.0f) {
+        pl->kind = PLAN_FOOTPRINT;
+        return;
+    }
+    pl->kind = PLAN_GL;
+    pl->ch = lod_select(c, pl->lam);
+    prefetch_level(c, pl->ch.level0, q->s, q->t);
+    if (pl->ch.level1 >= 0) prefetch_level(c, pl->ch.level1, q->s, q->t);
+}
+
+static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const query_plan *pl)
 {
     const sample_query *q = &a->queries[i];
     float *out = a->rgba + 4 * i;
@@ -102,22 +161,21 @@ static void sample_query_at(const sample_ctx *c, const sample_batch_args *a, siz
     sample_stats local, *st = a->stats ? &a->stats[i] : &local;
     float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
     const sample_quad *corners = a->corners ? &a->corners[i] : NULL;
-    uint32_t n;
+    uint32_t n = 0;
 
     st->level0 = st->level1 = -1;
     st->level_frac = 0.0f;
     st->lod = 0.0f;
-    if (!query_finite(q) || !isfinite(bias) || (corners && !quad_finite(corners))) {
-        /* DESIGN §10: non-finite input gives the border colour, decided
-         * before any arithmetic could turn it into an index. */
+    switch (pl->kind) {
+    case PLAN_BORDER:
         memcpy(out, c->border, sizeof c->border);
         if (dds) memset(dds, 0, 4 * sizeof(float));
         if (ddt) memset(ddt, 0, 4 * sizeof(float));
-        st->texels = 0;
-        return;
-    }
-    if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE &&
-        lod_lambda(c, lod_lambda_base(c, q), bias) > 0.0f) {
+        break;
+    case PLAN_GL:
+        n = gl_apply(c, q, pl->lam, &pl->ch, out, dds, ddt, st);
+        break;
+    case PLAN_FOOTPRINT:
         switch (c->smp->footprint) {
         case SAMPLE_FOOTPRINT_ANISOTROPIC:
             n = fp_anisotropic(c, q, bias, out, dds, ddt, st);
@@ -130,8 +188,7 @@ static void sample_query_at(const sample_ctx *c, const sample_batch_args *a, siz
             n = fp_ewa(c, q, bias, out, dds, ddt, st);
             break;
         }
-    } else {
-        n = sample_gl(c, q, bias, out, dds, ddt, st);
+        break;
     }
     st->texels = n;
 }
@@ -155,7 +212,12 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
     c.base = smp->base_level < tex->nlevels ? smp->base_level : tex->nlevels - 1;
     c.maxlev = smp->max_level < tex->nlevels - 1 ? smp->max_level : tex->nlevels - 1;
     if (c.maxlev < c.base) c.maxlev = c.base;
-    for (i = 0; i < a->count; ++i) sample_query_at(&c, a, i);
+    for (i = 0; i < a->count; i += PLAN_BLOCK) {
+        query_plan plan[PLAN_BLOCK];
+        size_t k, m = a->count - i < PLAN_BLOCK ? a->count - i : PLAN_BLOCK;
+        for (k = 0; k < m; ++k) plan_query(&c, a, i + k, &plan[k]);
+        for (k = 0; k < m; ++k) run_query(&c, a, i + k, &plan[k]);
+    }
     return SAMPLE_OK;
 }
 

@@ -38,6 +38,9 @@ static double mirror(double a) { return a >= 0.0 ? a : -(1.0 + a); }
 int wrap_index(sample_wrap mode, double i, int n, int linear)
 {
     double nd = (double)n;
+    /* Every mode maps an in-range index to itself; most reads are in range,
+     * so they skip the per-mode work (and fmod). */
+    if (i >= 0.0 && i < nd) return (int)i;
     /* s·n can overflow float to ±inf for |s| near FLT_MAX; fmod(inf) is NaN
      * and NaN → int is undefined, so saturate first. */
     if (!(i >= -DBL_MAX)) i = -DBL_MAX;
