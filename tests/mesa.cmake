@@ -1,0 +1,23 @@
+# Cross-check against Mesa's softpipe through OSMesa (doc/mip-and-lod.md).
+# Skips (exit 77) where no OSMesa 3.3 context can be made.
+find_library(SAMPLE_OSMESA_LIBRARY OSMesa)
+find_path(SAMPLE_OSMESA_INCLUDE GL/osmesa.h)
+if(SAMPLE_OSMESA_LIBRARY AND SAMPLE_OSMESA_INCLUDE)
+  add_executable(mesa_check ${CMAKE_CURRENT_SOURCE_DIR}/mesa_check.c)
+  target_link_libraries(mesa_check PRIVATE sample ${SAMPLE_OSMESA_LIBRARY})
+  target_include_directories(mesa_check PRIVATE ${SAMPLE_OSMESA_INCLUDE})
+  target_compile_options(mesa_check PRIVATE ${SAMPLE_WARNINGS})
+  # POSIX mkdtemp, system.
+  target_compile_definitions(mesa_check PRIVATE _POSIX_C_SOURCE=200809L)
+  if(TARGET texsample)
+    add_test(NAME mesa_check COMMAND mesa_check --texsample $<TARGET_FILE:texsample>)
+  else()
+    add_test(NAME mesa_check COMMAND mesa_check)
+  endif()
+  # Mesa is not built with the sanitizers; its own allocations at exit are
+  # not ours to report.
+  set_tests_properties(mesa_check PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300
+    ENVIRONMENT "GALLIUM_DRIVER=softpipe;ASAN_OPTIONS=detect_leaks=0")
+else()
+  message(STATUS "OSMesa not found: the mesa_check test is not built")
+endif()

@@ -1,0 +1,543 @@
+/*
+ * Cross-check of libsample's OpenGL filters against Mesa's softpipe
+ * (doc/mip-and-lod.md, "How to check lookup against Mesa").
+ *
+ * An OSMesa context renders one fragment per query into an RGBA32F
+ * framebuffer; the fragment shader fetches its query from an RGBA32F
+ * texture (exact floats, no interpolation) and calls textureGrad or
+ * textureLod on a random RGBA32F texture whose levels are uploaded
+ * explicitly (libsample's box pyramid, so both sides read the same texels).
+ * Every wrap mode × mag filter × min filter is compared with sample_batch on
+ * the same texels, state and queries; with --texsample the same queries also
+ * go through `texsample lookup` by files.
+ *
+ *   GALLIUM_DRIVER=softpipe mesa_check [--texsample PATH] [--dump DIR] [-v]
+ *
+ * Exit 0: agreement; 1: a difference over the bound; 77: no usable OSMesa
+ * context (ctest SKIP).
+ */
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "sample/sample.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define SKIP 77
+#define QW 32        /* framebuffer width: queries per row */
+#define NQ 512       /* queries per configuration */
+/* Agreement bound on results in [0, 1] (doc/mip-and-lod.md): softpipe
+ * evaluates the same formulas in float with a different operation order
+ * (lerps as a + w(b − a), two nested lerps for bilinear, a third for the
+ * level blend): each rounds by ≤ 2^-24 relative, a handful of them give a
+ * few units in the last place of 1.0. 1e-6 is 16 such units; the measured
+ * maximum is 1.8e-7. */
+#define TOL 1e-6f
+
+/* Texture under test: power-of-two so that textureGrad's ρ is exact in
+ * both implementations (doc: softpipe takes log2 with a 16-bit mantissa
+ * table, exact for the ρ values generated here). */
+#define TW 16
+#define TH 8
+
+static int verbose;
+
+static uint32_t rng = 12345u;
+static uint32_t rnd_u32(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    return rng;
+}
+static float rnd01(void) { return (float)(rnd_u32() >> 8) * (1.0f / 16777216.0f); }
+
+/* ---- GL plumbing -------------------------------------------------------- */
+
+static const char *vs_src =
+    "#version 330 core\n"
+    "layout(location = 0) in vec2 pos;\n"
+    "void main() { gl_Position = vec4(pos, 0.0, 1.0); }\n";
+
+/* Query i sits at fragment (i mod QW, i / QW); its two RGBA32F texels are
+ * (s, t, ds/dx, dt/dx) and (ds/dy, dt/dy, lod, 0). */
+static const char *fs_src =
+    "#version 330 core\n"
+    "uniform sampler2D tex;\n"
+    "uniform sampler2D qtex;\n"
+    "uniform int use_lod;\n"
+    "out vec4 color;\n"
+    "void main() {\n"
+    "  ivec2 p = ivec2(gl_FragCoord.xy);\n"
+    "  vec4 a = texelFetch(qtex, ivec2(2 * p.x, p.y), 0);\n"
+    "  vec4 b = texelFetch(qtex, ivec2(2 * p.x + 1, p.y), 0);\n"
+    "  if (use_lod != 0) color = textureLod(tex, a.xy, b.z);\n"
+    "  else color = textureGrad(tex, a.xy, a.zw, b.xy);\n"
+    "}\n";
+
+typedef struct gl_state {
+    OSMesaContext ctx;
+    unsigned char dummy[4];
+    GLuint prog, vao, vbo, fbo, rt, qtex, tex;
+} gl_state;
+
+static GLuint compile(GLenum kind, const char *src)
+{
+    GLuint s = glCreateShader(kind);
+    GLint ok = 0;
+    glShaderSource(s, 1, &src, NULL);
+    glCompileShader(s);
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[1024];
+        glGetShaderInfoLog(s, sizeof log, NULL, log);
+        fprintf(stderr, "mesa_check: shader: %s\n", log);
+        return 0;
+    }
+    return s;
+}
+
+/* 0 when OSMesa cannot give a GL 3.3 context (the caller skips). The
+ * compatibility profile is asked for because it is the one that still has
+ * GL_CLAMP; softpipe gives 3.3 either way. */
+static int gl_init(gl_state *g)
+{
+    static const int attr[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,
+                               OSMESA_COMPAT_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
+                               OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    GLuint vs, fs;
+    GLint ok = 0;
+    memset(g, 0, sizeof *g);
+    g->ctx = OSMesaCreateContextAttribs(attr, NULL);
+    if (!g->ctx) {
+        fprintf(stderr, "mesa_check: OSMesaCreateContextAttribs (3.3 compatibility) failed\n");
+        return 0;
+    }
+    if (!OSMesaMakeCurrent(g->ctx, g->dummy, GL_UNSIGNED_BYTE, 1, 1)) {
+        fprintf(stderr, "mesa_check: OSMesaMakeCurrent failed\n");
+        return 0;
+    }
+    fprintf(stderr, "mesa_check: %s, %s\n", (const char *)glGetString(GL_RENDERER),
+            (const char *)glGetString(GL_VERSION));
+    if (!(vs = compile(GL_VERTEX_SHADER, vs_src)) || !(fs = compile(GL_FRAGMENT_SHADER, fs_src))) return 0;
+    g->prog = glCreateProgram();
+    glAttachShader(g->prog, vs);
+    glAttachShader(g->prog, fs);
+    glLinkProgram(g->prog);
+    glGetProgramiv(g->prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        fprintf(stderr, "mesa_check: program link failed\n");
+        return 0;
+    }
+    glGenVertexArrays(1, &g->vao);
+    glBindVertexArray(g->vao);
+    glGenBuffers(1, &g->vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, g->vbo);
+    glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, NULL);
+    glEnableVertexAttribArray(0);
+
+    glGenTextures(1, &g->rt);
+    glBindTexture(GL_TEXTURE_2D, g->rt);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, QW, NQ / QW, 0, GL_RGBA, GL_FLOAT, NULL);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glGenFramebuffers(1, &g->fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, g->rt, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        fprintf(stderr, "mesa_check: RGBA32F framebuffer incomplete\n");
+        return 0;
+    }
+    /* No colour clamping anywhere (compatibility profile). */
+    glClampColor(GL_CLAMP_READ_COLOR, GL_FALSE);
+    glViewport(0, 0, QW, NQ / QW);
+
+    glGenTextures(1, &g->qtex);
+    glGenTextures(1, &g->tex);
+    glUseProgram(g->prog);
+    glUniform1i(glGetUniformLocation(g->prog, "tex"), 0);
+    glUniform1i(glGetUniformLocation(g->prog, "qtex"), 1);
+    return glGetError() == GL_NO_ERROR;
+}
+
+static void gl_upload_levels(gl_state *g, const sample_texture *tex)
+{
+    sample_texture_info info;
+    int k, i, j;
+    sample_texture_info_get(tex, &info);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, g->tex);
+    for (k = 0; k < info.levels; ++k) {
+        int w, h;
+        float *d;
+        sample_texture_level_size(tex, k, &w, &h);
+        d = (float *)malloc((size_t)w * h * 4 * sizeof(float));
+        for (j = 0; j < h; ++j)
+            for (i = 0; i < w; ++i) sample_texture_texel(tex, k, i, j, d + 4 * ((size_t)j * w + i));
+        glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, d);
+        free(d);
+    }
+}
+
+static GLenum gl_wrap(sample_wrap w)
+{
+    static const GLenum m[SAMPLE_WRAP_COUNT] = {
+        [SAMPLE_WRAP_REPEAT] = GL_REPEAT,
+        [SAMPLE_WRAP_MIRRORED_REPEAT] = GL_MIRRORED_REPEAT,
+        [SAMPLE_WRAP_CLAMP_TO_EDGE] = GL_CLAMP_TO_EDGE,
+        [SAMPLE_WRAP_CLAMP_TO_BORDER] = GL_CLAMP_TO_BORDER,
+        [SAMPLE_WRAP_MIRROR_CLAMP_TO_EDGE] = GL_MIRROR_CLAMP_TO_EDGE_EXT,
+        [SAMPLE_WRAP_CLAMP] = GL_CLAMP,
+        [SAMPLE_WRAP_MIRROR_CLAMP] = GL_MIRROR_CLAMP_EXT,
+        [SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER] = GL_MIRROR_CLAMP_TO_BORDER_EXT,
+    };
+    return m[w];
+}
+
+static GLenum gl_filter(sample_filter f)
+{
+    static const GLenum m[6] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+                                GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+    return m[f];
+}
+
+/* Render the NQ queries (7 floats each: s t dsdx dtdx dsdy dtdy lod). */
+static int gl_render(gl_state *g, const sample_sampler *s, const float *q7, int use_lod, float *out)
+{
+    static float qt[NQ * 8];
+    int i;
+    for (i = 0; i < NQ; ++i) {
+        memcpy(qt + 8 * i, q7 + 7 * i, 6 * sizeof(float));
+        qt[8 * i + 6] = q7[7 * i + 6];
+        qt[8 * i + 7] = 0.0f;
+    }
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, g->qtex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 2 * QW, NQ / QW, 0, GL_RGBA, GL_FLOAT, qt);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, g->tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)gl_wrap(s->wrap_s));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)gl_wrap(s->wrap_t));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)gl_filter(s->min_filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)gl_filter(s->mag_filter));
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, s->border_color);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, s->lod_bias);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, s->min_lod);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, s->max_lod);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, s->base_level);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, s->max_level);
+
+    glUniform1i(glGetUniformLocation(g->prog, "use_lod"), use_lod);
+    glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glReadPixels(0, 0, QW, NQ / QW, GL_RGBA, GL_FLOAT, out);
+    if (glGetError() != GL_NO_ERROR) {
+        fprintf(stderr, "mesa_check: GL error while rendering\n");
+        return 0;
+    }
+    return 1;
+}
+
+/* ---- Queries --------------------------------------------------------------- */
+
+/* A coordinate in [−1.25, 2.25]. For the mirror-clamp-to-border pair of
+ * EXT_texture_mirror_clamp, |coordinate| ≥ ½ instead: DESIGN §3 takes the
+ * extension's s' = max(1/(2N), |s|) as written, softpipe omits the lower
+ * bound and blends the border colour within half a texel of s = 0 (a known
+ * deviation, doc/mip-and-lod.md); from |s| ≥ ½ the bound is inactive on
+ * every level, down to 1 × 1. */
+static float coord(sample_wrap w)
+{
+    if (w == SAMPLE_WRAP_MIRROR_CLAMP || w == SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER) {
+        float a = 0.5f + 1.75f * rnd01();
+        return (rnd_u32() & 1) ? -a : a;
+    }
+    return -1.25f + 3.5f * rnd01();
+}
+
+/* A texel-space scale 2^e·(1 + m/256): a mantissa of 8 bits, so that ρ and
+ * its logarithm are exact in softpipe's 16-bit log2 table as well. */
+static float grad_scale(void)
+{
+    int e = (int)(rnd_u32() % 8) - 2, m = (int)(rnd_u32() % 256);
+    return ldexpf(1.0f + (float)m / 256.0f, e);
+}
+
+/* textureGrad queries: axis-aligned Jacobians, on the diagonal or the
+ * anti-diagonal, where softpipe's ρ (max of |components| per axis) equals
+ * the specification's (max of column lengths). */
+static void make_grad_queries(float *q7, const sample_sampler *s, int base_w, int base_h)
+{
+    int i;
+    for (i = 0; i < NQ; ++i) {
+        float *q = q7 + 7 * i, a = grad_scale(), b = grad_scale();
+        q[0] = coord(s->wrap_s);
+        q[1] = coord(s->wrap_t);
+        q[2] = q[3] = q[4] = q[5] = 0.0f;
+        if (rnd_u32() & 1) {
+            q[2] = a / (float)base_w; /* ds/dx */
+            q[5] = b / (float)base_h; /* dt/dy */
+        } else {
+            q[3] = a / (float)base_h; /* dt/dx */
+            q[4] = b / (float)base_w; /* ds/dy */
+        }
+        if (rnd_u32() & 1) q[2] = -q[2], q[3] = -q[3];
+        q[6] = 0.0f;
+    }
+}
+
+/* textureLod queries: λ on every switch-over point and at random. */
+static void make_lod_queries(float *q7, const sample_sampler *s)
+{
+    static const float pts[] = {-0.5f, 0.0f, 0.25f, 0.5f - 1.0f / 1024, 0.5f + 1.0f / 1024, 0.75f, 1.0f, 1.25f,
+                                1.5f, 2.0f, 2.5f, 3.0f, 3.5f, 4.0f, 4.5f, 6.0f};
+    int i;
+    for (i = 0; i < NQ; ++i) {
+        float *q = q7 + 7 * i;
+        q[0] = coord(s->wrap_s);
+        q[1] = coord(s->wrap_t);
+        q[2] = q[3] = q[4] = q[5] = 0.0f;
+        q[6] = (i % 2) ? pts[(i / 2) % (int)(sizeof pts / sizeof pts[0])] : -1.0f + 6.0f * rnd01();
+    }
+}
+
+/* libsample's view of the same queries. textureLod's λ becomes a per-call
+ * bias on a Jacobian with ρ = 1 exactly (dt/dy = 1/h of the base level, a
+ * power of two): λ_base = 0, λ = lod, then the lod clamps as in GL. */
+static void lib_run(const sample_texture *tex, const sample_sampler *s, const float *q7, int use_lod,
+                    float *out)
+{
+    static sample_query q[NQ];
+    static float bias[NQ];
+    sample_batch_args a;
+    int i, bw, bh;
+    sample_texture_level_size(tex, s->base_level, &bw, &bh);
+    for (i = 0; i < NQ; ++i) {
+        const float *r = q7 + 7 * i;
+        q[i] = (sample_query){r[0], r[1], r[2], r[3], r[4], r[5]};
+        bias[i] = 0.0f;
+        if (use_lod) {
+            q[i].dsdx = q[i].dtdx = q[i].dsdy = 0.0f;
+            q[i].dtdy = 1.0f / (float)bh;
+            bias[i] = r[6];
+        }
+    }
+    memset(&a, 0, sizeof a);
+    a.count = NQ;
+    a.queries = q;
+    a.lod_bias = bias;
+    a.rgba = out;
+    if (sample_batch(tex, s, &a) != SAMPLE_OK) fprintf(stderr, "mesa_check: sample_batch failed\n");
+}
+
+/* ---- texsample lookup by files ------------------------------------------------ */
+
+static int write_file(const char *path, const void *p, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    int ok = f && fwrite(p, 1, n, f) == n;
+    if (f && fclose(f) != 0) ok = 0;
+    return ok;
+}
+
+static int read_file(const char *path, void *p, size_t n)
+{
+    FILE *f = fopen(path, "rb");
+    int ok = f && fread(p, 1, n, f) == n;
+    if (f) fclose(f);
+    return ok;
+}
+
+static void dump_levels(const char *dir, const sample_texture *tex)
+{
+    sample_texture_info info;
+    int k, i, j;
+    sample_texture_info_get(tex, &info);
+    for (k = 0; k < info.levels; ++k) {
+        char path[4096];
+        int w, h;
+        float *d;
+        sample_texture_level_size(tex, k, &w, &h);
+        d = (float *)malloc((size_t)w * h * 4 * sizeof(float));
+        for (j = 0; j < h; ++j)
+            for (i = 0; i < w; ++i) sample_texture_texel(tex, k, i, j, d + 4 * ((size_t)j * w + i));
+        if (k == 0) snprintf(path, sizeof path, "%s/tex.raw", dir);
+        else snprintf(path, sizeof path, "%s/tex.%d.raw", dir, k);
+        write_file(path, d, (size_t)w * h * 4 * sizeof(float));
+        free(d);
+    }
+}
+
+/* Runs `texsample lookup` on the dumped files; 1 when it ran and `out` holds
+ * its results. The command line is printed with -v, to be copied. Only
+ * textureGrad queries go through the tool: a query file has no per-query λ
+ * (textureLod), and --lod-bias is one value per run. */
+static int texsample_run(const char *exe, const char *dir, const sample_sampler *s, const float *q7, float *out)
+{
+    static float q6[NQ * 6];
+    char cmd[8192], path[4096];
+    int i;
+    for (i = 0; i < NQ; ++i) memcpy(q6 + 6 * i, q7 + 7 * i, 6 * sizeof(float));
+    snprintf(path, sizeof path, "%s/queries.bin", dir);
+    if (!write_file(path, q6, sizeof q6)) return 0;
+    snprintf(cmd, sizeof cmd,
+             "'%s' lookup --raw '%s/tex.raw' --w %d --h %d --levels '%s/tex' --queries '%s/queries.bin' "
+             "--out '%s/ours.bin' --wrap-s %s --wrap-t %s --min %s --mag %s --border %g,%g,%g,%g "
+             "--lod-bias %g --min-lod %g --max-lod %g --base-level %d --max-level %d --nearest-level-floor",
+             exe, dir, TW, TH, dir, dir, dir, sample_wrap_name(s->wrap_s), sample_wrap_name(s->wrap_t),
+             sample_filter_name(s->min_filter), sample_filter_name(s->mag_filter), s->border_color[0],
+             s->border_color[1], s->border_color[2], s->border_color[3], s->lod_bias, s->min_lod, s->max_lod,
+             s->base_level, s->max_level);
+    if (verbose) fprintf(stderr, "%s\n", cmd);
+    if (system(cmd) != 0) {
+        fprintf(stderr, "mesa_check: texsample lookup failed: %s\n", cmd);
+        return 0;
+    }
+    snprintf(path, sizeof path, "%s/ours.bin", dir);
+    return read_file(path, out, NQ * 4 * sizeof(float));
+}
+
+/* ---- Comparison ------------------------------------------------------------ */
+
+static float max_diff(const float *a, const float *b, int *worst)
+{
+    float m = 0.0f;
+    int i;
+    *worst = 0;
+    for (i = 0; i < NQ * 4; ++i) {
+        float d = fabsf(a[i] - b[i]);
+        if (!(d <= m)) {
+            m = d;
+            *worst = i / 4;
+        }
+    }
+    return m;
+}
+
+int main(int argc, char **argv)
+{
+    static float q7[NQ * 7], mesa[NQ * 4], ours[NQ * 4], tool[NQ * 4];
+    static float base[TW * TH * 4];
+    const char *texsample = NULL, *dump = NULL;
+    char tmpdir[] = "/tmp/mesa_check.XXXXXX";
+    gl_state g;
+    sample_image im = {TW, TH, 4, SAMPLE_FORMAT_F32, base, 0};
+    sample_mip_params mp;
+    sample_texture *tex = NULL;
+    int i, w, mag, min, extra, use_lod, configs = 0, failures = 0, tool_runs = 0;
+    float worst_all = 0.0f, worst_tool = 0.0f;
+
+    for (i = 1; i < argc; ++i) {
+        if (!strcmp(argv[i], "--texsample") && i + 1 < argc) texsample = argv[++i];
+        else if (!strcmp(argv[i], "--dump") && i + 1 < argc) dump = argv[++i];
+        else if (!strcmp(argv[i], "-v")) verbose = 1;
+        else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            printf("usage: mesa_check [--texsample PATH] [--dump DIR] [-v]\n"
+                   "Compares sample_batch (and texsample lookup) with Mesa softpipe through OSMesa.\n"
+                   "Run with GALLIUM_DRIVER=softpipe. Exit 0 agree, 1 differ, 77 no OSMesa context.\n");
+            return 0;
+        } else {
+            fprintf(stderr, "mesa_check: unknown option '%s'\n", argv[i]);
+            return 2;
+        }
+    }
+    if (!gl_init(&g)) return SKIP;
+
+    for (i = 0; i < TW * TH * 4; ++i) base[i] = rnd01();
+    sample_mip_params_init(&mp);
+    if (sample_texture_create(&im, &mp, &tex, NULL) != SAMPLE_OK) return 1;
+    gl_upload_levels(&g, tex);
+    if (texsample || dump) {
+        if (!dump) {
+            if (!mkdtemp(tmpdir)) return 1;
+            dump = tmpdir;
+        } else {
+            mkdir(dump, 0777);
+        }
+        dump_levels(dump, tex);
+    }
+
+    /* Every wrap mode (both axes) × mag × the six min filters, then extra
+     * states for bias, lod clamps and base/max level with trilinear; each
+     * with textureGrad and textureLod queries. */
+    for (w = 0; w < SAMPLE_WRAP_COUNT; ++w)
+        for (mag = 0; mag < 2; ++mag)
+            for (min = 0; min < 6 + 4; ++min)
+                for (use_lod = 0; use_lod < 2; ++use_lod) {
+                    sample_sampler s;
+                    int worst;
+                    float d;
+                    extra = min - 6;
+                    sample_sampler_init(&s);
+                    s.wrap_s = (sample_wrap)w;
+                    s.wrap_t = (sample_wrap)((w + (min % 3 == 2)) % SAMPLE_WRAP_COUNT); /* some mixed pairs */
+                    s.mag_filter = mag ? SAMPLE_LINEAR : SAMPLE_NEAREST;
+                    s.min_filter = extra < 0 ? (sample_filter)min : SAMPLE_LINEAR_MIPMAP_LINEAR;
+                    /* Mesa rounds NEAREST_MIPMAP_* levels as ⌊λ + ½⌋. */
+                    s.options = SAMPLE_OPT_NEAREST_LEVEL_FLOOR;
+                    s.border_color[0] = 0.25f; s.border_color[1] = 0.5f;
+                    s.border_color[2] = 0.75f; s.border_color[3] = 1.0f;
+                    if (extra == 0) { s.min_lod = 0.75f; s.max_lod = 2.25f; }
+                    if (extra == 1) { s.base_level = 1; s.max_level = 2; }
+                    if (extra == 2) { s.min_filter = SAMPLE_NEAREST_MIPMAP_NEAREST; s.base_level = 1; }
+                    /* GL_TEXTURE_LOD_BIAS is not compared: softpipe drops it for
+                     * textureGrad and textureLod (doc/mip-and-lod.md); test_lod
+                     * checks the bias against the specification instead. */
+                    if (extra == 3) { s.min_lod = -0.5f; s.max_lod = 1.5f; s.base_level = 1; }
+                    if (use_lod) make_lod_queries(q7, &s);
+                    else make_grad_queries(q7, &s, TW >> s.base_level, TH >> s.base_level);
+                    if (!gl_render(&g, &s, q7, use_lod, mesa)) return 1;
+                    lib_run(tex, &s, q7, use_lod, ours);
+                    d = max_diff(mesa, ours, &worst);
+                    ++configs;
+                    if (d > worst_all) worst_all = d;
+                    if (!(d <= TOL)) {
+                        const float *q = q7 + 7 * worst;
+                        ++failures;
+                        fprintf(stderr,
+                                "DIFF %.3g wrap %s/%s mag %s min %s %s [bias %g lod %g..%g levels %d..%d]: query %d (s %.9g t %.9g J %g %g %g %g "
+                                "lod %g): mesa %.9g %.9g %.9g %.9g, libsample %.9g %.9g %.9g %.9g\n",
+                                d, sample_wrap_name(s.wrap_s), sample_wrap_name(s.wrap_t),
+                                sample_filter_name(s.mag_filter), sample_filter_name(s.min_filter),
+                                use_lod ? "textureLod" : "textureGrad", s.lod_bias, s.min_lod, s.max_lod,
+                                s.base_level, s.max_level, worst, q[0], q[1], q[2], q[3], q[4], q[5],
+                                q[6], mesa[4 * worst], mesa[4 * worst + 1], mesa[4 * worst + 2],
+                                mesa[4 * worst + 3], ours[4 * worst], ours[4 * worst + 1], ours[4 * worst + 2],
+                                ours[4 * worst + 3]);
+                    } else if (verbose) {
+                        fprintf(stderr, "ok %.3g wrap %s/%s mag %s min %s %s\n", d, sample_wrap_name(s.wrap_s),
+                                sample_wrap_name(s.wrap_t), sample_filter_name(s.mag_filter),
+                                sample_filter_name(s.min_filter), use_lod ? "textureLod" : "textureGrad");
+                    }
+                    if (texsample && !use_lod) {
+                        if (!texsample_run(texsample, dump, &s, q7, tool)) return 1;
+                        d = max_diff(mesa, tool, &worst);
+                        ++tool_runs;
+                        if (d > worst_tool) worst_tool = d;
+                        if (!(d <= TOL)) {
+                            ++failures;
+                            fprintf(stderr, "DIFF %.3g texsample lookup vs mesa, wrap %s min %s\n", d,
+                                    sample_wrap_name(s.wrap_s), sample_filter_name(s.min_filter));
+                        }
+                    }
+                }
+    printf("mesa_check: %d configurations x %d queries, max |mesa - libsample| = %.3g (bound %.3g)", configs, NQ,
+           (double)worst_all, (double)TOL);
+    if (tool_runs) printf("; %d texsample lookup runs, max |mesa - texsample| = %.3g", tool_runs, (double)worst_tool);
+    printf("; %d over the bound\n", failures);
+    sample_texture_destroy(tex);
+    OSMesaDestroyContext(g.ctx);
+    return failures ? 1 : 0;
+}
