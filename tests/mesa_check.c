@@ -474,7 +474,7 @@ int main(int argc, char **argv)
      * with textureGrad and textureLod queries. */
     for (w = 0; w < SAMPLE_WRAP_COUNT; ++w)
         for (mag = 0; mag < 2; ++mag)
-            for (min = 0; min < 6 + 4; ++min)
+            for (min = 0; min < 6 + 5; ++min)
                 for (use_lod = 0; use_lod < 2; ++use_lod) {
                     sample_sampler s;
                     int worst;
@@ -492,10 +492,14 @@ int main(int argc, char **argv)
                     if (extra == 0) { s.min_lod = 0.75f; s.max_lod = 2.25f; }
                     if (extra == 1) { s.base_level = 1; s.max_level = 2; }
                     if (extra == 2) { s.min_filter = SAMPLE_NEAREST_MIPMAP_NEAREST; s.base_level = 1; }
-                    /* GL_TEXTURE_LOD_BIAS is not compared: softpipe drops it for
-                     * textureGrad and textureLod (doc/mip-and-lod.md); test_lod
-                     * checks the bias against the specification instead. */
                     if (extra == 3) { s.min_lod = -0.5f; s.max_lod = 1.5f; s.base_level = 1; }
+                    if (extra == 4) {
+                        /* softpipe drops GL_TEXTURE_LOD_BIAS for textureGrad
+                         * (doc/mip-and-lod.md); test_lod checks that path
+                         * against the specification instead. */
+                        if (!use_lod) continue;
+                        s.lod_bias = 0.75f;
+                    }
                     if (use_lod) make_lod_queries(q7, &s);
                     else make_grad_queries(q7, &s, TW >> s.base_level, TH >> s.base_level);
                     if (!gl_render(&g, &s, q7, use_lod, mesa)) return 1;
