@@ -271,6 +271,10 @@ uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double
 void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
                int *flip_t);
 
+/* Anisotropic probe count N for Pmax ≥ Pmin (base texels) under the
+ * sampler's max_anisotropy and SAMPLE_OPT_ANISO_POW2 (footprint_aniso.c). */
+int fp_aniso_count(const sample_sampler *smp, double pmax, double pmin);
+
 /* One OpenGL-filtered query (LOD + level selection + reconstruction +
  * blend); the anisotropic probes use it. Returns texels read. */
 uint32_t sample_gl(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],

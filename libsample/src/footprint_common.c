@@ -1,0 +1,181 @@
+/*
+ * Footprint geometry and the level loop shared by the Blinn–Newell and EWA
+ * filters (DESIGN §7, doc/footprint-filters.md).
+ */
+#include "internal.h"
+
+#include <float.h>
+
+void fp_svd2(double a, double b, double c, double d, fp_svd *o)
+{
+    /* Closed-form 2 × 2 SVD (J = R(φ) · diag(sx, sy) · R(θ), Blinn's
+     * "Consider the lowly 2×2 matrix"): with E, F, G, H the symmetric and
+     * antisymmetric parts, sx = Q + R ≥ |sy| = |Q − R|. atan2 keeps it
+     * defined for every finite input, including the zero matrix. */
+    double E = 0.5 * (a + d), F = 0.5 * (a - d), G = 0.5 * (c + b), H = 0.5 * (c - b);
+    double Q = hypot(E, H), R = hypot(F, G);
+    double a1 = atan2(G, F), a2 = atan2(H, E);
+    double th = 0.5 * (a2 - a1), ph = 0.5 * (a2 + a1);
+    double sy = Q - R;
+    o->U[0][0] = cos(ph); o->U[0][1] = -sin(ph);
+    o->U[1][0] = sin(ph); o->U[1][1] = cos(ph);
+    o->V[0][0] = cos(th); o->V[0][1] = -sin(th);
+    o->V[1][0] = sin(th); o->V[1][1] = cos(th);
+    o->s[0] = Q + R;
+    o->s[1] = fabs(sy);
+    if (sy < 0.0) { /* a reflection: carry the sign in U's second column */
+        o->U[0][1] = -o->U[0][1];
+        o->U[1][1] = -o->U[1][1];
+    }
+}
+
+void fp_svd_compose(const fp_svd *d, double s0, double s1, double m[2][2])
+{
+    int i, j;
+    for (i = 0; i < 2; ++i)
+        for (j = 0; j < 2; ++j) m[i][j] = d->U[i][0] * s0 * d->V[j][0] + d->U[i][1] * s1 * d->V[j][1];
+}
+
+void fp_clamp_eccentricity(fp_svd *d)
+{
+    /* Lengthen the minor axis rather than shorten the major one (pbrt's
+     * "clamp ellipse eccentricity"): the filter may blur across, never alias
+     * along. */
+    double lo = d->s[0] / FP_MAX_ECCENTRICITY;
+    if (d->s[1] < lo) d->s[1] = lo;
+}
+
+void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
+                       double out[2][2])
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    double ku = flip_s ? -(double)L->w : (double)L->w, kv = flip_t ? -(double)L->h : (double)L->h;
+    out[0][0] = J[0][0] * ku;
+    out[0][1] = J[0][1] * ku;
+    out[1][0] = J[1][0] * kv;
+    out[1][1] = J[1][1] * kv;
+}
+
+void fp_accum_init(fp_accum *a) { memset(a, 0, sizeof *a); }
+
+/* Normalized result and its derivatives: R = ΣwT / Σw and, by the quotient
+ * rule at fixed footprint, ∂R = (Σ∂w·T − R·Σ∂w) / Σw. */
+static int accum_result(const fp_accum *a, double r[4], double rs[4], double rt[4])
+{
+    int k;
+    if (!(a->sw > 0.0)) return 0;
+    for (k = 0; k < 4; ++k) {
+        r[k] = a->sT[k] / a->sw;
+        rs[k] = (a->sTdu[k] - r[k] * a->sdu) / a->sw;
+        rt[k] = (a->sTdv[k] - r[k] * a->sdv) / a->sw;
+    }
+    return 1;
+}
+
+static int mirror_clamp(sample_wrap m)
+{
+    return m == SAMPLE_WRAP_MIRROR_CLAMP || m == SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER;
+}
+
+/* A periodic wrap reads the same texels one period further on; bringing the
+ * centre into the first period keeps i − u0 exact for coordinates like 1e6
+ * (where the texel index and the offset would otherwise share 53 bits). */
+static double reduce_period(sample_wrap m, double u, int n)
+{
+    double p = m == SAMPLE_WRAP_REPEAT ? (double)n : (m == SAMPLE_WRAP_MIRRORED_REPEAT ? 2.0 * n : 0.0);
+    return p > 0.0 ? u - p * floor(u / p) : u;
+}
+
+void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
+               int *flip_t)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    sample_wrap ms = c->smp->wrap_s, mt = c->smp->wrap_t;
+    *flip_s = mirror_clamp(ms) && s < 0.0f;
+    *flip_t = mirror_clamp(mt) && t < 0.0f;
+    /* A float times an int below 2^17 is exact in double. Texel centres sit
+     * at integers after the −½ (DESIGN §2). */
+    *u0 = reduce_period(ms, (double)wrap_coord(ms, s, L->w) * L->w, L->w) - 0.5;
+    *v0 = reduce_period(mt, (double)wrap_coord(mt, t, L->h) * L->h, L->h) - 0.5;
+}
+
+static void store(float *dst, const double *v)
+{
+    int k;
+    if (dst)
+        for (k = 0; k < 4; ++k) dst[k] = (float)v[k];
+}
+
+uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base,
+                float s, float t, float call_bias, float out[4], float dds[4], float ddt[4],
+                sample_stats *st)
+{
+    /* Four texels stay in reserve for the bilinear fallback below. */
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS - 4.0;
+    /* λ of the level where the minor semi-axis spans FP_MINOR_TEXELS:
+     * log2(minor) − log2(FP_MINOR_TEXELS), then the biases and the min/max
+     * LOD clamps as for any λ (GL 4.6 §8.14.1). */
+    double lb = log2(minor_base) - log2(FP_MINOR_TEXELS);
+    float lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias);
+    int l0, l1, k, ok = 0;
+    float f;
+    uint32_t n = 0;
+    fp_accum a0, a1;
+    double r0[4], s0[4], t0[4], r1[4], s1[4], t1[4];
+
+    lod_split(c, lam, &l0, &l1, &f);
+    if (f == 0.0f) l1 = l0;
+    /* Texel cap (SAMPLE_MAX_FOOTPRINT_TEXELS): a footprint too large for its
+     * levels moves one level coarser at a time (at most SAMPLE_MAX_LEVELS
+     * steps; each count is itself bounded). */
+    for (;;) {
+        double n0 = level(c, geom, l0, NULL, 1);
+        double n1 = l1 != l0 ? level(c, geom, l1, NULL, 1) : 0.0;
+        if (n0 + n1 <= cap) {
+            ok = 1;
+            break;
+        }
+        if (l0 >= c->maxlev) break;
+        ++l0;
+        if (l1 < c->maxlev) ++l1;
+        if (l0 == l1) f = 0.0f;
+    }
+    if (ok) {
+        fp_accum_init(&a0);
+        n = (uint32_t)level(c, geom, l0, &a0, 0);
+        ok = accum_result(&a0, r0, s0, t0);
+        if (ok && l1 != l0) {
+            fp_accum_init(&a1);
+            n += (uint32_t)level(c, geom, l1, &a1, 0);
+            ok = accum_result(&a1, r1, s1, t1);
+            /* Blend in double: (1 − f)·T + f·T is then T exactly in float. */
+            for (k = 0; k < 4 && ok; ++k) {
+                r0[k] = (1.0 - f) * r0[k] + f * r1[k];
+                s0[k] = (1.0 - f) * s0[k] + f * s1[k];
+                t0[k] = (1.0 - f) * t0[k] + f * t1[k];
+            }
+        }
+    }
+    if (st) {
+        st->level0 = (int16_t)l0;
+        st->level1 = (int16_t)(l1 != l0 ? l1 : -1);
+        st->level_frac = l1 != l0 ? f : 0.0f;
+        st->lod = lam;
+    }
+    if (!ok) {
+        /* Wider than the whole budget even on the coarsest level (or an
+         * empty sum, which the unit-variance term rules out for finite
+         * input): the bilinear value of the coarsest level at the centre —
+         * what the footprint tends to as it covers the whole texture. */
+        if (st) {
+            st->level0 = (int16_t)c->maxlev;
+            st->level1 = -1;
+            st->level_frac = 0.0f;
+        }
+        return n + recon_level(c, c->maxlev, SAMPLE_LINEAR, s, t, out, dds, ddt);
+    }
+    store(out, r0);
+    store(dds, s0);
+    store(ddt, t0);
+    return n;
+}
