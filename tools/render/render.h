@@ -159,11 +159,13 @@ typedef struct render_options {
     sample_sampler sampler; /* used for every texture lookup */
     int use_scene_sampler;  /* 1 (default): take the scene's sampler instead */
     int threads;            /* ≥ 1; default 1 */
-    int progress;           /* 1: cli_progress on stderr */
+    /* Progress report, called from worker threads under a lock (e.g.
+     * cli_progress); NULL: silent. */
+    void (*progress)(const char *what, size_t done, size_t total);
     int corners;            /* 1: pass exact corners (sample_quad) where valid */
     render_shade shade;
     unsigned buffers;       /* RENDER_BUF_* */
-    float background[4];    /* linear RGBA where nothing is hit (and no env) */
+    float background[4];    /* unused: the scene's "background" colour is used */
 } render_options;
 
 void render_options_init(render_options *o);

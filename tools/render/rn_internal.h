@@ -1,0 +1,318 @@
+/*
+ * The renderer's private header: where its pieces meet.
+ *
+ *   rn_vec.h        small double 3-vector helpers
+ *   camera.c        pinhole look-at camera: rays and the projection's derivative
+ *   teapot_data.c   the Newell teapot: 32 bicubic Bézier patches, 306 points
+ *   patch.c         Bézier evaluation, tessellation, ray seeds, Newton
+ *   shapes.c        sphere, cylinder, ground plane, polygons (homography)
+ *   jacobian.c      exact d(s,t)/d(x,y), normals and their derivatives
+ *   hit.c           visible-surface search over objects, corners, cache
+ *   proc.c          procedural textures (exact functions) and baking
+ *   noise.c         Perlin gradient noise, periodic, seeded
+ *   envmap.c        lat-long and cube environment maps, reflection lookup
+ *   shade.c         Blinn–Newell shading, bump and normal mapping
+ *   scene.c         scene objects, built-in scenes, destruction
+ *   scene_json.c    scene files (cJSON)
+ *   parallel.c      rows over pthreads, progress
+ *   image.c         threaded rendering into float buffers
+ *   cmd_render.c    the texsample subcommand
+ */
+#ifndef TEXSAMPLE_RN_INTERNAL_H
+#define TEXSAMPLE_RN_INTERNAL_H
+
+#include "render.h"
+#include "rn_vec.h"
+
+#include <stdint.h>
+#include <string.h>
+
+#define RN_PI 3.14159265358979323846
+
+/* ---- Camera (camera.c) ------------------------------------------------ */
+
+typedef struct rn_camera {
+    double eye[3], fwd[3], right[3], up[3]; /* orthonormal frame */
+    double fovy_deg;
+    int width, height;
+    double tan_x, tan_y; /* tangents of the half field of view */
+} rn_camera;
+
+/* Returns 0 if eye == look or up is parallel to the view direction. */
+int cam_init(rn_camera *c, const double eye[3], const double look[3], const double up[3],
+             double fovy_deg, int width, int height);
+/* Direction through screen point (x, y), scaled so that dir·fwd = 1: then a
+ * ray parameter equals the depth along the view axis. */
+void cam_ray(const rn_camera *c, double x, double y, double dir[3]);
+/* Screen position of P and its derivative d(x, y)/dP (rows x, y). Returns the
+ * depth (≤ 0: behind the eye, outputs undefined). */
+double cam_project(const rn_camera *c, const double P[3], double xy[2], double dxy_dP[2][3]);
+
+/* ---- Surfaces ----------------------------------------------------------- */
+
+/* A point of a parametric surface with its first and second partials. */
+typedef struct rn_surf {
+    double P[3], Pu[3], Pv[3], Puu[3], Puv[3], Pvv[3];
+} rn_surf;
+
+enum { RN_TESS = 16, RN_BLOCK = 4 }; /* patch tessellation for ray seeds */
+
+typedef struct rn_patch {
+    double cp[4][4][3]; /* cp[i][j]: row i along u, column j along v */
+    double (*grid)[3];  /* (RN_TESS+1)^2 points for seeding */
+    double bmin[3], bmax[3];
+    double blo[RN_TESS / RN_BLOCK][RN_TESS / RN_BLOCK][3];
+    double bhi[RN_TESS / RN_BLOCK][RN_TESS / RN_BLOCK][3];
+} rn_patch;
+
+typedef struct rn_poly {
+    int n;                 /* 3 or 4 vertices, convex, planar */
+    double V[4][3], st[4][2];
+    double O[3], e1[3], e2[3], nrm[3]; /* plane frame: V = O + a e1 + b e2 */
+    double H[9], Hinv[9];  /* (s, t, 1) → (a, b, w) homography and inverse */
+    double a[4], b[4];     /* vertices in plane coordinates */
+} rn_poly;
+
+typedef enum rn_kind {
+    RN_PATCHES = 0,
+    RN_POLYGONS = 1,
+    RN_SPHERE = 2,
+    RN_CYLINDER = 3,
+    RN_PLANE = 4,
+} rn_kind;
+
+typedef struct rn_object {
+    rn_kind kind;
+    int material;
+    double st_scale[2], st_offset[2]; /* (s, t) = offset + scale·(u, v) */
+    /* Quadrics and the plane: centre and orthonormal frame (X, Y, Z). */
+    double centre[3], X[3], Y[3], Z[3];
+    double radius, height; /* sphere/cylinder radius, cylinder height;
+                              plane: world size of one unit of (u, v) */
+    rn_patch *patches;
+    rn_poly *polys;
+    int count; /* patches or polygons */
+} rn_object;
+
+/* Surface point of primitive `prim` of an object at (u, v). */
+void obj_eval(const rn_object *o, int prim, double u, double v, rn_surf *S);
+/* Is (u, v) inside the primitive's domain (with tolerance eps)? */
+int obj_in_domain(const rn_object *o, int prim, double u, double v, double eps);
+
+/* ---- Patches (patch.c) -------------------------------------------------- */
+
+void patch_eval(const rn_patch *p, double u, double v, rn_surf *S);
+/* Fill grid and bounding boxes; returns 0 on allocation failure. */
+int patch_prepare(rn_patch *p);
+void patch_release(rn_patch *p);
+
+/* Newton on screen position: solve proj(P(u, v)) = (x, y) for the surface
+ * of o's primitive from (u, v); in/out. Returns 1 on convergence. */
+int newton_screen(const rn_camera *c, const rn_object *o, int prim, double x, double y,
+                  double *u, double *v);
+
+/* Ray seeds: every tessellation triangle of the patches of o hit by the ray
+ * (eye + τ dir), nearest first, at most max; returns the count. */
+typedef struct rn_seed {
+    int prim;
+    double u, v, depth;
+} rn_seed;
+int patch_seeds(const rn_object *o, const double eye[3], const double dir[3], rn_seed *seeds,
+                int max);
+
+/* Teapot data (teapot_data.c): 1-based indices as published. */
+#define TEAPOT_PATCHES 32
+#define TEAPOT_POINTS 306
+extern const unsigned short teapot_index[TEAPOT_PATCHES][16];
+extern const double teapot_point[TEAPOT_POINTS][3];
+
+/* ---- Analytic shapes (shapes.c) ----------------------------------------- */
+
+/* Nearest intersection of the ray with a quadric, the plane or a polygon
+ * with depth > near: fills prim, u, v, depth. Returns 1 on a hit. */
+int shape_intersect(const rn_object *o, const double eye[3], const double dir[3], double near,
+                    rn_seed *hit);
+void sphere_eval(const rn_object *o, double u, double v, rn_surf *S);
+void cylinder_eval(const rn_object *o, double u, double v, rn_surf *S);
+void plane_eval(const rn_object *o, double u, double v, rn_surf *S);
+void poly_eval(const rn_poly *p, double s, double t, rn_surf *S);
+/* Set up a polygon's plane frame and homography; 0 if degenerate. */
+int poly_prepare(rn_poly *p);
+/* Homography helpers: out = H·(x, y, 1) dehomogenized. */
+void homography_apply(const double H[9], double x, double y, double out[2]);
+/* H mapping the unit square's corners (0,0),(1,0),(1,1),(0,1) to q[0..3];
+ * returns 0 if degenerate (Heckbert 1989, §2.2.3). */
+int homography_square_to_quad(double q[4][2], double H[9]);
+int mat3_inverse(const double m[9], double out[9]);
+
+/* ---- Jacobian (jacobian.c) ---------------------------------------------- */
+
+/* Complete a hit from the surface point at (u, v): position, normal facing
+ * the eye, exact d(s,t)/d(x,y) by inverting d(x,y)/d(u,v) (projection
+ * derivative times the surface partials), dP/dx, dN/dx (Weingarten).
+ * Returns 0 if the projection is singular (silhouette, pole). */
+int jacobian_complete(const rn_camera *c, const rn_object *o, const rn_surf *S, render_hit *h);
+/* d(x, y)/d(u, v) as a 2 × 2 row-major matrix; returns the depth. */
+double jacobian_screen_uv(const rn_camera *c, const rn_surf *S, double xy[2], double M[4]);
+
+/* ---- Textures (proc.c, noise.c) ----------------------------------------- */
+
+typedef enum rn_tex_kind {
+    RN_TEX_IMAGE = 0,
+    RN_TEX_GRID,
+    RN_TEX_CHECKER,
+    RN_TEX_TILES,
+    RN_TEX_BRICKS,
+    RN_TEX_NOISE,
+    RN_TEX_TURBULENCE,
+    RN_TEX_MARBLE,
+    RN_TEX_SOLID,
+    RN_TEX_FOURIER,
+    RN_TEX_ZONEPLATE,
+    RN_TEX_KIND_COUNT
+} rn_tex_kind;
+
+extern const char *const rn_tex_kind_names[RN_TEX_KIND_COUNT];
+
+#define RN_FOURIER_MAX 64
+
+typedef struct rn_noise {
+    unsigned char perm[512];
+    int period; /* lattice period (noise repeats every `period` cells); 0: none */
+} rn_noise;
+
+void noise_init(rn_noise *n, uint32_t seed, int period);
+/* Improved gradient noise (Perlin 2002) in [−1, 1]. */
+double noise3(const rn_noise *n, double x, double y, double z);
+/* Σ_k |noise(2^k p)| / 2^k, k < octaves (Perlin 1985 turbulence). */
+double turbulence3(const rn_noise *n, double x, double y, double z, int octaves);
+
+typedef struct rn_texture {
+    rn_tex_kind kind;
+    float a[4], b[4];   /* the two colours a procedural pattern blends */
+    double freq;        /* repeats (cells, lines, noise periods) per unit s, t */
+    double width;       /* line / grout / mortar width as a fraction of a cell */
+    int octaves;
+    double amount;      /* marble turbulence strength, zone plate k */
+    uint32_t seed;
+    rn_noise noise;
+    int nfourier;       /* Fourier synthesis: integer frequencies and amplitudes */
+    int fk[RN_FOURIER_MAX][2];
+    double famp[RN_FOURIER_MAX], fphase[RN_FOURIER_MAX];
+    int bake_size, bake_samples;
+    sample_wrap wrap_s, wrap_t;
+    sample_texture *tex; /* baked or loaded; owned */
+    char path[512];      /* image textures */
+} rn_texture;
+
+/* Defaults for a kind (colours black/white, freq 8, ...). */
+void proc_defaults(rn_texture *t, rn_tex_kind kind);
+/* Exact value at (s, t) (solid textures use P when given). */
+void proc_eval(const rn_texture *t, double s, double t_, const double P[3], float out[4]);
+/* Bake a procedural texture into t->tex (bake_samples² box per texel). */
+int proc_bake(rn_texture *t, char *err, size_t errlen);
+
+/* ---- Environment maps (envmap.c) ---------------------------------------- */
+
+typedef enum rn_env_kind { RN_ENV_NONE = 0, RN_ENV_LATLONG = 1, RN_ENV_CUBE = 2 } rn_env_kind;
+
+typedef struct rn_env {
+    rn_env_kind kind;
+    sample_texture *map;      /* lat-long; owned */
+    sample_texture *face[6];  /* cube: +X, −X, +Y, −Y, +Z, −Z; owned */
+    double radius;            /* > 0: the paper's position correction, the
+                                 environment painted on a sphere this big
+                                 around `centre`; 0: infinitely far */
+    double centre[3];
+    float strength;
+} rn_env;
+
+/* Unit direction → lat-long (s, t): azimuth across, polar angle (from +z)
+ * down; with the 2 × 3 derivative d(s,t)/dR when dst_dR is not NULL. */
+void env_latlong(const double R[3], double st[2], double dst_dR[2][3]);
+/* Cube-map face (0..5 = +X, −X, +Y, −Y, +Z, −Z) and (s, t) on it (OpenGL
+ * 4.6 table 8.19), with the derivative when asked. */
+int env_cube(const double R[3], double st[2], double dst_dR[2][3]);
+/* Mirror reflection of the unit view vector V (surface → eye) about N. */
+void env_reflect(const double N[3], const double V[3], double R[3]);
+/* The procedural environment of the built-in scenes, exact. */
+void env_sky(const double R[3], float out[4]);
+/* Bake env_sky into a lat-long map (w × w/2) or six cube faces (w × w). */
+int env_build_sky(rn_env *e, rn_env_kind kind, int w, char *err, size_t errlen);
+/* Filtered lookup in direction of the reflected ray at a hit: the direction,
+ * and its screen derivatives from dN/dx, dP/dx. */
+void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
+                const double V[3], const double dVdx[3], const double dVdy[3], float out[4]);
+void env_release(rn_env *e);
+
+/* ---- Scene (scene.c) ---------------------------------------------------- */
+
+typedef struct rn_material {
+    int texture;      /* colour texture or −1 */
+    int bump;         /* height texture (its red channel) or −1 */
+    int normal_map;   /* tangent-space normal texture or −1 */
+    double bump_scale;
+    float diffuse[3]; /* s of i = s(L·N): scales the texture */
+    float ambient;
+    float gloss;      /* g: highlight weight, not scaled by the texture */
+    double exponent;  /* n */
+    float reflect;    /* mirror reflection weight of the environment */
+} rn_material;
+
+typedef struct rn_light {
+    double dir[3]; /* unit, towards the light */
+    float color[3];
+} rn_light;
+
+#define RN_MAX_LIGHTS 8
+
+struct render_scene {
+    rn_camera cam;
+    rn_object *obj;
+    int nobj;
+    rn_material *mat;
+    int nmat;
+    rn_texture *tex;
+    int ntex;
+    rn_light light[RN_MAX_LIGHTS];
+    int nlight;
+    rn_env env;
+    float background[4];
+    sample_sampler sampler;
+};
+
+/* Allocation helpers for builders (scene.c); 0 on failure. */
+int scene_add_object(render_scene *sc, const rn_object *o);
+int scene_add_material(render_scene *sc, const rn_material *m);
+int scene_add_texture(render_scene *sc, const rn_texture *t);
+render_scene *scene_new(void);
+void material_defaults(rn_material *m);
+void object_defaults(rn_object *o, rn_kind kind);
+/* The Newell teapot as an object (patches prepared), scaled and moved. */
+int scene_teapot_object(rn_object *o, double scale, const double offset[3]);
+/* Finish: bake textures, prepare patches/polygons. */
+int scene_finish(render_scene *sc, char *err, size_t errlen);
+
+/* Run fn(ctx, row) for rows 0..rows−1 on `threads` threads (rows handed
+ * out in order; each row's work must not depend on which thread runs it).
+ * Reports progress when `progress` is not NULL. Returns 0 if threads could not
+ * be started (then the rows ran on the calling thread). */
+typedef void (*rn_progress_fn)(const char *what, size_t done, size_t total);
+int rn_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void *ctx,
+                     rn_progress_fn progress);
+
+/* Fill a hit from (object, prim, u, v) (hit.c). Returns h->converged. */
+int hit_finish(const render_scene *sc, int object, int prim, double u, double v, int converged,
+               render_hit *h);
+
+/* Shading of one visible point (shade.c). */
+void shade_hit(const render_scene *sc, const render_options *o, const render_hit *h,
+               const sample_quad *quad, float out[4], sample_stats *stats);
+
+void rn_seterr(char *err, size_t errlen, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+#endif
