@@ -19,8 +19,9 @@ void fp_svd2(double a, double b, double c, double d, fp_svd *o)
     double sy = Q - R;
     o->U[0][0] = cos(ph); o->U[0][1] = -sin(ph);
     o->U[1][0] = sin(ph); o->U[1][1] = cos(ph);
-    o->V[0][0] = cos(th); o->V[0][1] = -sin(th);
-    o->V[1][0] = sin(th); o->V[1][1] = cos(th);
+    /* Vᵀ = R(θ), so V = R(−θ). */
+    o->V[0][0] = cos(th); o->V[0][1] = sin(th);
+    o->V[1][0] = -sin(th); o->V[1][1] = cos(th);
     o->s[0] = Q + R;
     o->s[1] = fabs(sy);
     if (sy < 0.0) { /* a reflection: carry the sign in U's second column */
