@@ -21,7 +21,7 @@ static const double corner_xy[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
 /* ∫ pyr · T_bil(P) |det DP| / ∫ pyr |det DP| over a G × G midpoint grid;
  * P is the bilinear map of the four corners (affine for a parallelogram). */
-static double reference(const sample_ctx *c, const double P[4][2])
+static double reference(const sample_ctx *c, double P[4][2])
 {
     enum { G = 120 };
     double num = 0.0, den = 0.0;
