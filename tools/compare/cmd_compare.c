@@ -1,14 +1,309 @@
-/* texsample compare: not implemented yet (see the open issues). */
+/*
+ * texsample compare (issue 7): every filter configuration against the
+ * ground truth of DESIGN §8, in pictures and numbers (doc/comparison.md).
+ * For each scene: one ray cast per pixel (view.c), the ground truth
+ * (truth.c), each configuration (run.c, oiio.c), metrics (metrics.c), the
+ * pictures (sheet.c); then the tables and the page (report.c).
+ */
+#define _POSIX_C_SOURCE 200809L
 #include "cli.h"
+#include "cmp_internal.h"
 #include "commands.h"
 
+#include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+enum { MAX_SCENES = 32 };
+
+typedef struct opts {
+    const char *scenes[MAX_SCENES];
+    int nscenes;
+    int size, truth, threads, raw;
+    const char *out;
+    int cfg[CMP_MAX_CONFIGS], ncfg;
+} opts;
+
+static void usage(void)
+{
+    int k;
+    printf("usage: texsample compare [--scene NAME|FILE]... [options]\n\n"
+           "Renders each scene with every filter configuration and scores each against\n"
+           "the ground truth (the texture integrated against the 2x2-pixel pyramid through\n"
+           "the exact screen-to-texture mapping, DESIGN section 8). Writes PNG pictures,\n"
+           "results.csv, results.json and index.html, and prints where they are.\n\n"
+           "Options:\n"
+           "  --scene NAME|FILE   scene to compare (repeatable); built-in: ");
+    for (k = 0; cmp_scene_names[k]; ++k) printf("%s%s", k ? ", " : "", cmp_scene_names[k]);
+    printf(",\n                      the renderer's others, 'all' for the comparison set,\n"
+           "                      or a scene file (JSON). Default: ");
+    for (k = 0; cmp_default_scenes[k]; ++k) printf("%s%s", k ? " and " : "", cmp_default_scenes[k]);
+    printf(".\n  --size N            image size N x N (default 256)\n"
+           "  --truth-samples N   N x N samples per 2x2-pixel footprint, even (default 32)\n"
+           "  --threads N         worker threads (default: all processors)\n"
+           "  --out DIR           output folder (default out/compare)\n"
+           "  --configs LIST      comma-separated configurations (default all):\n");
+    for (k = 0; k < cmp_config_count; ++k)
+        printf("                        %-12s %s\n", cmp_configs[k].name, cmp_configs[k].label);
+    printf("  --no-oiio           leave out OpenImageIO's TextureSystem\n"
+           "  --raw               also write float32 RGBA images (truth.f32, CONFIG.f32) and\n"
+           "                      the metric mask (mask.u8) into each scene's folder\n\n"
+           "Exit codes: 0 success, 1 runtime error, 2 usage error.\n");
+}
+
+static int parse_args(int argc, char **argv, opts *o)
+{
+    char bad[80];
+    int i, k, no_oiio = 0;
+    const char *v;
+    memset(o, 0, sizeof *o);
+    o->size = 256;
+    o->truth = 32;
+    o->out = "out/compare";
+    {
+        long n = sysconf(_SC_NPROCESSORS_ONLN);
+        o->threads = n < 1 ? 1 : n > 256 ? 256 : (int)n;
+    }
+    o->ncfg = cmp_configs_parse("all", o->cfg, CMP_MAX_CONFIGS, bad, sizeof bad);
+    for (i = 1; i < argc; ++i) {
+        if (cli_opt(argc, argv, &i, "--scene", &v)) {
+            if (!v) return cli_usage_error("compare", "--scene needs a value");
+            if (strcmp(v, "all") == 0) {
+                for (k = 0; cmp_scene_names[k] && o->nscenes < MAX_SCENES; ++k)
+                    o->scenes[o->nscenes++] = cmp_scene_names[k];
+            } else if (o->nscenes < MAX_SCENES) {
+                o->scenes[o->nscenes++] = v;
+            } else {
+                return cli_usage_error("compare", "at most %d scenes", MAX_SCENES);
+            }
+        } else if (cli_opt(argc, argv, &i, "--size", &v)) {
+            if (!v || !cli_parse_int(v, &o->size) || o->size < 8 || o->size > 4096)
+                return cli_usage_error("compare", "--size needs an integer 8 to 4096");
+        } else if (cli_opt(argc, argv, &i, "--truth-samples", &v)) {
+            if (!v || !cli_parse_int(v, &o->truth) || o->truth < 2 || o->truth > 1024 || o->truth % 2)
+                return cli_usage_error("compare", "--truth-samples needs an even integer 2 to 1024");
+        } else if (cli_opt(argc, argv, &i, "--threads", &v)) {
+            if (!v || !cli_parse_int(v, &o->threads) || o->threads < 1 || o->threads > 256)
+                return cli_usage_error("compare", "--threads needs an integer 1 to 256");
+        } else if (cli_opt(argc, argv, &i, "--out", &v)) {
+            if (!v || !*v) return cli_usage_error("compare", "--out needs a folder");
+            o->out = v;
+        } else if (cli_opt(argc, argv, &i, "--configs", &v)) {
+            if (!v) return cli_usage_error("compare", "--configs needs a list");
+            o->ncfg = cmp_configs_parse(v, o->cfg, CMP_MAX_CONFIGS, bad, sizeof bad);
+            if (o->ncfg < 0) return cli_usage_error("compare", "unknown configuration '%s'", bad);
+            if (o->ncfg == 0) return cli_usage_error("compare", "--configs names no configuration");
+        } else if (cli_opt(argc, argv, &i, "--no-oiio", NULL)) {
+            no_oiio = 1;
+        } else if (cli_opt(argc, argv, &i, "--raw", NULL)) {
+            o->raw = 1;
+        } else {
+            return cli_usage_error("compare", "unknown option '%s'", argv[i]);
+        }
+    }
+    if (no_oiio) {
+        int n = 0;
+        for (k = 0; k < o->ncfg; ++k)
+            if (!cmp_configs[o->cfg[k]].oiio) o->cfg[n++] = o->cfg[k];
+        o->ncfg = n;
+        if (n == 0) return cli_usage_error("compare", "no configuration left without OpenImageIO");
+    }
+    if (o->nscenes == 0)
+        for (k = 0; cmp_default_scenes[k]; ++k) o->scenes[o->nscenes++] = cmp_default_scenes[k];
+    return -1;
+}
+
+/* mkdir -p */
+static int make_dirs(const char *path)
+{
+    char p[1024];
+    size_t k, n = strlen(path);
+    if (n == 0 || n >= sizeof p) return 1;
+    memcpy(p, path, n + 1);
+    for (k = 1; k <= n; ++k)
+        if (p[k] == '/' || p[k] == '\0') {
+            char c = p[k];
+            p[k] = '\0';
+            if (mkdir(p, 0777) != 0 && errno != EEXIST) return 1;
+            p[k] = c;
+        }
+    return 0;
+}
+
+static int write_raw(const char *dir, const char *label, const char *name, const void *data,
+                     size_t bytes)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s/%s", dir, label, name);
+    if (cli_write_file(path, data, bytes)) return 0;
+    fprintf(stderr, "texsample compare: cannot write %s\n", path);
+    return 1;
+}
+
+/* Crop: a quarter of the image side, magnified to about 256 pixels; placed
+ * where the summed squared error of all configurations is largest. */
+static void choose_crop(cmp_scene_result *s, float *const *images, const cmp_truth *t)
+{
+    size_t n = (size_t)s->w * (size_t)s->h, px;
+    double *score = calloc(n, sizeof *score);
+    float *err = malloc(sizeof *err * n);
+    int r, side = s->w < s->h ? s->w : s->h;
+    s->crop_size = side / 4 < 8 ? (side < 8 ? side : 8) : side / 4;
+    s->crop_zoom = 256 / s->crop_size < 1 ? 1 : 256 / s->crop_size;
+    s->crop_x = (s->w - s->crop_size) / 2;
+    s->crop_y = (s->h - s->crop_size) / 2;
+    if (score && err) {
+        for (r = 0; r < s->nrows; ++r) {
+            if (!images[r]) continue;
+            cmp_error_map(images[r], t->rgba, n, err);
+            for (px = 0; px < n; ++px) score[px] += (double)err[px] * err[px];
+        }
+        cmp_worst_window(score, t->mask, s->w, s->h, s->crop_size, &s->crop_x, &s->crop_y);
+    }
+    free(score);
+    free(err);
+}
+
+static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
+{
+    render_scene *sc = NULL;
+    cmp_view v;
+    cmp_truth t;
+    float *images[CMP_MAX_CONFIGS] = {0};
+    char err[512], dir[1024];
+    int k, rc = EXIT_RUNTIME;
+    double t0 = cmp_now();
+    memset(&v, 0, sizeof v);
+    memset(&t, 0, sizeof t);
+    memset(s, 0, sizeof *s);
+    snprintf(s->source, sizeof s->source, "%s", name);
+    if (cmp_scene_open(name, o->size, &sc, s->label, sizeof s->label, err, sizeof err))
+        return cli_runtime_error("compare", "scene '%s': %s", name, err);
+    snprintf(dir, sizeof dir, "%s/%s", o->out, s->label);
+    if (make_dirs(dir)) {
+        cli_runtime_error("compare", "cannot create folder %s", dir);
+        goto out;
+    }
+    fprintf(stderr, "compare %s: casting rays\n", s->label);
+    if (cmp_view_build(sc, o->threads, &v, err, sizeof err)) {
+        cli_runtime_error("compare", "%s: %s", s->label, err);
+        goto out;
+    }
+    s->w = v.w;
+    s->h = v.h;
+    s->pixels = (size_t)v.w * (size_t)v.h;
+    fprintf(stderr, "compare %s: ground truth, %d x %d samples per footprint\n", s->label,
+            o->truth, o->truth);
+    if (cmp_truth_build(&v, o->truth, o->threads, &t, err, sizeof err)) {
+        cli_runtime_error("compare", "%s: %s", s->label, err);
+        goto out;
+    }
+    s->truth_samples = t.samples;
+    s->truth_seconds = t.seconds;
+    for (k = 0; k < o->ncfg; ++k) {
+        const cmp_config *c = &cmp_configs[o->cfg[k]];
+        cmp_row *w = &s->rows[s->nrows++];
+        cmp_result r;
+        w->cfg = c;
+        fprintf(stderr, "compare %s: %s\n", s->label, c->label);
+        if (c->oiio ? cmp_run_oiio(&v, c, dir, o->threads, &r, w->note, sizeof w->note)
+                    : cmp_run_sample(&v, c, o->threads, &r, w->note, sizeof w->note)) {
+            fprintf(stderr, "texsample compare: %s: %s (left out)\n", s->label, w->note);
+            continue;
+        }
+        w->ok = 1;
+        cmp_metrics_compute(r.rgba, t.rgba, t.mask, s->pixels, &w->m);
+        w->seconds = r.seconds;
+        w->ns_per_sample = r.ns_per_sample;
+        w->texels = r.texels;
+        images[s->nrows - 1] = r.rgba;
+        s->measured = w->m.count;
+    }
+    if (s->measured == 0) {
+        size_t px;
+        for (px = 0; px < s->pixels; ++px) s->measured += t.mask[px];
+    }
+    choose_crop(s, images, &t);
+    if (cmp_scene_pictures(o->out, s, &t, images)) goto out;
+    if (o->raw) {
+        size_t bytes = s->pixels * 4 * sizeof(float);
+        char file[96];
+        if (write_raw(o->out, s->label, "truth.f32", t.rgba, bytes) ||
+            write_raw(o->out, s->label, "mask.u8", t.mask, s->pixels))
+            goto out;
+        for (k = 0; k < s->nrows; ++k) {
+            if (!images[k]) continue;
+            snprintf(file, sizeof file, "%s.f32", s->rows[k].cfg->name);
+            if (write_raw(o->out, s->label, file, images[k], bytes)) goto out;
+        }
+    }
+    fprintf(stderr, "compare %s: done in %.1f s\n", s->label, cmp_now() - t0);
+    rc = EXIT_OK;
+out:
+    for (k = 0; k < CMP_MAX_CONFIGS; ++k) free(images[k]);
+    cmp_truth_free(&t);
+    cmp_view_free(&v);
+    render_scene_destroy(sc);
+    return rc;
+}
+
+static void print_table(const cmp_scene_result *s)
+{
+    int r;
+    printf("%s (%d x %d, truth %d x %d, %zu pixels measured)\n", s->label, s->w, s->h,
+           s->truth_samples, s->truth_samples, s->measured);
+    printf("  %-30s %9s %9s %10s %9s\n", "filter", "RMSE", "PSNR dB", "ns/sample", "texels");
+    for (r = 0; r < s->nrows; ++r) {
+        const cmp_row *w = &s->rows[r];
+        if (!w->ok) {
+            printf("  %-30s not run: %s\n", w->cfg->label, w->note);
+            continue;
+        }
+        printf("  %-30s %9.5f %9.2f %10.1f %9.1f\n", w->cfg->label, w->m.rmse, w->m.psnr,
+               w->ns_per_sample, w->texels);
+    }
+}
 
 int cmd_compare(int argc, char **argv)
 {
+    opts o;
+    cmp_scene_result *res;
+    char path[1024], command[2048];
+    size_t len;
+    int k, rc = EXIT_OK;
     if (argc > 1 && cli_is_help(argv[1])) {
-        printf("usage: texsample compare ...\n\nNot implemented yet.\n");
+        usage();
         return EXIT_OK;
     }
-    return cli_runtime_error("compare", "not implemented yet");
+    if ((k = parse_args(argc, argv, &o)) >= 0) return k;
+    if (make_dirs(o.out)) return cli_runtime_error("compare", "cannot create folder %s", o.out);
+    len = (size_t)snprintf(command, sizeof command, "texsample compare");
+    for (k = 1; k < argc && len < sizeof command; ++k)
+        len += (size_t)snprintf(command + len, sizeof command - len, " %s", argv[k]);
+    res = calloc((size_t)o.nscenes, sizeof *res);
+    if (!res) return cli_runtime_error("compare", "out of memory");
+    for (k = 0; k < o.nscenes && rc == EXIT_OK; ++k) rc = compare_scene(&o, o.scenes[k], &res[k]);
+    if (rc == EXIT_OK) {
+        snprintf(path, sizeof path, "%s/results.csv", o.out);
+        if (cmp_write_csv(path, res, o.nscenes)) rc = cli_runtime_error("compare", "cannot write %s", path);
+        snprintf(path, sizeof path, "%s/results.json", o.out);
+        if (cmp_write_json(path, res, o.nscenes, command))
+            rc = cli_runtime_error("compare", "cannot write %s", path);
+        snprintf(path, sizeof path, "%s/index.html", o.out);
+        if (cmp_write_html(path, res, o.nscenes, command))
+            rc = cli_runtime_error("compare", "cannot write %s", path);
+    }
+    if (rc == EXIT_OK) {
+        for (k = 0; k < o.nscenes; ++k) print_table(&res[k]);
+        printf("\nHTML page:      %s/index.html\n", o.out);
+        printf("Table:          %s/results.csv, %s/results.json\n", o.out, o.out);
+        for (k = 0; k < o.nscenes; ++k)
+            printf("Pictures:       %s/%s/ (contact sheet %s/%s/contact.png)\n", o.out,
+                   res[k].label, o.out, res[k].label);
+    }
+    free(res);
+    return rc;
 }

@@ -1,0 +1,224 @@
+/*
+ * compare's private header: where its pieces meet (doc/comparison.md).
+ *
+ *   configs.c     the filter configurations and --configs parsing
+ *   scenes.c      the built-in comparison set (scene names → scenes)
+ *   view.c        one ray cast per pixel: the queries every filter answers
+ *   run.c         one configuration over a view (libsample), timed
+ *   oiio.c        the same through OpenImageIO's TextureSystem
+ *   truth.c       the ground truth of DESIGN §8 and the metric mask
+ *   metrics.c     RMSE, PSNR, per-pixel error, the worst crop
+ *   picture.c     8-bit pictures: tone, heat map + legend, crops, contact sheet
+ *   font.c        a 5 × 7 bitmap font for labels in the pictures
+ *   png.c         PNG writer (zlib)
+ *   sheet.c       a scene's pictures and its contact sheet
+ *   report.c      results.csv, results.json, index.html
+ *   parallel.c    rows over pthreads
+ *   cmd_compare.c the subcommand
+ */
+#ifndef TEXSAMPLE_CMP_INTERNAL_H
+#define TEXSAMPLE_CMP_INTERNAL_H
+
+#include "render/render.h"
+#include "sample/sample.h"
+
+#include <stddef.h>
+
+/* ---- Configurations (configs.c) -------------------------------------- */
+
+typedef struct cmp_config {
+    const char *name;  /* command-line and file name: "trilinear" */
+    const char *label; /* what the page calls it */
+    sample_filter min, mag;
+    sample_footprint footprint;
+    float max_aniso;
+    int corners; /* 1: pass the exact footprint corners (Blinn–Newell corner mode) */
+    int oiio;    /* 1: OpenImageIO's TextureSystem instead of libsample */
+} cmp_config;
+
+extern const cmp_config cmp_configs[];
+extern const int cmp_config_count;
+
+/* Parse "a,b,c" (names of cmp_configs, or "all") into indices, in the
+ * order of cmp_configs. Returns the count, or −1 with the bad name in bad. */
+int cmp_configs_parse(const char *list, int *idx, int max, char *bad, size_t badlen);
+/* The scene's sampler with the configuration's filters (wrap modes and
+ * border colour stay the scene's). */
+void cmp_config_sampler(const cmp_config *c, const sample_sampler *scene, sample_sampler *out);
+
+/* ---- Scenes (scenes.c) ------------------------------------------------- */
+
+/* The comparison set, NULL-terminated, and the default subset. */
+extern const char *const cmp_scene_names[];
+extern const char *const cmp_default_scenes[];
+/* A built-in scene of render (render_builtin_names), one of compare's own,
+ * or a scene file. label gets a file-name-safe name. Returns 0 on success. */
+int cmp_scene_open(const char *name, int size, render_scene **out, char *label, size_t labellen,
+                   char *err, size_t errlen);
+
+/* ---- View: what every configuration is asked (view.c) ---------------- */
+
+typedef struct cmp_view {
+    const render_scene *sc;
+    render_cache *cache;
+    int w, h;
+    int *tex;              /* per pixel: texture index; −1 surface without texture; −2 background */
+    int *object;           /* per pixel: object hit at the centre, −1 background */
+    sample_query *q;       /* per pixel: (s, t) and exact Jacobian at the centre */
+    sample_quad *quad;     /* per pixel: exact corners, where quad_ok */
+    unsigned char *quad_ok;
+    float background[4];   /* linear RGBA for pixels (and truth samples) that miss */
+    sample_sampler sampler; /* the scene's sampler */
+} cmp_view;
+
+/* Ray-cast every pixel centre and its corners. Returns 0 on success. */
+int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, size_t errlen);
+void cmp_view_free(cmp_view *v);
+
+/* ---- Running one configuration (run.c, oiio.c) ----------------------- */
+
+typedef struct cmp_result {
+    float *rgba;          /* w × h × 4 linear */
+    double seconds;       /* wall time of the whole image */
+    double ns_per_sample; /* time inside the filter calls, per query, all threads summed */
+    double texels;        /* texels read per query (libsample's count; OIIO: not known, −1) */
+    size_t queries;
+} cmp_result;
+
+/* An engine: filter n queries of one texture (quad: exact corners or NULL)
+ * into n × 4 floats; stats may be NULL. Returns 0 on success. Called from
+ * many threads at once. */
+typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
+                            size_t n, float *rgba, sample_stats *stats);
+/* Run an engine over every textured pixel of the view (run.c). stats: ask
+ * for texel counts. Returns 0 on success. */
+int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stats, int threads,
+            cmp_result *r);
+int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, cmp_result *r, char *err,
+                   size_t errlen);
+/* 1 if this build can run OpenImageIO's TextureSystem. */
+int cmp_oiio_available(void);
+int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, int threads,
+                 cmp_result *r, char *err, size_t errlen);
+void cmp_result_free(cmp_result *r);
+
+/* Background and untextured pixels, shared by every engine. */
+void cmp_fill_untextured(const cmp_view *v, float *rgba);
+
+/* ---- Ground truth (truth.c) ------------------------------------------ */
+
+typedef struct cmp_truth {
+    float *rgba;         /* w × h × 4 linear */
+    unsigned char *mask; /* 1: pixel counted by the metrics (whole footprint on the centre's
+                            textured object) */
+    int samples;         /* n: n × n samples over each 2 × 2-pixel footprint */
+    double seconds;
+} cmp_truth;
+
+/* n must be even and ≥ 2. Returns 0 on success. */
+int cmp_truth_build(const cmp_view *v, int n, int threads, cmp_truth *t, char *err, size_t errlen);
+void cmp_truth_free(cmp_truth *t);
+
+/* ---- Metrics (metrics.c) --------------------------------------------- */
+
+typedef struct cmp_metrics {
+    double rmse;     /* over R, G, B of the masked pixels, linear */
+    double psnr;     /* dB, peak 1; +inf when rmse is 0 */
+    double max_err;  /* largest per-pixel error (RMS over R, G, B) */
+    size_t count;    /* pixels measured */
+} cmp_metrics;
+
+/* img, ref: n pixels × 4 floats; mask may be NULL (all pixels). */
+void cmp_metrics_compute(const float *img, const float *ref, const unsigned char *mask, size_t n,
+                         cmp_metrics *m);
+/* Per-pixel error e = sqrt(mean over R, G, B of the squared difference). */
+void cmp_error_map(const float *img, const float *ref, size_t n, float *err);
+/* The size × size window with the largest sum of `score` over masked pixels
+ * (score: w × h). Ties go to the first in row order. */
+void cmp_worst_window(const double *score, const unsigned char *mask, int w, int h, int size,
+                      int *x0, int *y0);
+
+/* ---- Pictures (picture.c, font.c) ------------------------------------ */
+
+typedef struct cmp_pic {
+    int w, h;
+    unsigned char *rgb; /* w × h × 3 sRGB-encoded */
+} cmp_pic;
+
+int cmp_pic_alloc(cmp_pic *p, int w, int h);
+void cmp_pic_free(cmp_pic *p);
+/* Linear RGBA → sRGB picture, clamped to [0, 1]. */
+int cmp_pic_from_linear(cmp_pic *p, const float *rgba, int w, int h);
+/* Heat map of per-pixel error over [0, scale], with a colour scale legend
+ * below the image; unmasked pixels are drawn grey. */
+int cmp_pic_heatmap(cmp_pic *p, const float *err, const unsigned char *mask, int w, int h,
+                    float scale);
+/* The colour of a value in [0, 1] on the heat map's scale (sRGB bytes). */
+void cmp_heat_colour(float v, unsigned char rgb[3]);
+/* Window (x0, y0, size) of src magnified by an integer factor. */
+int cmp_pic_crop(cmp_pic *p, const cmp_pic *src, int x0, int y0, int size, int zoom);
+/* dst ← src at (x, y), src shrunk by the integer `down` (box). */
+void cmp_pic_blit(cmp_pic *dst, const cmp_pic *src, int x, int y, int down);
+void cmp_pic_fill(cmp_pic *p, int x, int y, int w, int h, const unsigned char rgb[3]);
+void cmp_pic_rect(cmp_pic *p, int x, int y, int w, int h, const unsigned char rgb[3]);
+/* Text in the 5 × 7 font, `scale` pixels per font pixel; returns the width. */
+int cmp_pic_text(cmp_pic *p, int x, int y, const char *text, int scale, const unsigned char rgb[3]);
+int cmp_text_width(const char *text, int scale);
+/* One glyph: 7 rows of 5 bits (bit 4 = leftmost), NULL for unknown characters. */
+const unsigned char *cmp_font_glyph(char c);
+
+/* PNG (8-bit RGB) to path, atomically. Returns 0 on success. */
+int cmp_png_write(const char *path, const cmp_pic *p);
+
+/* ---- Results and the report (report.c) ------------------------------- */
+
+/* The heat maps' full scale: per-pixel error (linear, RMS over R, G, B) at
+ * which the colour saturates; one value for every scene so that pictures
+ * compare across scenes. */
+#define CMP_HEAT_SCALE 0.25f
+#define CMP_MAX_CONFIGS 16
+
+typedef struct cmp_row {
+    const cmp_config *cfg;
+    int ok;             /* 0: not run (note says why) */
+    char note[200];
+    cmp_metrics m;
+    double seconds, ns_per_sample, texels; /* texels < 0: not known */
+} cmp_row;
+
+typedef struct cmp_scene_result {
+    char label[64];      /* file-name-safe; also the folder of its pictures */
+    char source[256];    /* what --scene said */
+    int w, h;
+    int truth_samples;
+    double truth_seconds;
+    size_t pixels, measured; /* all pixels, pixels in the metrics */
+    int crop_x, crop_y, crop_size, crop_zoom;
+    cmp_row rows[CMP_MAX_CONFIGS];
+    int nrows;
+} cmp_scene_result;
+
+/* Paths of a scene's pictures relative to the output folder. */
+void cmp_pic_path(char *out, size_t len, const cmp_scene_result *s, const char *what,
+                  const char *suffix);
+
+/* Write the scene's pictures under dir/<label>/ (the folder must exist):
+ * images[r] is row r's image (NULL where the row did not run). */
+int cmp_scene_pictures(const char *dir, const cmp_scene_result *s, const cmp_truth *t,
+                       float *const *images);
+
+/* results.csv, results.json, index.html in dir. command: the command line,
+ * quoted on the page. Return 0 on success. */
+int cmp_write_csv(const char *path, const cmp_scene_result *s, int n);
+int cmp_write_json(const char *path, const cmp_scene_result *s, int n, const char *command);
+int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const char *command);
+
+/* ---- Threads (parallel.c) -------------------------------------------- */
+
+/* fn(ctx, row) for rows 0..rows−1 on `threads` threads; progress under
+ * label (NULL: none). Each row's result must not depend on the thread. */
+void cmp_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void *ctx,
+                       const char *label);
+double cmp_now(void); /* monotonic seconds */
+
+#endif

@@ -1,0 +1,193 @@
+/*
+ * One configuration over a view, for any engine (libsample here, OpenImageIO
+ * in oiio.c). Each row is split into batches of pixels that share a texture
+ * (and, for the corner mode, have valid corners), because sample_batch() is
+ * the primary entry point and validates once per call (sample.h §3); the
+ * time spent inside the engine's calls is summed per row so ns/sample does
+ * not depend on the thread count.
+ */
+#include "cmp_internal.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct run_job {
+    const cmp_view *v;
+    int corners;
+    cmp_batch_fn fn;
+    void *ctx;
+    int stats;
+    float *rgba;
+    double *row_seconds; /* per row: time inside sample_batch */
+    double *row_texels;  /* per row: texels read */
+    size_t *row_queries;
+    unsigned char *row_failed; /* per row, so that no two threads write one flag */
+} run_job;
+
+void cmp_fill_untextured(const cmp_view *v, float *rgba)
+{
+    size_t n = (size_t)v->w * (size_t)v->h, px;
+    int k;
+    for (px = 0; px < n; ++px) {
+        if (v->tex[px] >= 0) continue;
+        for (k = 0; k < 4; ++k)
+            /* A surface without texture shades as white in RENDER_SHADE_TEXTURE. */
+            rgba[px * 4 + (size_t)k] = v->tex[px] == -2 ? v->background[k] : 1.0f;
+    }
+}
+
+/* The distinct texture indices of a row, in first-seen order. */
+static int row_textures(const int *tex, int w, int *list)
+{
+    int i, k, n = 0;
+    for (i = 0; i < w; ++i) {
+        if (tex[i] < 0) continue;
+        for (k = 0; k < n && list[k] != tex[i]; ++k) {}
+        if (k == n) list[n++] = tex[i];
+    }
+    return n;
+}
+
+static void run_row(void *ctx, int j)
+{
+    run_job *jb = ctx;
+    const cmp_view *v = jb->v;
+    size_t base = (size_t)j * (size_t)v->w;
+    const int *tex = v->tex + base;
+    int *list = malloc(sizeof *list * (size_t)v->w), *pix = malloc(sizeof *pix * (size_t)v->w);
+    sample_query *q = malloc(sizeof *q * (size_t)v->w);
+    sample_quad *quad = malloc(sizeof *quad * (size_t)v->w);
+    sample_stats *st = malloc(sizeof *st * (size_t)v->w);
+    float *out = malloc(sizeof *out * 4 * (size_t)v->w);
+    int nt, t, pass, i, k;
+    double secs = 0.0, texels = 0.0;
+    size_t queries = 0;
+    if (!list || !pix || !q || !quad || !st || !out) {
+        jb->row_failed[j] = 1;
+        goto done;
+    }
+    nt = row_textures(tex, v->w, list);
+    for (t = 0; t < nt; ++t)
+        /* pass 0: Jacobian only; pass 1: with exact corners (corner mode only). */
+        for (pass = 0; pass < 2; ++pass) {
+            int n = 0;
+            double t0;
+            for (i = 0; i < v->w; ++i) {
+                int with = jb->corners && v->quad_ok[base + (size_t)i];
+                if (tex[i] != list[t] || with != pass) continue;
+                q[n] = v->q[base + (size_t)i];
+                if (with) quad[n] = v->quad[base + (size_t)i];
+                pix[n++] = i;
+            }
+            if (n == 0) continue;
+            t0 = cmp_now();
+            if (jb->fn(jb->ctx, list[t], q, pass ? quad : NULL, (size_t)n, out,
+                       jb->stats ? st : NULL) != 0) {
+                jb->row_failed[j] = 1;
+                goto done;
+            }
+            secs += cmp_now() - t0;
+            for (i = 0; i < n; ++i) {
+                for (k = 0; k < 4; ++k)
+                    jb->rgba[(base + (size_t)pix[i]) * 4 + (size_t)k] = out[(size_t)i * 4 + (size_t)k];
+                if (jb->stats) texels += st[i].texels;
+            }
+            queries += (size_t)n;
+        }
+done:
+    jb->row_seconds[j] = secs;
+    jb->row_texels[j] = texels;
+    jb->row_queries[j] = queries;
+    free(list);
+    free(pix);
+    free(q);
+    free(quad);
+    free(st);
+    free(out);
+}
+
+int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stats, int threads,
+            cmp_result *r)
+{
+    run_job jb;
+    size_t n = (size_t)v->w * (size_t)v->h;
+    double t0, secs = 0.0, texels = 0.0;
+    int j, failed = 0;
+    memset(r, 0, sizeof *r);
+    memset(&jb, 0, sizeof jb);
+    jb.v = v;
+    jb.corners = corners;
+    jb.fn = fn;
+    jb.ctx = ctx;
+    jb.stats = stats;
+    jb.rgba = r->rgba = malloc(n * 4 * sizeof *r->rgba);
+    jb.row_seconds = calloc((size_t)v->h, sizeof *jb.row_seconds);
+    jb.row_texels = calloc((size_t)v->h, sizeof *jb.row_texels);
+    jb.row_queries = calloc((size_t)v->h, sizeof *jb.row_queries);
+    jb.row_failed = calloc((size_t)v->h, 1);
+    if (!r->rgba || !jb.row_seconds || !jb.row_texels || !jb.row_queries || !jb.row_failed) {
+        failed = 1;
+    } else {
+        cmp_fill_untextured(v, r->rgba);
+        t0 = cmp_now();
+        cmp_parallel_rows(v->h, threads, run_row, &jb, NULL);
+        r->seconds = cmp_now() - t0;
+        for (j = 0; j < v->h; ++j) {
+            secs += jb.row_seconds[j];
+            texels += jb.row_texels[j];
+            r->queries += jb.row_queries[j];
+            failed |= jb.row_failed[j];
+        }
+        r->ns_per_sample = r->queries ? 1e9 * secs / (double)r->queries : 0.0;
+        r->texels = !stats ? -1.0 : r->queries ? texels / (double)r->queries : 0.0;
+    }
+    free(jb.row_seconds);
+    free(jb.row_texels);
+    free(jb.row_queries);
+    free(jb.row_failed);
+    if (failed) cmp_result_free(r);
+    return failed;
+}
+
+typedef struct sample_ctx {
+    const render_scene *sc;
+    sample_sampler smp;
+} sample_ctx;
+
+static int sample_fn(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
+                     size_t n, float *rgba, sample_stats *stats)
+{
+    const sample_ctx *c = ctx;
+    sample_batch_args a;
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.queries = q;
+    a.corners = quad;
+    a.rgba = rgba;
+    a.stats = stats;
+    return sample_batch(render_scene_texture(c->sc, texture), &c->smp, &a) == SAMPLE_OK ? 0 : 1;
+}
+
+int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, cmp_result *r, char *err,
+                   size_t errlen)
+{
+    sample_ctx ctx;
+    ctx.sc = v->sc;
+    cmp_config_sampler(c, &v->sampler, &ctx.smp);
+    if (sample_sampler_validate(&ctx.smp) != SAMPLE_OK) {
+        snprintf(err, errlen, "%s: invalid sampler state", c->name);
+        return 1;
+    }
+    if (cmp_run(v, c->corners, sample_fn, &ctx, 1, threads, r)) {
+        snprintf(err, errlen, "%s: out of memory or sampling failed", c->name);
+        return 1;
+    }
+    return 0;
+}
+
+void cmp_result_free(cmp_result *r)
+{
+    free(r->rgba);
+    r->rgba = NULL;
+}
