@@ -1,0 +1,11 @@
+# The OpenImageIO TextureSystem shim (tools/oiio) checked against libsample.
+if(TARGET texsample_oiio)
+  add_executable(oiio_shim ${CMAKE_CURRENT_SOURCE_DIR}/oiio_shim.c)
+  target_link_libraries(oiio_shim PRIVATE texsample_oiio sample)
+  target_include_directories(oiio_shim PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  target_compile_options(oiio_shim PRIVATE ${SAMPLE_WARNINGS})
+  # C++ runtime for the static library's OpenImageIO calls.
+  set_target_properties(oiio_shim PROPERTIES LINKER_LANGUAGE CXX)
+  add_test(NAME oiio_shim COMMAND oiio_shim)
+  set_tests_properties(oiio_shim PROPERTIES TIMEOUT 120)
+endif()
