@@ -1,0 +1,151 @@
+/*
+ * libsample_io — images and colour for libsample (doc/io-and-colour.md).
+ *
+ * A separate library with a C API: images in and out through OpenImageIO,
+ * colour spaces through OpenColorIO, tiled mip-mapped OpenEXR through the
+ * OpenEXR library. The core library (sample.h) never depends on it.
+ *
+ * 1. READING
+ *
+ *     sample_io_options o;  sample_io_options_init(&o);
+ *     sample_texture *tex;  sample_error err;
+ *     if (sample_io_read_texture("wood.png", &o, NULL, &tex, &err) != SAMPLE_OK)
+ *         fprintf(stderr, "%s\n", err.message);
+ *
+ *   Any file OpenImageIO reads. The first stored row (usually the top) is
+ *   row 0, t = 0 (as OpenImageIO's TextureSystem). Storage keeps the file's
+ *   precision: 8-bit stays 8-bit (SRGB8 when the colour space decodes like
+ *   sRGB, UNORM8 when it is the working space or data), half stays half,
+ *   16-bit integers and float become float. At most 4 channels are kept
+ *   (the first four). Files that hold mip levels (maketx .tx/.exr, our
+ *   `texsample mip`) give their levels as stored, unless use_file_levels is
+ *   0; otherwise `mip` builds the pyramid (NULL: base level only).
+ *
+ * 2. COLOUR
+ *
+ *   Texels are converted at load from the texture's colour space to the
+ *   config's scene_linear role. The colour space is, in this order: the
+ *   options' `colorspace`, the file's metadata (oiio:ColorSpace) when the
+ *   config knows that name, else the rule "8- and 16-bit integer data is
+ *   sRGB, half/float is linear". The config is options.ocio_config, else
+ *   $OCIO, else the one shipped with libsample (share/libsample/ocio).
+ *   Only RGB is converted; alpha and channels past the third never are.
+ *
+ * 3. WRITING
+ *
+ *   Every writer writes a temporary file beside the target and renames it
+ *   into place, so a failed write leaves no file behind.
+ *
+ * 4. THREADS
+ *
+ *   No global state; every function may be called from several threads.
+ */
+#ifndef SAMPLE_SAMPLE_IO_H
+#define SAMPLE_SAMPLE_IO_H
+
+#include "sample/sample.h"
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Reading ------------------------------------------------------------ */
+
+typedef struct sample_io_options {
+    /* Source colour space (an OCIO name, role or alias). NULL: from the file
+     * metadata, else the rule in section 2. */
+    const char *colorspace;
+    /* OCIO config file. NULL: $OCIO if set, else the shipped config. */
+    const char *ocio_config;
+    /* 1 (default): take mip levels stored in the file; 0: read the base
+     * level only and build the pyramid from `mip`. */
+    int use_file_levels;
+    /* Largest decoded size (bytes, all levels, as float) the reader will
+     * allocate; a file claiming more gives SAMPLE_E_TOO_LARGE before any
+     * pixel is read. 0 means the default, SAMPLE_IO_DEFAULT_MAX_BYTES. */
+    size_t max_bytes;
+} sample_io_options;
+
+#define SAMPLE_IO_DEFAULT_MAX_BYTES ((size_t)1 << 32) /* 4 GiB */
+
+void sample_io_options_init(sample_io_options *o);
+
+/* Read an image file into a new texture. `o` may be NULL (defaults).
+ * `mip` is used when the file has no levels (or use_file_levels is 0);
+ * NULL keeps the base level only. */
+sample_status sample_io_read_texture(const char *path, const sample_io_options *o,
+                                     const sample_mip_params *mip, sample_texture **out,
+                                     sample_error *err);
+
+/* The same from a file held in memory. `format_hint` is a file name or an
+ * extension ("png", ".exr", "x.tif") naming the format; NULL lets
+ * OpenImageIO guess from the bytes. Formats whose OpenImageIO reader cannot
+ * read from memory give SAMPLE_E_UNSUPPORTED. */
+sample_status sample_io_read_memory(const void *data, size_t size, const char *format_hint,
+                                    const sample_io_options *o, const sample_mip_params *mip,
+                                    sample_texture **out, sample_error *err);
+
+/* ---- Writing pictures --------------------------------------------------- */
+
+typedef enum sample_io_type {
+    SAMPLE_IO_TYPE_AUTO = 0,  /* by extension: .exr half, .hdr float, else 8-bit */
+    SAMPLE_IO_TYPE_U8 = 1,
+    SAMPLE_IO_TYPE_U16 = 2,
+    SAMPLE_IO_TYPE_HALF = 3,
+    SAMPLE_IO_TYPE_FLOAT = 4,
+    SAMPLE_IO_TYPE_COUNT
+} sample_io_type;
+
+typedef struct sample_io_write_options {
+    /* Colour space of the file (OCIO name). NULL: linear (scene_linear) for
+     * half/float, "srgb" for 8/16-bit integers. */
+    const char *colorspace;
+    sample_io_type type;     /* default AUTO */
+    const char *ocio_config; /* as in sample_io_options */
+} sample_io_write_options;
+
+void sample_io_write_options_init(sample_io_write_options *o);
+
+/* Write w × h linear RGBA floats (rgba[4·(y·w + x)], row 0 = t = 0 = the
+ * file's first stored row) as a picture with 3 or 4 channels. colorspace
+ * NULL chooses by extension: .exr linear half, .png/.jpg/... sRGB 8-bit.
+ * Integer types are clamped to [0, 1] and rounded to nearest; NaN → 0. */
+sample_status sample_io_write_image(const char *path, const float *rgba, int w, int h,
+                                    int channels_to_write, const char *colorspace,
+                                    sample_error *err);
+sample_status sample_io_write_image_ex(const char *path, const float *rgba, int w, int h,
+                                       int channels_to_write, const sample_io_write_options *o,
+                                       sample_error *err);
+
+/* Write a float OpenEXR with `nchannels` named channels (any names, e.g.
+ * "ds", "dt", "lod"), data[(y·w + x)·nchannels + c]; no colour conversion. */
+sample_status sample_io_write_channels(const char *path, const float *data, int w, int h,
+                                       int nchannels, const char *const *names,
+                                       sample_error *err);
+
+/* ---- Tiled mip-mapped OpenEXR ------------------------------------------- */
+
+typedef struct sample_io_exr_options {
+    int tile_w, tile_h;         /* default 64 × 64 */
+    int use_float;              /* 0 (default): half; 1: float */
+    sample_wrap wrap_s, wrap_t; /* stored as the "wrapmodes" attribute; default CLAMP_TO_EDGE */
+    /* Called after each tile row is written (may be NULL). */
+    void (*progress)(void *user, size_t done, size_t total);
+    void *progress_user;
+} sample_io_exr_options;
+
+void sample_io_exr_options_init(sample_io_exr_options *o);
+
+/* Write every level of `tex` (decoded to linear values) as a tiled OpenEXR:
+ * MIPMAP_LEVELS with ROUND_DOWN sizes when the texture has its full chain,
+ * ONE_LEVEL when it has only its base; a partial chain is refused.
+ * Channels are R, G, B, A (as many as the texture has). `o` may be NULL. */
+sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex,
+                                      const sample_io_exr_options *o, sample_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* SAMPLE_SAMPLE_IO_H */

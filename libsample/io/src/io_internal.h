@@ -1,0 +1,104 @@
+/*
+ * libsample_io internal header: where the C orchestration meets the thin
+ * C++ files that talk to the libraries.
+ *
+ *   io_error.c      io_fail, options defaults
+ *   io_read.c       file → texture: levels, storage format, colour (C)
+ *   io_write.c      pictures out: colour, quantization, temp + rename (C)
+ *   io_tmp.c        temporary names and the final rename
+ *   oiio_read.cpp   OpenImageIO: open a file or memory, read levels
+ *   oiio_write.cpp  OpenImageIO: write one picture / named channels
+ *   ocio.cpp        OpenColorIO: config, name resolution, conversions
+ *   exr_mip.cpp     OpenEXR: tiled mip-mapped writer
+ */
+#ifndef SAMPLE_IO_INTERNAL_H
+#define SAMPLE_IO_INTERNAL_H
+
+#include "sample/sample_io.h"
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Record an error (when err is non-NULL) and return status. */
+sample_status io_fail(sample_error *err, sample_status status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* ---- Reader (oiio_read.cpp) --------------------------------------------- */
+
+/* Pixel types a level is read as. */
+typedef enum io_ptype { IO_U8 = 0, IO_U16 = 1, IO_HALF = 2, IO_FLOAT = 3 } io_ptype;
+
+typedef struct io_reader io_reader;
+
+typedef struct io_reader_info {
+    int width, height;  /* level 0 data window */
+    int channels;       /* as stored (may be > 4) */
+    int nlevels;        /* mip levels in the file (1: none) */
+    int alpha_channel;  /* index of alpha, −1 if none */
+    io_ptype native;    /* the type the level should be read as */
+    char colorspace[64];/* oiio:ColorSpace metadata, "" if none */
+} io_reader_info;
+
+/* Exactly one of path or (data, size) is given. format_hint may be NULL. */
+sample_status io_reader_open(const char *path, const void *data, size_t size,
+                             const char *format_hint, io_reader **out, sample_error *err);
+void io_reader_info_get(const io_reader *r, io_reader_info *info);
+/* Size of file level k (data window). */
+sample_status io_reader_level_size(io_reader *r, int k, int *w, int *h, sample_error *err);
+/* Read channels [0, nchan) of level k as `type`, tightly packed, w × h. */
+sample_status io_reader_read(io_reader *r, int k, io_ptype type, int nchan, void *dst,
+                             sample_error *err);
+void io_reader_close(io_reader *r); /* accepts NULL */
+
+/* ---- Colour (ocio.cpp) --------------------------------------------------- */
+
+typedef struct io_colour io_colour;
+
+/* Load the config: `path`, else $OCIO, else the shipped config. */
+sample_status io_colour_open(const char *path, io_colour **out, sample_error *err);
+void io_colour_close(io_colour *c); /* accepts NULL */
+/* Does the config know this colour space (name, role or alias)? */
+int io_colour_known(const io_colour *c, const char *name);
+/* Is the space data (no conversion) or the scene_linear space itself? */
+int io_colour_is_linear(const io_colour *c, const char *name);
+/* Does src → scene_linear equal the sRGB EOTF on every 8-bit code? Then
+ * 8-bit data can stay SRGB8 and the core decodes it exactly. */
+int io_colour_is_srgb(const io_colour *c, const char *name);
+/* Convert n RGBA-strided pixels (stride floats apart, RGB of channels
+ * [0, min(3, nchan))) in place; to_linear selects src → scene_linear,
+ * else scene_linear → src. 1- and 2-channel pixels convert as grey. */
+sample_status io_colour_apply(const io_colour *c, const char *name, int to_linear, float *px,
+                              size_t n, int nchan, sample_error *err);
+
+/* ---- Writing (oiio_write.cpp, exr_mip.cpp, io_tmp.c) --------------------- */
+
+/* Write w × h × nchan pixels of `type` to tmp_path in the format of
+ * final_path's extension; names may be NULL (R, G, B, A). The spec carries
+ * the colour space name as oiio:ColorSpace when non-NULL. */
+sample_status io_oiio_write(const char *final_path, const char *tmp_path, const void *px,
+                            io_ptype type, int w, int h, int nchan, const char *const *names,
+                            const char *colorspace, sample_error *err);
+
+sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
+                               const sample_io_exr_options *o, sample_error *err);
+
+/* Make a new, empty, uniquely named file beside `path` (same directory);
+ * tmp receives its name. */
+sample_status io_tmp_create(const char *path, char *tmp, size_t tmp_size, sample_error *err);
+/* st == SAMPLE_OK: rename tmp over path; otherwise (or if the rename fails)
+ * remove tmp. Returns the final status. */
+sample_status io_tmp_finish(sample_status st, const char *tmp, const char *path, sample_error *err);
+
+/* Lower-case extension of a path without the dot ("" if none), into ext. */
+void io_extension(const char *path, char *ext, size_t ext_size);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,223 @@
+/* Image file → libsample texture: storage format, colour, levels
+ * (doc/io-and-colour.md, "Reading"). */
+#include "io_internal.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* What the reader decided for one file. */
+typedef struct read_plan {
+    int nchan;               /* channels kept (≤ 4) */
+    io_ptype read_as;        /* type asked of OpenImageIO */
+    sample_format format;    /* texture storage */
+    int convert;             /* 1: OCIO conversion to scene_linear */
+    const char *colorspace;  /* resolved source space */
+} read_plan;
+
+/* Names of sRGB spaces in common configs, tried in order when the rule says
+ * "sRGB" (our shipped config has the first; ACES configs have the others). */
+static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture",
+                                         "Utility - sRGB - Texture"};
+
+static sample_status choose_colorspace(const io_colour *col, const sample_io_options *o,
+                                       const io_reader_info *inf, const char **name, sample_error *err)
+{
+    size_t k;
+    if (o->colorspace) {
+        if (!io_colour_known(col, o->colorspace))
+            return io_fail(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", o->colorspace);
+        *name = o->colorspace;
+        return SAMPLE_OK;
+    }
+    /* Metadata the config does not know (OIIO writes names like
+     * "GammaCorrected1.8") falls through to the rule rather than failing:
+     * files carry all sorts of names. */
+    if (inf->colorspace[0] && io_colour_known(col, inf->colorspace)) {
+        *name = inf->colorspace;
+        return SAMPLE_OK;
+    }
+    if (inf->native == IO_HALF || inf->native == IO_FLOAT) {
+        *name = "scene_linear";
+        return SAMPLE_OK;
+    }
+    for (k = 0; k < sizeof srgb_names / sizeof srgb_names[0]; ++k)
+        if (io_colour_known(col, srgb_names[k])) {
+            *name = srgb_names[k];
+            return SAMPLE_OK;
+        }
+    return io_fail(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit data; "
+                                        "name the file's colour space explicitly");
+}
+
+/* Storage rule (doc/io-and-colour.md): keep the file's precision. */
+static void plan_storage(const io_colour *col, const io_reader_info *inf, read_plan *p)
+{
+    int linear = io_colour_is_linear(col, p->colorspace);
+    switch (inf->native) {
+    case IO_U8:
+        if (linear) {
+            p->read_as = IO_U8, p->format = SAMPLE_FORMAT_UNORM8, p->convert = 0;
+        } else if (p->nchan != 2 && io_colour_is_srgb(col, p->colorspace)) {
+            /* The core decodes SRGB8 exactly; its channel 1 of a 2-channel
+             * texture would be decoded as colour, but here it is alpha. */
+            p->read_as = IO_U8, p->format = SAMPLE_FORMAT_SRGB8, p->convert = 0;
+        } else {
+            /* Half keeps 8-bit codes of any curve to better than 1/2048. */
+            p->read_as = IO_FLOAT, p->format = SAMPLE_FORMAT_F16, p->convert = 1;
+        }
+        break;
+    case IO_HALF:
+        p->read_as = linear ? IO_HALF : IO_FLOAT;
+        p->format = SAMPLE_FORMAT_F16;
+        p->convert = !linear;
+        break;
+    default:
+        /* 16-bit integers become float: half's 11-bit significand would
+         * lose 5 of their 16 bits. */
+        p->read_as = IO_FLOAT, p->format = SAMPLE_FORMAT_F32, p->convert = !linear;
+        break;
+    }
+}
+
+/* Level k's size under libsample's rule. */
+static void rule_size(int w, int h, int k, int *lw, int *lh)
+{
+    *lw = (w >> k) > 0 ? w >> k : 1;
+    *lh = (h >> k) > 0 ? h >> k : 1;
+}
+
+/* How many of the file's levels follow libsample's ROUND_DOWN chain (a file
+ * written with ROUND_UP sizes matches only at level 0; then the pyramid is
+ * rebuilt). Also enforces the byte budget. */
+static sample_status count_levels(io_reader *r, const io_reader_info *inf, const read_plan *p, int wanted,
+                                  size_t max_bytes, int *count, sample_error *err)
+{
+    size_t total = 0;
+    int k;
+    *count = 0;
+    for (k = 0; k < wanted; ++k) {
+        int w, h, rw, rh;
+        sample_status st = io_reader_level_size(r, k, &w, &h, err);
+        if (st != SAMPLE_OK) return st;
+        rule_size(inf->width, inf->height, k, &rw, &rh);
+        if (w != rw || h != rh) break;
+        total += (size_t)w * (size_t)h * (size_t)p->nchan * sizeof(float);
+        if (total > max_bytes)
+            return io_fail(err, SAMPLE_E_TOO_LARGE, "%d x %d x %d image needs more than the %zu-byte limit",
+                           inf->width, inf->height, p->nchan, max_bytes);
+        *count = k + 1;
+        if (w == 1 && h == 1) break;
+    }
+    return SAMPLE_OK;
+}
+
+/* Read level k into a fresh buffer in the texture's storage format. */
+static sample_status read_level(io_reader *r, const io_colour *col, const read_plan *p, int k, int w, int h,
+                                void **out, sample_error *err)
+{
+    size_t n = (size_t)w * (size_t)h, values = n * (size_t)p->nchan, i;
+    size_t bytes = values * (p->read_as == IO_U8 ? 1 : p->read_as == IO_HALF ? 2 : 4);
+    unsigned char *buf = malloc(bytes ? bytes : 1);
+    sample_status st;
+    *out = NULL;
+    if (!buf) return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
+    st = io_reader_read(r, k, p->read_as, p->nchan, buf, err);
+    if (st == SAMPLE_OK && p->convert)
+        st = io_colour_apply(col, p->colorspace, 1, (float *)(void *)buf, n, p->nchan, err);
+    if (st == SAMPLE_OK && p->read_as == IO_FLOAT && p->format == SAMPLE_FORMAT_F16) {
+        /* Narrow in place: half i (bytes 2i, 2i+1) never overwrites a float
+         * not yet read (bytes 4j.. for j ≥ i). */
+        for (i = 0; i < values; ++i) {
+            float f;
+            uint16_t hv;
+            memcpy(&f, buf + 4 * i, 4);
+            hv = sample_float_to_half(f);
+            memcpy(buf + 2 * i, &hv, 2);
+        }
+    }
+    if (st != SAMPLE_OK) {
+        free(buf);
+        return st;
+    }
+    *out = buf;
+    return SAMPLE_OK;
+}
+
+static sample_status read_texture(io_reader *r, const sample_io_options *o, const sample_mip_params *mip,
+                                  sample_texture **out, sample_error *err)
+{
+    sample_io_options defaults;
+    io_reader_info inf;
+    io_colour *col = NULL;
+    read_plan p;
+    sample_image lv[SAMPLE_MAX_LEVELS];
+    void *data[SAMPLE_MAX_LEVELS] = {0};
+    int count = 0, k;
+    sample_status st;
+    if (!o) {
+        sample_io_options_init(&defaults);
+        o = &defaults;
+    }
+    io_reader_info_get(r, &inf);
+    if (inf.width > SAMPLE_MAX_SIZE || inf.height > SAMPLE_MAX_SIZE)
+        return io_fail(err, SAMPLE_E_TOO_LARGE, "image is %d x %d; the largest texture side is %d", inf.width,
+                       inf.height, SAMPLE_MAX_SIZE);
+    if (inf.width <= 0 || inf.height <= 0 || inf.channels <= 0)
+        return io_fail(err, SAMPLE_E_CORRUPT, "image claims %d x %d pixels with %d channels", inf.width,
+                       inf.height, inf.channels);
+    memset(&p, 0, sizeof p);
+    p.nchan = inf.channels < 4 ? inf.channels : 4;
+    st = io_colour_open(o->ocio_config, &col, err);
+    if (st == SAMPLE_OK) st = choose_colorspace(col, o, &inf, &p.colorspace, err);
+    if (st == SAMPLE_OK) {
+        plan_storage(col, &inf, &p);
+        st = count_levels(r, &inf, &p, o->use_file_levels ? inf.nlevels : 1,
+                          o->max_bytes ? o->max_bytes : SAMPLE_IO_DEFAULT_MAX_BYTES, &count, err);
+    }
+    memset(lv, 0, sizeof lv);
+    for (k = 0; st == SAMPLE_OK && k < count; ++k) {
+        rule_size(inf.width, inf.height, k, &lv[k].width, &lv[k].height);
+        lv[k].channels = p.nchan;
+        lv[k].format = p.format;
+        st = read_level(r, col, &p, k, lv[k].width, lv[k].height, &data[k], err);
+        lv[k].data = data[k];
+    }
+    if (st == SAMPLE_OK)
+        st = count > 1 ? sample_texture_create_levels(lv, count, out, err) : sample_texture_create(&lv[0], mip, out, err);
+    for (k = 0; k < SAMPLE_MAX_LEVELS; ++k) free(data[k]);
+    io_colour_close(col);
+    return st;
+}
+
+sample_status sample_io_read_texture(const char *path, const sample_io_options *o, const sample_mip_params *mip,
+                                     sample_texture **out, sample_error *err)
+{
+    io_reader *r;
+    sample_status st;
+    if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: out is NULL");
+    *out = NULL;
+    if (!path || !*path) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
+    st = io_reader_open(path, NULL, 0, NULL, &r, err);
+    if (st != SAMPLE_OK) return st;
+    st = read_texture(r, o, mip, out, err);
+    io_reader_close(r);
+    return st;
+}
+
+sample_status sample_io_read_memory(const void *data, size_t size, const char *format_hint,
+                                    const sample_io_options *o, const sample_mip_params *mip,
+                                    sample_texture **out, sample_error *err)
+{
+    io_reader *r;
+    sample_status st;
+    if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: out is NULL");
+    *out = NULL;
+    if (!data && size) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
+    if (size == 0) return io_fail(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
+    st = io_reader_open(NULL, data, size, format_hint, &r, err);
+    if (st != SAMPLE_OK) return st;
+    st = read_texture(r, o, mip, out, err);
+    io_reader_close(r);
+    return st;
+}

@@ -1,0 +1,157 @@
+// OpenImageIO: open an image file or an in-memory file and read its levels
+// (OIIO 2.4 ImageInput, https://openimageio.readthedocs.io/en/v2.4.x/imageinput.html).
+#include "io_internal.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <cstring>
+#include <memory>
+#include <string>
+
+using namespace OIIO;
+
+struct io_reader {
+    std::unique_ptr<Filesystem::IOMemReader> proxy; // must outlive `in`'s use of it
+    std::unique_ptr<ImageInput> in;
+    io_reader_info info;
+};
+
+static io_ptype native_type(TypeDesc t)
+{
+    switch (t.basetype) {
+    case TypeDesc::UINT8: return IO_U8;
+    case TypeDesc::UINT16: return IO_U16;
+    case TypeDesc::HALF: return IO_HALF;
+    default: return IO_FLOAT; // float, double, 32-bit ints, signed types
+    }
+}
+
+static TypeDesc oiio_type(io_ptype t)
+{
+    switch (t) {
+    case IO_U8: return TypeDesc::UINT8;
+    case IO_U16: return TypeDesc::UINT16;
+    case IO_HALF: return TypeDesc::HALF;
+    default: return TypeDesc::FLOAT;
+    }
+}
+
+// A hint "png", ".png" or "name.png" → a name whose extension OIIO can use
+// to pick the reader.
+static std::string hint_name(const char *hint)
+{
+    if (!hint || !*hint) return "memory";
+    std::string h(hint);
+    if (h.find('.') == std::string::npos) return "memory." + h;
+    if (h[0] == '.') return "memory" + h;
+    return h;
+}
+
+static sample_status open_input(io_reader *r, const char *path, const void *data, size_t size,
+                                const char *hint, sample_error *err)
+{
+    // Keep the file's values: OIIO would otherwise premultiply unassociated
+    // alpha (PNG, TGA) on read, which changes 8-bit colour irreversibly.
+    ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    std::string name = path ? std::string(path) : hint_name(hint);
+    if (path) {
+        r->in = ImageInput::open(name, &config);
+    } else {
+        r->proxy.reset(new Filesystem::IOMemReader(data, size));
+        r->in = ImageInput::open(name, &config, r->proxy.get());
+    }
+    if (r->in) return SAMPLE_OK;
+    std::string msg = OIIO::geterror();
+    if (!path) {
+        // Distinguish "this format's reader cannot read memory" from bad bytes.
+        auto probe = ImageInput::create(name);
+        if (probe && !probe->supports("ioproxy")) {
+            return io_fail(err, SAMPLE_E_UNSUPPORTED, "the %s reader cannot read from memory",
+                           probe->format_name());
+        }
+        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image from memory (%s): %s", name.c_str(),
+                       msg.c_str());
+    }
+    FILE *f = std::fopen(path, "rb");
+    if (!f) return io_fail(err, SAMPLE_E_IO, "cannot open '%s': %s", path, std::strerror(errno));
+    std::fclose(f);
+    return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image '%s': %s", path, msg.c_str());
+}
+
+extern "C" sample_status io_reader_open(const char *path, const void *data, size_t size,
+                                        const char *format_hint, io_reader **out, sample_error *err)
+{
+    *out = nullptr;
+    try {
+        std::unique_ptr<io_reader> r(new io_reader);
+        sample_status st = open_input(r.get(), path, data, size, format_hint, err);
+        if (st != SAMPLE_OK) return st;
+        const ImageSpec &spec = r->in->spec();
+        io_reader_info &inf = r->info;
+        std::memset(&inf, 0, sizeof inf);
+        inf.width = spec.width;
+        inf.height = spec.height;
+        inf.channels = spec.nchannels;
+        inf.alpha_channel = spec.alpha_channel;
+        inf.native = native_type(spec.format);
+        std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+        std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", cs.c_str());
+        if (spec.depth != 1)
+            return io_fail(err, SAMPLE_E_UNSUPPORTED, "volume images (depth %d) are not textures", spec.depth);
+        // Mip levels of subimage 0, as maketx and `texsample mip` store them.
+        inf.nlevels = 1;
+        while (inf.nlevels < SAMPLE_MAX_LEVELS && r->in->seek_subimage(0, inf.nlevels)) inf.nlevels++;
+        r->in->seek_subimage(0, 0);
+        *out = r.release();
+        return SAMPLE_OK;
+    } catch (const std::bad_alloc &) {
+        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory opening an image");
+    } catch (const std::exception &e) {
+        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image: %s", e.what());
+    }
+}
+
+extern "C" void io_reader_info_get(const io_reader *r, io_reader_info *info) { *info = r->info; }
+
+extern "C" sample_status io_reader_level_size(io_reader *r, int k, int *w, int *h, sample_error *err)
+{
+    try {
+        if (!r->in->seek_subimage(0, k))
+            return io_fail(err, SAMPLE_E_CORRUPT, "cannot seek to mip level %d: %s", k, r->in->geterror().c_str());
+        *w = r->in->spec().width;
+        *h = r->in->spec().height;
+        return SAMPLE_OK;
+    } catch (const std::exception &e) {
+        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read mip level %d: %s", k, e.what());
+    }
+}
+
+extern "C" sample_status io_reader_read(io_reader *r, int k, io_ptype type, int nchan, void *dst,
+                                        sample_error *err)
+{
+    try {
+        if (!r->in->read_image(0, k, 0, nchan, oiio_type(type), dst)) {
+            std::string msg = r->in->geterror();
+            return io_fail(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k,
+                           msg.empty() ? "unknown error" : msg.c_str());
+        }
+        return SAMPLE_OK;
+    } catch (const std::bad_alloc &) {
+        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory reading level %d", k);
+    } catch (const std::exception &e) {
+        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k, e.what());
+    }
+}
+
+extern "C" void io_reader_close(io_reader *r)
+{
+    if (!r) return;
+    try {
+        if (r->in) r->in->close();
+    } catch (...) {
+        // Closing a reader that failed mid-way may throw; nothing to report.
+    }
+    delete r;
+}
