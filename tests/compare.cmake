@@ -1,0 +1,24 @@
+# texsample compare (tools/compare): its metrics as a unit, then the
+# command end to end (ground-truth convergence, ordering of the filters on
+# the plane, outputs, exit codes), then the HTML page in headless Chromium.
+add_executable(compare_metrics ${CMAKE_CURRENT_SOURCE_DIR}/compare_metrics.c
+                               ${PROJECT_SOURCE_DIR}/tools/compare/metrics.c)
+target_include_directories(compare_metrics PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
+                           ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
+target_link_libraries(compare_metrics PRIVATE sample m)
+target_compile_options(compare_metrics PRIVATE ${SAMPLE_WARNINGS})
+add_test(NAME compare_metrics COMMAND compare_metrics)
+
+if(TARGET texsample)
+  add_executable(compare_cli ${CMAKE_CURRENT_SOURCE_DIR}/compare_cli.c)
+  target_include_directories(compare_cli PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  target_link_libraries(compare_cli PRIVATE m)
+  target_compile_options(compare_cli PRIVATE ${SAMPLE_WARNINGS})
+  add_test(NAME compare_cli COMMAND compare_cli $<TARGET_FILE:texsample>
+           ${CMAKE_CURRENT_BINARY_DIR}/compare_cli.out)
+  set_tests_properties(compare_cli PROPERTIES TIMEOUT 600)
+
+  add_test(NAME compare_html COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/compare_html.sh
+           $<TARGET_FILE:texsample> ${CMAKE_CURRENT_BINARY_DIR}/compare_html.out)
+  set_tests_properties(compare_html PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+endif()

@@ -1,0 +1,207 @@
+/*
+ * texsample compare end to end (issue 7):
+ *   - the ground truth converges: 32 × 32 and 64 × 64 samples per footprint
+ *     agree within a stated bound on every scene of the comparison set
+ *     (32 × 32 images; max |Δ| < 0.06 and RMS Δ < 0.015 over R, G, B of the
+ *     measured pixels — the plane's horizon, with dozens of checks per
+ *     pixel, is the worst: 0.046 and 0.010 when written);
+ *   - the ground truth is the same bytes at any thread count;
+ *   - ordering on the plane (64 × 64): nearest without mips has the largest
+ *     error, trilinear beats nearest-mipmap-nearest, Blinn–Newell (both
+ *     modes) and EWA beat trilinear;
+ *   - the outputs exist (PNG signatures, CSV, JSON, HTML) and the exit codes.
+ * Usage: compare_cli TEXSAMPLE WORKDIR
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+static const char *exe, *dir;
+static const char *const scenes[] = {"plane", "teapot", "teapot-image", "zoneplate", "photo-plane"};
+enum { NSCENES = sizeof scenes / sizeof scenes[0] };
+
+static int run(const char *args)
+{
+    char cmd[4096];
+    int st;
+    snprintf(cmd, sizeof cmd, "mkdir -p %s && cd %s && %s compare %s >out.txt 2>err.txt", dir, dir,
+             exe, args);
+    st = system(cmd);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* Whole file into a malloc'd buffer; NULL if missing. */
+static void *slurp(const char *sub, const char *name, size_t *len)
+{
+    char p[1024];
+    FILE *f;
+    long n;
+    void *d = NULL;
+    snprintf(p, sizeof p, "%s/%s/%s", dir, sub, name);
+    *len = 0;
+    f = fopen(p, "rb");
+    if (!f) return NULL;
+    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
+        (d = malloc((size_t)n + 1)) != NULL) {
+        *len = fread(d, 1, (size_t)n, f);
+        ((char *)d)[*len] = '\0';
+    }
+    fclose(f);
+    return d;
+}
+
+static void exit_codes(void)
+{
+    CHECK(run("--help") == 0, "--help exits 0");
+    CHECK(run("--bogus") == 2, "unknown option exits 2");
+    CHECK(run("--truth-samples 33") == 2, "odd sample count exits 2");
+    CHECK(run("--size 0") == 2, "size 0 exits 2");
+    CHECK(run("--configs trilinear,nope") == 2, "unknown configuration exits 2");
+    CHECK(run("--scene no-such-scene.json --size 16 --out bad") == 1, "missing scene exits 1");
+}
+
+static void converges(void)
+{
+    int k;
+    CHECK(run("--scene all --size 32 --truth-samples 32 --configs trilinear --no-oiio --raw "
+              "--out t32") == 0, "32x32 run");
+    CHECK(run("--scene all --size 32 --truth-samples 64 --configs trilinear --no-oiio --raw "
+              "--out t64") == 0, "64x64 run");
+    for (k = 0; k < NSCENES; ++k) {
+        char a[256], b[256];
+        size_t la, lb, ma, mb, px, n = 0;
+        float *ta, *tb;
+        unsigned char *ka, *kb;
+        double worst = 0.0, sq = 0.0;
+        snprintf(a, sizeof a, "t32/%s", scenes[k]);
+        snprintf(b, sizeof b, "t64/%s", scenes[k]);
+        ta = slurp(a, "truth.f32", &la);
+        tb = slurp(b, "truth.f32", &lb);
+        ka = slurp(a, "mask.u8", &ma);
+        kb = slurp(b, "mask.u8", &mb);
+        CHECK(ta && tb && ka && kb && la == 32 * 32 * 16 && lb == la && ma == 32 * 32 && mb == ma,
+              "%s: raw outputs present", scenes[k]);
+        if (ta && tb && ka && kb && la == 32 * 32 * 16 && lb == la && ma == 32 * 32 && mb == ma) {
+            for (px = 0; px < ma; ++px) {
+                int c;
+                if (!ka[px] || !kb[px]) continue;
+                for (c = 0; c < 3; ++c) {
+                    double d = fabs((double)ta[px * 4 + (size_t)c] - (double)tb[px * 4 + (size_t)c]);
+                    if (d > worst) worst = d;
+                    sq += d * d;
+                    ++n;
+                }
+            }
+            /* A scene where nothing is measured would pass vacuously. */
+            CHECK(n >= 3 * 100, "%s: only %zu values measured", scenes[k], n);
+            CHECK(worst < 0.06, "%s: max |truth32 - truth64| = %g", scenes[k], worst);
+            CHECK(sqrt(sq / (double)(n ? n : 1)) < 0.015, "%s: RMS difference %g", scenes[k],
+                  sqrt(sq / (double)(n ? n : 1)));
+            printf("%-12s truth 32 vs 64: max %.5f RMS %.6f over %zu values\n", scenes[k], worst,
+                   sqrt(sq / (double)(n ? n : 1)), n);
+        }
+        free(ta);
+        free(tb);
+        free(ka);
+        free(kb);
+    }
+}
+
+static void threads_identical(void)
+{
+    size_t la, lb;
+    void *a, *b;
+    CHECK(run("--scene teapot --size 32 --configs ewa --no-oiio --raw --threads 1 --out th1") == 0,
+          "1 thread");
+    CHECK(run("--scene teapot --size 32 --configs ewa --no-oiio --raw --threads 3 --out th3") == 0,
+          "3 threads");
+    a = slurp("th1/teapot", "truth.f32", &la);
+    b = slurp("th3/teapot", "truth.f32", &lb);
+    CHECK(a && b && la == lb && la > 0 && memcmp(a, b, la) == 0, "truth identical across threads");
+    free(a);
+    free(b);
+    a = slurp("th1/teapot", "ewa.f32", &la);
+    b = slurp("th3/teapot", "ewa.f32", &lb);
+    CHECK(a && b && la == lb && la > 0 && memcmp(a, b, la) == 0, "EWA image identical across threads");
+    free(a);
+    free(b);
+}
+
+/* RMSE of a configuration in results.csv (scene,config,label,rmse,...). */
+static double csv_rmse(const char *csv, const char *scene, const char *config)
+{
+    char key[128];
+    const char *p;
+    snprintf(key, sizeof key, "\n%s,%s,", scene, config);
+    p = strstr(csv, key);
+    if (!p) return NAN;
+    p += strlen(key);
+    if (*p == '"') p = strchr(p + 1, '"');
+    if (!p || !(p = strchr(p, ','))) return NAN;
+    return strtod(p + 1, NULL);
+}
+
+static void ordering_and_outputs(void)
+{
+    static const char *const configs[] = {"nearest", "bilinear", "nmn", "trilinear", "aniso16",
+                                          "bicubic", "bn-jacobian", "bn-corners", "ewa"};
+    static const char *const files[] = {"truth.png", "truth_crop.png", "contact.png",
+                                        "trilinear.png", "trilinear_err.png", "trilinear_crop.png"};
+    double e[9];
+    size_t len;
+    char *csv, *json, *html;
+    int k;
+    CHECK(run("--scene plane --size 64 --no-oiio --out ord") == 0, "plane run");
+    csv = slurp("ord", "results.csv", &len);
+    CHECK(csv != NULL, "results.csv written");
+    if (!csv) return;
+    for (k = 0; k < 9; ++k) {
+        e[k] = csv_rmse(csv, "plane", configs[k]);
+        CHECK(e[k] > 0.0 && e[k] < 1.0, "%s RMSE %g", configs[k], e[k]);
+        printf("plane 64x64 %-12s RMSE %.5f\n", configs[k], e[k]);
+    }
+    for (k = 1; k < 9; ++k)
+        CHECK(e[0] > e[k], "nearest (%g) must be worst, %s has %g", e[0], configs[k], e[k]);
+    CHECK(e[3] < e[2], "trilinear %g vs nearest-mipmap-nearest %g", e[3], e[2]);
+    CHECK(e[6] < e[3], "Blinn-Newell (Jacobian) %g vs trilinear %g", e[6], e[3]);
+    CHECK(e[7] < e[3], "Blinn-Newell (corners) %g vs trilinear %g", e[7], e[3]);
+    CHECK(e[8] < e[3], "EWA %g vs trilinear %g", e[8], e[3]);
+    free(csv);
+    for (k = 0; k < (int)(sizeof files / sizeof files[0]); ++k) {
+        unsigned char *png = slurp("ord/plane", files[k], &len);
+        CHECK(png && len > 8 && memcmp(png, "\x89PNG\r\n\x1a\n", 8) == 0, "%s is a PNG", files[k]);
+        free(png);
+    }
+    json = slurp("ord", "results.json", &len);
+    CHECK(json && strstr(json, "\"config\": \"ewa\"") && strstr(json, "\"error_map\": \"plane/ewa_err.png\""),
+          "results.json lists the configurations and pictures");
+    free(json);
+    html = slurp("ord", "index.html", &len);
+    CHECK(html && strstr(html, "<img src=\"plane/bn-corners_err.png\"") && strstr(html, "</html>"),
+          "index.html links the pictures");
+    free(html);
+    csv = slurp(".", "out.txt", &len);
+    CHECK(csv && strstr(csv, "ord/index.html") && strstr(csv, "ord/results.csv"),
+          "prints where the page and the table are");
+    free(csv);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        fprintf(stderr, "usage: compare_cli TEXSAMPLE WORKDIR\n");
+        return 2;
+    }
+    exe = argv[1];
+    dir = argv[2];
+    RUN(exit_codes);
+    RUN(converges);
+    RUN(threads_identical);
+    RUN(ordering_and_outputs);
+    return check_finish();
+}
