@@ -1,0 +1,122 @@
+/*
+ * bench's private header: where its pieces meet (doc/benchmarks.md).
+ *
+ *   queries.c    the standard query sets, from a fixed seed
+ *   textures.c   synthetic textures: libsample objects and OIIO files
+ *   engines.c    the filters measured: libsample's and OIIO's, one table
+ *   timing.c     runs over pthreads, medians
+ *   report.c     the text table and the JSON
+ *   cmd_bench.c  the subcommand
+ */
+#ifndef TEXSAMPLE_BENCH_H
+#define TEXSAMPLE_BENCH_H
+
+#include "oiio_ts.h"
+#include "sample/sample.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* ---- Query sets (queries.c) ------------------------------------------- */
+
+typedef enum bench_set {
+    BENCH_SET_MAGNIFY = 0,  /* isotropic footprint 0.25 texel, random (s, t), angle */
+    BENCH_SET_MINIFY = 1,   /* isotropic footprint 2.5 texels */
+    BENCH_SET_ANISO = 2,    /* 8:1, minor axis 1.5 texels, random angle */
+    BENCH_SET_PLANE = 3,    /* ground plane to the horizon, scanline order */
+    BENCH_SET_SHUFFLED = 4, /* the plane's queries in a fixed random order */
+    BENCH_SET_COUNT
+} bench_set;
+
+extern const char *const bench_set_names[BENCH_SET_COUNT];
+
+/* Fill q[0 … n) with set `set` for a size × size base level. The plane set
+ * is a ⌈√n⌉-wide image, so n need not be a square. Deterministic. */
+void bench_queries(bench_set set, int size, sample_query *q, size_t n);
+
+/* ---- Textures (textures.c) -------------------------------------------- */
+
+typedef enum bench_format {
+    BENCH_FMT_F32 = 0,
+    BENCH_FMT_F16 = 1,
+    BENCH_FMT_SRGB8 = 2,
+    BENCH_FMT_COUNT
+} bench_format;
+
+extern const char *const bench_format_names[BENCH_FMT_COUNT];
+
+/* One format of the synthetic texture, as libsample sees it and as OIIO's
+ * file (NULL when OIIO is not measured). */
+typedef struct bench_texture {
+    sample_texture *ours;
+    oiio_ts_tex *theirs;
+} bench_texture;
+
+/* The synthetic size × size RGBA content (linear, in [0, 1]); caller frees. */
+float *bench_content(int size);
+/* Build format `fmt` from `content`: libsample's texture with a box pyramid
+ * (REPEAT), and when ts is non-NULL an OIIO texture file in `dir`. Returns
+ * 0, or reports on stderr and returns −1. */
+int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts *ts,
+                       const char *dir, bench_texture *out);
+void bench_texture_free(bench_texture *t);
+
+/* ---- Engines (engines.c) ---------------------------------------------- */
+
+/* One filter as measured: a libsample sampler state, or an OIIO mode. */
+typedef struct bench_engine {
+    const char *name;  /* "trilinear" */
+    int oiio;          /* 0: libsample, 1: OIIO's TextureSystem */
+    int match;         /* for libsample rows: index of OIIO's matching row, or −1 */
+    sample_sampler smp;
+    oiio_ts_opts opts;
+} bench_engine;
+
+/* All engines: libsample's filters first, then OIIO's. */
+int bench_engines(bench_engine *out, int max);
+
+/* Sample queries [0, n) with an engine into rgba (n × 4), optionally with
+ * stats (libsample only). Returns 0, or −1 (reported). */
+int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
+                     const sample_query *q, size_t n, float *rgba, sample_stats *stats);
+
+/* ---- Timing (timing.c) ------------------------------------------------ */
+
+typedef struct bench_timing {
+    double median, min, max; /* samples per second over the timed runs */
+    int runs;
+} bench_timing;
+
+/* Time `runs` passes of all n queries on `threads` threads (each thread a
+ * contiguous slice, in batches of `batch`), after one untimed warm-up pass.
+ * Returns 0, or −1 if a pass failed. */
+int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
+               const sample_query *q, size_t n, int threads, int runs, size_t batch,
+               bench_timing *out);
+
+/* ---- Report (report.c) ------------------------------------------------ */
+
+typedef struct bench_result {
+    bench_set set;
+    bench_format format;
+    int engine;              /* index into the engine table */
+    int threads;
+    bench_timing timing;
+    double texels_per_sample; /* < 0: not known (OIIO) */
+} bench_result;
+
+typedef struct bench_report {
+    const bench_engine *engines;
+    int engine_count;
+    const bench_result *results;
+    size_t count;
+    int size, threads_max, runs;
+    size_t queries, batch;
+    const char *command; /* the command line, for the record */
+} bench_report;
+
+void bench_print_table(const bench_report *r);
+/* Returns 0, or −1 if the file could not be written (reported). */
+int bench_write_json(const bench_report *r, const char *path);
+
+#endif

@@ -1,0 +1,143 @@
+/*
+ * The benchmark's synthetic texture in each storage format, for libsample
+ * and as an OIIO texture file. The content only has to defeat constant-
+ * colour shortcuts and give every mip level real detail: a 32-texel
+ * checker, two ramps and per-texel hash noise.
+ */
+#include "bench.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+const char *const bench_format_names[BENCH_FMT_COUNT] = {
+    [BENCH_FMT_F32] = "float",
+    [BENCH_FMT_F16] = "half",
+    [BENCH_FMT_SRGB8] = "srgb8",
+};
+
+/* A 32-bit integer hash (Wang-style mixing): noise without a generator. */
+static uint32_t hash2(uint32_t i, uint32_t j)
+{
+    uint32_t h = i * 0x8DA6B343u ^ j * 0xD8163841u;
+    h ^= h >> 16;
+    h *= 0x7FEB352Du;
+    h ^= h >> 15;
+    h *= 0x846CA68Bu;
+    return h ^ (h >> 16);
+}
+
+float *bench_content(int size)
+{
+    size_t n = (size_t)size * (size_t)size;
+    float *p = malloc(n * 4 * sizeof *p);
+    int i, j;
+    if (!p) return NULL;
+    for (j = 0; j < size; ++j)
+        for (i = 0; i < size; ++i) {
+            uint32_t h = hash2((uint32_t)i, (uint32_t)j);
+            float noise = (float)(h >> 8) / 16777216.0f;
+            float *t = p + 4 * ((size_t)j * (size_t)size + (size_t)i);
+            t[0] = 0.2f * noise + (((i >> 5) ^ (j >> 5)) & 1 ? 0.8f : 0.1f);
+            t[1] = 0.8f * (float)i / (float)size + 0.2f * noise;
+            t[2] = 0.8f * (float)j / (float)size + 0.2f * (1.0f - noise);
+            t[3] = 1.0f;
+        }
+    return p;
+}
+
+/* 8-bit sRGB codes of linear content (alpha stays linear, GL 4.6 §8.24). */
+static unsigned char *to_srgb8(const float *c, size_t n)
+{
+    unsigned char *p = malloc(n * 4);
+    size_t k;
+    if (!p) return NULL;
+    for (k = 0; k < n * 4; ++k) {
+        float v = (k % 4 == 3) ? c[k] : sample_linear_to_srgb(c[k]);
+        p[k] = (unsigned char)(v * 255.0f + 0.5f);
+    }
+    return p;
+}
+
+/* Make OIIO's file of the same texels. OIIO reads 8-bit data as code/255
+ * and never decodes sRGB, so its srgb8 texture holds the same codes and
+ * reads them as if linear: the same memory traffic and work, not the
+ * same values (doc/benchmarks.md). */
+static int make_oiio(const float *content, const void *stored, int size, bench_format fmt,
+                     oiio_ts *ts, const char *dir, bench_texture *out)
+{
+    static const oiio_ts_format ofmt[BENCH_FMT_COUNT] = {OIIO_TS_FLOAT, OIIO_TS_HALF,
+                                                        OIIO_TS_UINT8};
+    size_t n = (size_t)size * (size_t)size * 4, k;
+    float *codes = NULL;
+    const float *src = content;
+    char path[1024], err[512];
+    int rc;
+    snprintf(path, sizeof path, "%s/bench_%s.%s", dir, bench_format_names[fmt],
+             fmt == BENCH_FMT_F16 ? "exr" : "tx");
+    if (fmt == BENCH_FMT_SRGB8) {
+        const unsigned char *c8 = stored;
+        if (!(codes = malloc(n * sizeof *codes))) {
+            fprintf(stderr, "texsample bench: out of memory\n");
+            return -1;
+        }
+        for (k = 0; k < n; ++k) codes[k] = (float)c8[k] / 255.0f;
+        src = codes;
+    }
+    rc = oiio_ts_make_texture(src, size, size, ofmt[fmt], SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT,
+                              path, err, sizeof err);
+    free(codes);
+    if (rc != 0 || !(out->theirs = oiio_ts_open(ts, path, err, sizeof err))) {
+        fprintf(stderr, "texsample bench: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts *ts,
+                       const char *dir, bench_texture *out)
+{
+    size_t n = (size_t)size * (size_t)size, k;
+    void *stored = NULL;
+    sample_image img = {size, size, 4, SAMPLE_FORMAT_F32, content, 0};
+    sample_mip_params mip;
+    sample_error err;
+    int rc = -1;
+
+    out->ours = NULL;
+    out->theirs = NULL;
+    if (fmt == BENCH_FMT_F16) {
+        uint16_t *h = malloc(n * 4 * sizeof *h);
+        if (h)
+            for (k = 0; k < n * 4; ++k) h[k] = sample_float_to_half(content[k]);
+        stored = h;
+        img.format = SAMPLE_FORMAT_F16;
+    } else if (fmt == BENCH_FMT_SRGB8) {
+        stored = to_srgb8(content, n);
+        img.format = SAMPLE_FORMAT_SRGB8;
+    }
+    if (fmt != BENCH_FMT_F32) {
+        if (!stored) {
+            fprintf(stderr, "texsample bench: out of memory\n");
+            return -1;
+        }
+        img.data = stored;
+    }
+    sample_mip_params_init(&mip);
+    mip.wrap_s = mip.wrap_t = SAMPLE_WRAP_REPEAT;
+    if (sample_texture_create(&img, &mip, &out->ours, &err) != SAMPLE_OK) {
+        fprintf(stderr, "texsample bench: %s texture: %s\n", bench_format_names[fmt], err.message);
+    } else if (!ts || make_oiio(content, stored, size, fmt, ts, dir, out) == 0) {
+        rc = 0;
+    }
+    free(stored);
+    if (rc != 0) bench_texture_free(out);
+    return rc;
+}
+
+void bench_texture_free(bench_texture *t)
+{
+    /* OIIO's handles belong to its TextureSystem. */
+    sample_texture_destroy(t->ours);
+    t->ours = NULL;
+    t->theirs = NULL;
+}
