@@ -280,10 +280,9 @@ static void html_figure(buf *b, const cmp_scene_result *c, const char *name, con
     bprintf(b, "<figure>");
     cmp_pic_path(p, sizeof p, c, name, "");
     bprintf(b, "<img src=\"%s\" width=\"%d\" height=\"%d\" alt=\"%s\">", p, c->w, c->h, name);
-    if (heat) {
-        cmp_pic_path(p, sizeof p, c, name, "_err");
-        bprintf(b, "<img src=\"%s\" width=\"%d\" alt=\"%s error\">", p, c->w, name);
-    }
+    cmp_pic_path(p, sizeof p, c, name, heat ? "_err" : "_mask");
+    bprintf(b, "<img src=\"%s\" width=\"%d\" alt=\"%s %s\">", p, c->w, name,
+            heat ? "error" : "mask");
     cmp_pic_path(p, sizeof p, c, name, "_crop");
     bprintf(b, "<img src=\"%s\" width=\"%d\" height=\"%d\" alt=\"%s crop\">", p,
             c->crop_size * c->crop_zoom, c->crop_size * c->crop_zoom, name);
@@ -314,7 +313,8 @@ int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const cha
                 c->pixels, c->crop_size, c->crop_size, c->crop_x, c->crop_y, c->crop_zoom, p);
         html_table(&b, c);
         bprintf(&b, "<div class=\"grid\">\n");
-        html_figure(&b, c, "truth", "ground truth", "", 0);
+        html_figure(&b, c, "truth", "ground truth",
+                    "<br>white: pixels measured; red frame: the crop", 0);
         for (r = 0; r < c->nrows; ++r) {
             const cmp_row *w = &c->rows[r];
             if (!w->ok) continue;

@@ -21,9 +21,23 @@ const char *const cmp_default_scenes[] = {"plane", "teapot", NULL};
 static const char *const photo_files[] = {"testimages/photo.png", "testimages/photo.jpg",
                                           "testimages/photo.exr", NULL};
 
+/* Marble with 7 octaves from 4 cycles: detail up to 256 cycles per unit,
+ * under the 1024-texel bake's Nyquist frequency (512). */
 static const char natural_texture[] =
-    "{\"name\":\"tex\",\"type\":\"marble\",\"freq\":3,\"octaves\":5,\"amount\":3,"
-    "\"a\":[0.32,0.2,0.1,1],\"b\":[0.85,0.78,0.62,1]}";
+    "{\"name\":\"tex\",\"type\":\"marble\",\"freq\":4,\"octaves\":7,\"amount\":3,"
+    "\"size\":1024,\"samples\":2,\"a\":[0.32,0.2,0.1,1],\"b\":[0.85,0.78,0.62,1]}";
+
+/* The zone plate, minified: the renderer's built-in shows its 256-texel
+ * texture one texel per pixel at 256 × 256 (nothing to filter). Here
+ * cos(π k r²) with k = 700 reaches 495 cycles per unit in the corners,
+ * about 2 cycles per pixel at 256 × 256, baked at 1024 texels (Nyquist 512). */
+static const char zoneplate_json[] =
+    "{\"camera\":{\"eye\":[0.5,0.5,1.2071067811865475],\"look\":[0.5,0.5,0],\"up\":[0,1,0],"
+    "\"fov\":45},\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\"},"
+    "\"textures\":[{\"name\":\"zp\",\"type\":\"zoneplate\",\"amount\":700,\"size\":1024}],"
+    "\"materials\":[{\"name\":\"m\",\"texture\":\"zp\"}],"
+    "\"objects\":[{\"type\":\"polygons\",\"polygons\":[{\"v\":[[0,0,0],[1,0,0],[1,1,0],[0,1,0]],"
+    "\"st\":[[0,0],[1,0],[1,1],[0,1]]}]}]}";
 
 /* %s: the texture object. */
 static const char teapot_image_json[] =
@@ -89,6 +103,9 @@ int cmp_scene_open(const char *name, int size, render_scene **out, char *label, 
     snprintf(label, labellen, "%s", name);
     if (strcmp(name, "teapot-image") == 0) return own_scene(teapot_image_json, size, out, err, errlen);
     if (strcmp(name, "photo-plane") == 0) return own_scene(photo_plane_json, size, out, err, errlen);
+    if (strcmp(name, "zoneplate") == 0)
+        return render_scene_parse(zoneplate_json, strlen(zoneplate_json), size, size, out, err,
+                                  errlen);
     for (k = 0; render_builtin_names[k]; ++k)
         if (strcmp(name, render_builtin_names[k]) == 0)
             return render_scene_builtin(name, size, size, out, err, errlen);

@@ -3,7 +3,8 @@
  * each configuration its image, error heat map and magnified crop; then the
  * contact sheet that lays them out in three rows (images, heat maps,
  * crops), one column per configuration, labelled, so that one PNG tells the
- * whole story of a scene.
+ * whole story of a scene. The truth's column shows the metric mask where the
+ * others show their heat maps.
  */
 #include "cmp_internal.h"
 
@@ -24,13 +25,26 @@ static int write_pic(const char *dir, const cmp_scene_result *s, const char *wha
     return 1;
 }
 
-/* Image, heat map (err == NULL: none) and crop of one column. */
+/* The metric mask for the truth's column: measured pixels white, the rest
+ * grey as in the heat maps. */
+static int mask_pic(cmp_pic *p, const unsigned char *mask, int w, int h)
+{
+    static const unsigned char on[3] = {235, 235, 235}, off[3] = {90, 90, 90};
+    size_t px;
+    if (cmp_pic_alloc(p, w, h)) return 1;
+    for (px = 0; px < (size_t)w * (size_t)h; ++px) memcpy(p->rgb + px * 3, mask[px] ? on : off, 3);
+    return 0;
+}
+
+/* Image, heat map (err == NULL: the mask instead) and crop of one column. */
 static int column_pics(const cmp_scene_result *s, const float *rgba, const float *err,
                        const unsigned char *mask, cmp_pic pic[3])
 {
     memset(pic, 0, 3 * sizeof *pic);
     if (cmp_pic_from_linear(&pic[0], rgba, s->w, s->h)) return 1;
-    if (err && cmp_pic_heatmap(&pic[1], err, mask, s->w, s->h, CMP_HEAT_SCALE)) return 1;
+    if (err ? cmp_pic_heatmap(&pic[1], err, mask, s->w, s->h, CMP_HEAT_SCALE)
+            : mask_pic(&pic[1], mask, s->w, s->h))
+        return 1;
     return cmp_pic_crop(&pic[2], &pic[0], s->crop_x, s->crop_y, s->crop_size, s->crop_zoom);
 }
 
@@ -71,7 +85,8 @@ int cmp_scene_pictures(const char *dir, const cmp_scene_result *s, const cmp_tru
         if (r < 0)
             cmp_pic_rect(&pic[0], s->crop_x - 1, s->crop_y - 1, s->crop_size + 2, s->crop_size + 2,
                          frame);
-        if (write_pic(dir, s, name, "", &pic[0]) || (r >= 0 && write_pic(dir, s, name, "_err", &pic[1])))
+        if (write_pic(dir, s, name, "", &pic[0]) ||
+            write_pic(dir, s, name, r < 0 ? "_mask" : "_err", &pic[1]))
             goto out;
         cmp_pic_text(&sheet, x + 2, 5, name, 1, fg);
         for (k = 0; k < 3; ++k)
