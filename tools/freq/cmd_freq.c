@@ -1,4 +1,4 @@
-/* texsample freq: not implemented yet (see the open issues). */
+/* texsample freq: not implemented yet. */
 #include "cli.h"
 #include "commands.h"
 

@@ -1,0 +1,15 @@
+# The frequency-test harness (tools/freq/): a static library shared by the
+# texsample executable and the tests (tests/freq.cmake). The command line,
+# file output and the OpenImageIO backend stay in texsample, which has the
+# CLI helpers and (when built) the OpenImageIO shim.
+file(GLOB TEXSAMPLE_FREQ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/freq/*.c)
+list(FILTER TEXSAMPLE_FREQ_SOURCES EXCLUDE REGEX "/(cmd_freq|out|oiio_backend)\\.c$")
+add_library(texsample_freq STATIC ${TEXSAMPLE_FREQ_SOURCES})
+target_include_directories(texsample_freq PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/freq)
+target_compile_options(texsample_freq PRIVATE ${SAMPLE_WARNINGS})
+target_link_libraries(texsample_freq PUBLIC sample m)
+# texsample globbed tools/*/*.c already; drop the library's sources from it.
+get_target_property(_ts_sources texsample SOURCES)
+list(REMOVE_ITEM _ts_sources ${TEXSAMPLE_FREQ_SOURCES})
+set_property(TARGET texsample PROPERTY SOURCES ${_ts_sources})
+target_link_libraries(texsample PRIVATE texsample_freq)

@@ -1,0 +1,246 @@
+/*
+ * freq.h — the frequency-test harness behind `texsample freq` (DESIGN §9,
+ * doc/frequency-tests.md). Library code of the tools, not of libsample: the
+ * texsample_freq static library (tools/freq.cmake) holds everything except
+ * the command line (cmd_freq.c), file output (out.c) and the OpenImageIO
+ * backend (oiio_backend.c), so that tests can call the measurement directly.
+ *
+ *   grating.c   wave vectors, grating and zone-plate textures
+ *   measure.c   screen layout, offsets, least-squares amplitude fit
+ *   filters.c   the filter configurations and the libsample backend
+ *   sweep.c     the (m, θ, r) × filter × frequency loops
+ *   summary.c   per-curve and per-filter numbers
+ *   report.c    CSV, Markdown and HTML text
+ *   svg.c       SVG plots
+ *   raster.c    the same plots as RGBA pictures (PNG for the HTML page)
+ *   strbuf.c    a growable text buffer
+ *
+ * GEOMETRY (doc/frequency-tests.md §2). Texel space of the base level,
+ * u = s·N, v = t·N, texel centres at integers + ½. The grating is
+ * g(u, v) = cos(2π(p·u + q·v)/N) on an N × N REPEAT texture: p and q are
+ * integers, so it has exactly (p, q) cycles across the texture and tiles
+ * without a seam; its frequency is f = √(p² + q²)/N cycles/texel at the
+ * angle θ = atan2(q, p). The screen maps pixel (x, y) to
+ * (u, v) = o + x·m·e1 + y·m·r·e2 with e1 = (cos θ, sin θ) (along the wave
+ * vector) and e2 = (−sin θ, cos θ) (along the crests), so the screen signal
+ * is cos(2π F x + φ) with F = f·m cycles/pixel, constant along y, and the
+ * Jacobian has columns m·e1/N and m·r·e2/N: λ = log2(m·r).
+ */
+#ifndef TEXSAMPLE_FREQ_H
+#define TEXSAMPLE_FREQ_H
+
+#include "sample/sample.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define FQ_PI 3.14159265358979323846
+
+/* ---- Text buffer (strbuf.c) ---------------------------------------------- */
+
+typedef struct fq_buf {
+    char *data;
+    size_t len, cap;
+    int failed; /* an allocation failed; the text is incomplete */
+} fq_buf;
+
+void fq_buf_printf(fq_buf *b, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+void fq_buf_free(fq_buf *b);
+
+/* ---- Gratings (grating.c) ------------------------------------------------ */
+
+typedef struct fq_wave {
+    int n;       /* texture side N (a power of two) */
+    int p, q;    /* cycles across the texture along u and v */
+    double f;    /* √(p² + q²) / N, cycles per texel */
+    double theta; /* atan2(q, p), radians */
+} fq_wave;
+
+/* The integer wave vector nearest to frequency f (cycles/texel) at angle
+ * theta on an N-texel texture. f = 0 gives (0, 0). */
+fq_wave fq_wave_nearest(int n, double f, double theta);
+
+/* The one-channel float texture of the grating (a constant 1 for p = q = 0),
+ * with a box-filtered REPEAT pyramid built by the library. */
+sample_status fq_grating_texture(const fq_wave *w, sample_texture **out, sample_error *err);
+
+/* A texture from N × N one-channel float texels: box pyramid, REPEAT
+ * (what every libsample configuration in the sweep reads). */
+sample_status fq_texture_create(const float *texels, int n, sample_texture **out,
+                                sample_error *err);
+
+/* The grating's texel values (N × N floats, row v = 0 first); for the
+ * texture above and for backends that build their own files. */
+float *fq_grating_texels(const fq_wave *w);
+
+/* A zone plate cos(π·((i − N/2)² + (j − N/2)²)/N): local frequency from 0 at
+ * the centre to ½ cycle/texel at the edges, periodic for even N. */
+float *fq_zone_plate_texels(int n);
+
+/* ---- Backends ------------------------------------------------------------ */
+
+/* Sample `count` queries on the texture the backend was prepared for; write
+ * count × 4 floats into rgba and add the texels read to *texels (backends
+ * that cannot count leave it). Returns 0, or −1 with a message in err. */
+typedef int (*fq_sample_fn)(void *ctx, const sample_query *q, size_t count, float *rgba,
+                            double *texels, char *err, size_t errlen);
+
+/* A filter under test: how to prepare it for a grating, how to sample. */
+typedef struct fq_backend {
+    const char *name;  /* as in the CSV, e.g. "trilinear" */
+    const char *label; /* for plots and tables */
+    /* Prepare for one texture (levels built by the library in `tex`, texels
+     * in `texels` for backends that need a file). Returns a context for
+     * sample() or NULL with a message in err. */
+    void *(*prepare)(const struct fq_backend *b, const sample_texture *tex, const float *texels,
+                     int n, char *err, size_t errlen);
+    fq_sample_fn sample;
+    void (*release)(void *ctx);
+    const void *config; /* backend data: the sampler state for libsample */
+    int counts_texels;  /* 0: texels per sample is not known (OpenImageIO) */
+} fq_backend;
+
+/* The engine's filter configurations (filters.c): nearest, bilinear,
+ * nearest_mipmap_nearest, trilinear, cubic_mipmap_linear, aniso16,
+ * blinn_newell, ewa. */
+extern const fq_backend fq_libsample_backends[];
+extern const int fq_libsample_backend_count;
+
+/* ---- Measurement (measure.c) --------------------------------------------- */
+
+typedef struct fq_layout {
+    double m, r;       /* texels per pixel along the wave / across it */
+    int width, rows;   /* pixels per row, rows */
+    int phases;        /* offsets o_j */
+    /* < 0: offsets uniform over the whole texture (jittered strata), the
+     * normal mode. ≥ 0: every offset is an integer number of texels plus
+     * this fixed sub-texel phase on both axes (closed-form tests). */
+    double subtexel;
+    int lattice; /* with subtexel ≥ 0: integer offsets are multiples of this */
+    uint64_t seed;
+} fq_layout;
+
+/* Defaults: width 32, rows 2, phases 16, subtexel −1, lattice 1, seed 1. */
+void fq_layout_init(fq_layout *l, double m, double r);
+
+typedef struct fq_result {
+    double F;        /* screen frequency f·m, cycles/pixel */
+    double alias_F;  /* |F − round(F)|: where the output shows it */
+    double re, im;   /* coherent complex response H */
+    double amp;      /* |H|: response below Nyquist, leakage above */
+    double stderr_;  /* standard error of amp from the fit residual */
+    double residual; /* RMS of what the fit leaves, as an amplitude (√2·RMS) */
+    double texels;   /* texels read per sample (NaN if not counted) */
+    double ns;       /* wall time per sample, nanoseconds */
+} fq_result;
+
+/* Sample the texture of wave w through `b` (context ctx) on the layout and
+ * fit y = c + a·cos φ + b·sin φ, φ the grating's phase at each sample's
+ * exact position; H = a − i·b. Returns 0, or −1 with a message. */
+int fq_measure(const fq_backend *b, void *ctx, const fq_wave *w, const fq_layout *l,
+               fq_result *out, char *err, size_t errlen);
+
+/* The queries of one layout (width × rows × phases, phase-major), and the
+ * grating phase 2π(p·u + q·v)/N at each query's exact (float) position.
+ * Caller frees both. */
+int fq_layout_queries(const fq_wave *w, const fq_layout *l, sample_query **queries,
+                      double **phase, size_t *count);
+
+/* ---- Sweep (sweep.c) ----------------------------------------------------- */
+
+typedef struct fq_plan {
+    const double *m; int nm;
+    const double *theta_deg; int ntheta;
+    const double *r; int nr;
+    int n;            /* texture side */
+    double f_step;    /* screen-frequency step of the grid, cycles/pixel */
+    double f_max;     /* top of the grid (2) */
+    int width, rows, phases;
+    const fq_backend *const *backends; int nbackends;
+    /* Called after each grating texture is done (may be NULL). */
+    void (*progress)(size_t done, size_t total);
+} fq_plan;
+
+/* One measured point of one curve. */
+typedef struct fq_point {
+    int backend, im, itheta, ir; /* indices into the plan */
+    fq_wave wave;
+    fq_result res;
+} fq_point;
+
+typedef struct fq_sweep {
+    fq_point *pts;
+    size_t count, cap;
+} fq_sweep;
+
+/* The full sweep; points come out ordered by (backend, m, θ, r, F).
+ * Returns 0, or −1 with a message (the points so far are kept). */
+int fq_sweep_run(const fq_plan *plan, fq_sweep *out, char *err, size_t errlen);
+void fq_sweep_free(fq_sweep *s);
+
+/* ---- Summary (summary.c) ------------------------------------------------- */
+
+#define FQ_PASS_BELOW 0.4 /* pass-band fidelity: mean response for 0 < F < 0.4 */
+#define FQ_STOP_ABOVE 0.6 /* aliasing: mean leakage for 0.6 < F ≤ f_max */
+
+typedef struct fq_stat {
+    double pass, pass_worst;   /* mean over θ; worst (lowest) over θ */
+    double alias, alias_worst; /* mean over θ; worst (highest) over θ */
+    double texels, ns;         /* per sample, mean over the points */
+    int npass, nstop;          /* points behind the numbers (0: n/a) */
+} fq_stat;
+
+/* Numbers of one backend at one (m, r), θ folded as above; im or ir < 0
+ * folds that axis too (the worst is then over everything folded). */
+fq_stat fq_summarize(const fq_plan *plan, const fq_sweep *s, int backend, int im, int ir);
+
+/* ---- Text outputs (report.c) --------------------------------------------- */
+
+void fq_report_csv(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
+/* summary.csv and the Markdown table (per filter, then per filter and r). */
+void fq_report_summary_csv(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
+void fq_report_summary_md(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
+/* The HTML page; `plots` are the picture file names (relative), one per
+ * (θ, r) in plan order, `zone` the zone-plate pictures (one per backend) or
+ * NULL, `command` the command line that produced it. */
+void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *plots,
+                    const char *const *zone, const char *command, fq_buf *out);
+
+/* ---- Plots (svg.c, raster.c) --------------------------------------------- */
+
+/* Plot geometry shared by the SVG and raster renderings: one figure per
+ * (θ, r), one panel per m (3 columns), response 0 … FQ_PLOT_YMAX against
+ * F = 0 … plan->f_max. */
+#define FQ_PLOT_YMAX 1.25
+#define FQ_PANEL_W 300
+#define FQ_PANEL_H 200
+#define FQ_PANEL_MARGIN_L 40
+#define FQ_PANEL_MARGIN_T 24
+#define FQ_PANEL_MARGIN_B 28
+#define FQ_PANEL_MARGIN_R 10
+#define FQ_PLOT_COLS 3
+
+typedef struct fq_figure {
+    int width, height, legend_h;
+} fq_figure;
+
+fq_figure fq_figure_size(const fq_plan *plan);
+/* Panel k's plot area origin (top-left of the axes box) in the figure. */
+void fq_panel_origin(const fq_plan *plan, int k, double *x0, double *y0);
+/* Data → figure coordinates inside a panel's axes box. */
+double fq_plot_x(const fq_plan *plan, double F);
+double fq_plot_y(double h);
+/* Colour of backend k as 0xRRGGBB. */
+unsigned fq_plot_color(int k);
+
+void fq_svg_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, fq_buf *out);
+/* The same figure rasterized: width × height linear RGBA floats (caller
+ * frees), NULL when out of memory. */
+float *fq_raster_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, int *w,
+                        int *h);
+
+#endif
