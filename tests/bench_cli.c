@@ -1,0 +1,148 @@
+/*
+ * texsample bench, end to end but small: --help, usage errors (exit 2), and
+ * a tiny --quick run whose JSON must parse and hold one result per (set,
+ * format, filter, engine, thread count) asked for, positive speeds, the
+ * exact texel counts of the filters whose cost is fixed (nearest 1,
+ * bilinear 4, bicubic 16 on every query), and ratios exactly where an OIIO
+ * twin exists. No speed is asserted.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+static const char *exe, *dir;
+
+static int run(const char *args)
+{
+    char cmd[2048];
+    int st;
+    snprintf(cmd, sizeof cmd, "cd '%s' && '%s' bench %s >out.txt 2>err.txt", dir, exe, args);
+    st = system(cmd);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static char *slurp(const char *name)
+{
+    char p[1024];
+    FILE *f;
+    long n;
+    char *s = NULL;
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    if (!(f = fopen(p, "rb"))) return NULL;
+    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
+        (s = malloc((size_t)n + 1)) != NULL) {
+        s[fread(s, 1, (size_t)n, f)] = 0;
+    }
+    fclose(f);
+    return s;
+}
+
+static void help_and_usage(void)
+{
+    char *out;
+    CHECK(run("--help") == 0, "--help exits 0");
+    out = slurp("out.txt");
+    CHECK(out && strstr(out, "usage: texsample bench") != NULL, "help text");
+    free(out);
+    CHECK(run("--frobnicate") == 2, "unknown option exits 2");
+    CHECK(run("--runs 0") == 2, "--runs 0 exits 2");
+    CHECK(run("--sets magnify,nope") == 2, "unknown set exits 2");
+    out = slurp("err.txt");
+    CHECK(out && strstr(out, "nope") != NULL, "the message names the bad set");
+    free(out);
+    CHECK(run("--json") == 2, "--json without a file exits 2");
+}
+
+static double num(const cJSON *o, const char *k)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, k);
+    return cJSON_IsNumber(v) ? v->valuedouble : -1.0;
+}
+
+static const char *str(const cJSON *o, const char *k)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, k);
+    return cJSON_IsString(v) ? v->valuestring : "";
+}
+
+static void tiny_json(void)
+{
+    char *text;
+    cJSON *root, *res, *x;
+    int n = 0, rc;
+    rc = run("--quick --size 32 --queries 300 --runs 1 --threads 2 --batch 64 "
+             "--sets magnify,plane --formats float,srgb8 --json r.json");
+    CHECK(rc == 0, "tiny run exits 0 (got %d)", rc);
+    text = slurp("r.json");
+    CHECK(text != NULL, "r.json written");
+    if (!text) return;
+    root = cJSON_Parse(text);
+    free(text);
+    CHECK(root != NULL, "r.json parses");
+    if (!root) return;
+    CHECK(num(root, "queries") == 300 && num(root, "size") == 32 && num(root, "runs") == 1,
+          "parameters recorded");
+    CHECK(strstr(str(root, "command"), "--quick") != NULL, "command recorded");
+    res = cJSON_GetObjectItemCaseSensitive(root, "results");
+    CHECK(cJSON_IsArray(res), "results array");
+    cJSON_ArrayForEach(x, res) {
+        const char *filter = str(x, "filter"), *engine = str(x, "engine"), *set = str(x, "set");
+        const cJSON *sps = cJSON_GetObjectItemCaseSensitive(x, "samples_per_s");
+        const cJSON *ratio = cJSON_GetObjectItemCaseSensitive(x, "ratio_vs_oiio");
+        double tps = num(x, "texels_per_sample");
+        int ours = strcmp(engine, "libsample") == 0;
+        n++;
+        CHECK(ours || strcmp(engine, "oiio") == 0, "engine %s", engine);
+        CHECK(strcmp(set, "magnify") == 0 || strcmp(set, "plane") == 0, "set %s", set);
+        CHECK(num(x, "threads") == 1 || num(x, "threads") == 2, "threads");
+        CHECK(num(sps, "median") > 0 && num(sps, "min") <= num(sps, "median") &&
+                  num(sps, "median") <= num(sps, "max") && num(sps, "runs") == 1,
+              "%s %s speeds ordered", filter, engine);
+        if (!ours) {
+            CHECK(cJSON_IsNull(cJSON_GetObjectItemCaseSensitive(x, "texels_per_sample")) &&
+                      cJSON_IsNull(ratio), "oiio rows have no texel count or ratio");
+            continue;
+        }
+        if (strcmp(filter, "nearest") == 0) CHECK(tps == 1.0, "nearest reads 1 texel: %g", tps);
+        if (strcmp(filter, "bilinear") == 0) CHECK(tps == 4.0, "bilinear reads 4: %g", tps);
+        if (strcmp(filter, "bicubic") == 0) CHECK(tps == 16.0, "bicubic reads 16: %g", tps);
+        if (strcmp(filter, "blinn-newell") == 0 || strcmp(filter, "ewa") == 0)
+            CHECK(cJSON_IsNull(ratio), "%s has no OIIO twin", filter);
+        else
+            CHECK(cJSON_IsNumber(ratio) && ratio->valuedouble > 0, "%s has a ratio", filter);
+    }
+    /* 2 sets × 2 formats × (7 libsample + 5 OIIO filters) × 2 thread counts. */
+    CHECK(n == 2 * 2 * 12 * 2, "result count %d", n);
+    cJSON_Delete(root);
+
+    rc = run("--quick --size 32 --queries 50 --runs 1 --threads 1 --no-oiio --sets minify "
+             "--formats half --filters trilinear,ewa --json -");
+    CHECK(rc == 0, "--json - exits 0");
+    text = slurp("out.txt");
+    root = text ? cJSON_Parse(text) : NULL;
+    CHECK(root != NULL, "--json - prints only JSON on stdout");
+    res = root ? cJSON_GetObjectItemCaseSensitive(root, "results") : NULL;
+    CHECK(cJSON_GetArraySize(res) == 2, "two filters, one thread count, no OIIO");
+    cJSON_Delete(root);
+    free(text);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        fprintf(stderr, "usage: bench_cli TEXSAMPLE OUTDIR\n");
+        return 2;
+    }
+    exe = argv[1];
+    dir = argv[2];
+    mkdir(dir, 0777);
+    RUN(help_and_usage);
+    RUN(tiny_json);
+    return check_finish();
+}
