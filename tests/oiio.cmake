@@ -7,5 +7,9 @@ if(TARGET texsample_oiio)
   # C++ runtime for the static library's OpenImageIO calls.
   set_target_properties(oiio_shim PROPERTIES LINKER_LANGUAGE CXX)
   add_test(NAME oiio_shim COMMAND oiio_shim)
-  set_tests_properties(oiio_shim PROPERTIES TIMEOUT 120)
+  # OpenImageIO 2.4's TextureSystem::destroy() deletes its implementation
+  # through the base-class pointer with a sized delete, which ASan reports as
+  # new-delete-type-mismatch inside libOpenImageIO (not in our code).
+  set_tests_properties(oiio_shim PROPERTIES TIMEOUT 120
+    ENVIRONMENT "ASAN_OPTIONS=new_delete_type_mismatch=0")
 endif()
