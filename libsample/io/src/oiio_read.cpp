@@ -4,7 +4,10 @@
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -37,15 +40,29 @@ static TypeDesc oiio_type(io_ptype t)
     }
 }
 
-// A hint "png", ".png" or "name.png" → a name whose extension OIIO can use
-// to pick the reader.
-static std::string hint_name(const char *hint)
+// Open from memory with one named format: OIIO 2.4 readers take the proxy
+// through set_ioproxy() and, for those that look for it there, the
+// "oiio:ioproxy" configuration hint (imageio.h, ImageInput::open).
+static std::unique_ptr<ImageInput> open_memory(const std::string &format, Filesystem::IOMemReader *proxy,
+                                               ImageSpec config, bool *unsupported)
 {
-    if (!hint || !*hint) return "memory";
-    std::string h(hint);
-    if (h.find('.') == std::string::npos) return "memory." + h;
-    if (h[0] == '.') return "memory" + h;
-    return h;
+    auto in = ImageInput::create(format);
+    *unsupported = false;
+    if (!in) return nullptr;
+    if (!in->supports("ioproxy")) {
+        *unsupported = true;
+        return nullptr;
+    }
+    proxy->seek(0);
+    void *ptr = proxy;
+    config.attribute("oiio:ioproxy", TypeDesc::PTR, &ptr);
+    in->set_ioproxy(proxy);
+    ImageSpec spec;
+    if (!in->open("memory." + format, spec, config)) {
+        (void)in->geterror(); // drop the message so it does not pile up
+        return nullptr;
+    }
+    return in;
 }
 
 static sample_status open_input(io_reader *r, const char *path, const void *data, size_t size,
@@ -55,29 +72,36 @@ static sample_status open_input(io_reader *r, const char *path, const void *data
     // alpha (PNG, TGA) on read, which changes 8-bit colour irreversibly.
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    std::string name = path ? std::string(path) : hint_name(hint);
     if (path) {
-        r->in = ImageInput::open(name, &config);
-    } else {
-        r->proxy.reset(new Filesystem::IOMemReader(data, size));
-        r->in = ImageInput::open(name, &config, r->proxy.get());
+        r->in = ImageInput::open(path, &config);
+        if (r->in) return SAMPLE_OK;
+        std::string msg = OIIO::geterror();
+        FILE *f = std::fopen(path, "rb");
+        if (!f) return io_fail(err, SAMPLE_E_IO, "cannot open '%s': %s", path, std::strerror(errno));
+        std::fclose(f);
+        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image '%s': %s", path, msg.c_str());
     }
-    if (r->in) return SAMPLE_OK;
-    std::string msg = OIIO::geterror();
-    if (!path) {
-        // Distinguish "this format's reader cannot read memory" from bad bytes.
-        auto probe = ImageInput::create(name);
-        if (probe && !probe->supports("ioproxy")) {
-            return io_fail(err, SAMPLE_E_UNSUPPORTED, "the %s reader cannot read from memory",
-                           probe->format_name());
-        }
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image from memory (%s): %s", name.c_str(),
-                       msg.c_str());
+    r->proxy.reset(new Filesystem::IOMemReader(data, size));
+    bool unsupported = false;
+    if (hint && *hint) {
+        // The hint names the reader: "png", ".png" or "name.png".
+        std::string h(hint);
+        size_t dot = h.rfind('.');
+        std::string ext = dot == std::string::npos ? h : h.substr(dot + 1);
+        r->in = open_memory(ext, r->proxy.get(), config, &unsupported);
+        if (r->in) return SAMPLE_OK;
+        if (unsupported)
+            return io_fail(err, SAMPLE_E_UNSUPPORTED, "the reader for '%s' cannot read from memory", hint);
+        return io_fail(err, SAMPLE_E_CORRUPT, "not a readable '%s' image (%zu bytes in memory)", hint, size);
     }
-    FILE *f = std::fopen(path, "rb");
-    if (!f) return io_fail(err, SAMPLE_E_IO, "cannot open '%s': %s", path, std::strerror(errno));
-    std::fclose(f);
-    return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image '%s': %s", path, msg.c_str());
+    // No hint: every reader that can read memory, in OIIO's order.
+    std::string formats;
+    OIIO::getattribute("input_format_list", formats);
+    for (const std::string &f : Strutil::splits(formats, ",")) {
+        r->in = open_memory(f, r->proxy.get(), config, &unsupported);
+        if (r->in) return SAMPLE_OK;
+    }
+    return io_fail(err, SAMPLE_E_CORRUPT, "no image reader recognises these %zu bytes", size);
 }
 
 extern "C" sample_status io_reader_open(const char *path, const void *data, size_t size,

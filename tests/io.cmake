@@ -1,0 +1,28 @@
+# libsample_io tests (doc/io-and-colour.md, "Tests"). Each program gets the
+# testimages folder and a scratch folder of its own in the build tree.
+if(TARGET sample_io)
+  find_program(SAMPLE_MAKETX maketx)
+  find_program(SAMPLE_OIIOTOOL oiiotool)
+  find_program(SAMPLE_EXRHEADER exrheader)
+  foreach(name io_read io_colour io_mip io_bad)
+    add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${name}.c)
+    target_link_libraries(${name} PRIVATE sample_io sample m)
+    target_include_directories(${name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/libsample/io/src)
+    target_compile_options(${name} PRIVATE ${SAMPLE_WARNINGS})
+    set(scratch ${CMAKE_CURRENT_BINARY_DIR}/${name}_scratch)
+    add_test(NAME ${name} COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec \"$0\" \"$@\""
+      $<TARGET_FILE:${name}> ${PROJECT_SOURCE_DIR}/testimages ${scratch}
+      "${SAMPLE_MAKETX}" "${SAMPLE_OIIOTOOL}")
+    # The shipped config, whatever $OCIO the developer has set.
+    set_tests_properties(${name} PROPERTIES TIMEOUT 300 ENVIRONMENT "OCIO=")
+  endforeach()
+  if(TARGET texsample)
+    add_test(NAME io_cli COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/io_cli.sh $<TARGET_FILE:texsample>
+      ${PROJECT_SOURCE_DIR}/testimages ${CMAKE_CURRENT_BINARY_DIR}/io_cli_scratch
+      "${SAMPLE_OIIOTOOL}" "${SAMPLE_EXRHEADER}")
+    set_tests_properties(io_cli PROPERTIES TIMEOUT 300 ENVIRONMENT "OCIO=")
+  endif()
+  if(COMMAND sample_add_fuzzer)
+    sample_add_fuzzer(fuzz_io fuzz_io.c corpus_io sample_io sample)
+  endif()
+endif()
