@@ -15,7 +15,9 @@
 #define SAMPLE_INTERNAL_H
 
 #include "sample/sample.h"
+#include "simd.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -50,47 +52,60 @@ struct sample_texture {
 /* The exact sRGB EOTF for each 8-bit code (color.c). */
 extern const float sample_srgb_table[256];
 
-/* Decode texel (i, j) (both in range) of a level to linear RGBA with the
- * OpenGL channel expansion (missing G, B → 0, missing A → 1). */
-static inline void tex_decode(const sample_texture *tex, const struct sample_level *lv,
-                              int i, int j, float out[4])
+/* Decode one texel at p to linear RGBA with the OpenGL channel expansion
+ * (missing G, B → 0, missing A → 1). With `format` and `nc` constants (the
+ * fast path instantiates it per format and channel count) the switches
+ * vanish; every reader, fast or general, decodes through this one function.
+ * Reads exactly nc channels: shorter texels are copied into a padded buffer
+ * first, so the last texel of a level is never over-read. */
+static inline v4f tex_decode_v4(sample_format format, int nc, const unsigned char *p)
 {
-    const unsigned char *p = lv->data + (size_t)j * lv->stride + (size_t)i * tex->texel_bytes;
-    float v[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    int c, nc = tex->channels;
-    switch (tex->format) {
-    case SAMPLE_FORMAT_F32:
+    switch (format) {
+    case SAMPLE_FORMAT_F32: {
         /* Constant-size copies inline to plain loads; a variable-length copy
-         * (which GCC also makes of a per-channel loop) is a libc call per
-         * texel. */
+         * (which GCC also makes of a per-channel loop) is a libc call. */
+        float v[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         switch (nc) {
         case 4: memcpy(v, p, 16); break;
         case 3: memcpy(v, p, 12); break;
         case 2: memcpy(v, p, 8); break;
         default: memcpy(v, p, 4); break;
         }
-        break;
-    case SAMPLE_FORMAT_F16:
-        for (c = 0; c < nc; ++c) {
-            uint16_t h;
-            memcpy(&h, p + 2 * c, 2);
-            v[c] = sample_half_to_float(h);
+        return v4_load(v);
+    }
+    case SAMPLE_FORMAT_F16: {
+        /* Padding halves: 0, 0, 0, 1.0 (0x3c00). */
+        uint16_t h[4] = {0, 0, 0, 0x3c00};
+        switch (nc) {
+        case 4: return v4_from_f16x4(p);
+        case 3: memcpy(h, p, 6); break;
+        case 2: memcpy(h, p, 4); break;
+        default: memcpy(h, p, 2); break;
         }
-        break;
-    case SAMPLE_FORMAT_UNORM8:
+        return v4_from_f16x4((const unsigned char *)h);
+    }
+    case SAMPLE_FORMAT_UNORM8: {
         /* c / 255 correctly rounded (GL 4.6 eq. 2.1); a multiply by the
          * rounded reciprocal is off by an ulp for some codes. */
-        for (c = 0; c < nc; ++c) v[c] = (float)p[c] / 255.0f;
-        break;
+        unsigned char b[4] = {0, 0, 0, 255};
+        memcpy(b, p, (size_t)(nc < 4 ? nc : 4));
+        return v4_div(v4_from_u8x4(b), v4_set1(255.0f));
+    }
     case SAMPLE_FORMAT_SRGB8:
         /* Alpha of an sRGB format is linear (GL 4.6 §8.24). */
-        for (c = 0; c < nc; ++c)
-            v[c] = (c < 3) ? sample_srgb_table[p[c]] : (float)p[c] / 255.0f;
-        break;
+        return v4_set(sample_srgb_table[p[0]], nc > 1 ? sample_srgb_table[p[1]] : 0.0f,
+                      nc > 2 ? sample_srgb_table[p[2]] : 0.0f, nc > 3 ? (float)p[3] / 255.0f : 1.0f);
     default:
-        break;
+        return v4_set(0.0f, 0.0f, 0.0f, 1.0f);
     }
-    out[0] = v[0]; out[1] = v[1]; out[2] = v[2]; out[3] = v[3];
+}
+
+/* Decode texel (i, j) (both in range) of a level. */
+static inline void tex_decode(const sample_texture *tex, const struct sample_level *lv,
+                              int i, int j, float out[4])
+{
+    const unsigned char *p = lv->data + (size_t)j * lv->stride + (size_t)i * tex->texel_bytes;
+    v4_store(out, tex_decode_v4(tex->format, tex->channels, p));
 }
 
 /* Encode linear RGBA (first `channels` values) into one texel of the
@@ -130,8 +145,15 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
                              float out[4])
 {
     const struct sample_level *L = &c->tex->level[lv];
-    int x = wrap_index(c->smp->wrap_s, i, L->w, linear);
-    int y = wrap_index(c->smp->wrap_t, j, L->h, linear);
+    int x, y;
+    /* Every wrap mode maps an in-range index to itself (wrap_index's own
+     * first test); checking here saves two calls on most reads. */
+    if (i >= 0.0 && i < (double)L->w && j >= 0.0 && j < (double)L->h) {
+        tex_decode(c->tex, L, (int)i, (int)j, out);
+        return;
+    }
+    x = wrap_index(c->smp->wrap_s, i, L->w, linear);
+    y = wrap_index(c->smp->wrap_t, j, L->h, linear);
     if (x < 0 || y < 0) {
         out[0] = c->border[0]; out[1] = c->border[1];
         out[2] = c->border[2]; out[3] = c->border[3];
@@ -147,6 +169,49 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
  * number of texels read. */
 uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
                      float out[4], float dds[4], float ddt[4]);
+
+/* The bilinear combination of the 2 × 2 texels T[0] = (i0, j0), T[1] =
+ * (i0+1, j0), T[2] = (i0, j0+1), T[3] = (i0+1, j0+1) with fractions α, β
+ * (GL 4.6 eq. 8.13), and its derivatives d/du, d/dv (may be NULL). The one
+ * copy of this arithmetic: the general and the fast path both call it, so
+ * they round identically. */
+static inline void recon_bilerp(const v4f T[4], float al, float be, float out[4], float ddu[4],
+                                float ddv[4])
+{
+    v4f a1 = v4_set1(1.0f - al), b1 = v4_set1(1.0f - be), a = v4_set1(al), b = v4_set1(be);
+    /* (1−α)(1−β)·T00 + α(1−β)·T10 + (1−α)β·T01 + αβ·T11, left to right. */
+    v4f r = v4_add(v4_add(v4_add(v4_mul(v4_mul(a1, b1), T[0]), v4_mul(v4_mul(a, b1), T[1])),
+                          v4_mul(v4_mul(a1, b), T[2])),
+                   v4_mul(v4_mul(a, b), T[3]));
+    v4_store(out, r);
+    if (ddu) v4_store(ddu, v4_add(v4_mul(b1, v4_sub(T[1], T[0])), v4_mul(b, v4_sub(T[3], T[2]))));
+    if (ddv) v4_store(ddv, v4_add(v4_mul(a1, v4_sub(T[2], T[0])), v4_mul(a, v4_sub(T[3], T[1]))));
+}
+
+/* a ← (1 − f)·a + f·b: the blend of two mip levels (GL 4.6 eq. 8.18). */
+static inline void recon_blend(float a[4], const float b[4], float f)
+{
+    v4_store(a, v4_add(v4_mul(v4_set1(1.0f - f), v4_load(a)), v4_mul(v4_set1(f), v4_load(b))));
+}
+
+/* The texel coordinate u = s'·n of a query on an axis of n texels, after the
+ * wraps that transform s (wrap_coord). s·n may overflow to ±inf for finite s
+ * near FLT_MAX; it is kept finite so that the fractional weights stay
+ * defined (α = u − ⌊u⌋ would be inf − inf). */
+static inline float recon_texel_coord(sample_wrap mode, float s, int n)
+{
+    float u = (mode >= SAMPLE_WRAP_CLAMP ? wrap_coord(mode, s, n) : s) * (float)n;
+    return u > FLT_MAX ? FLT_MAX : (u < -FLT_MAX ? -FLT_MAX : u);
+}
+
+/* The Mitchell–Netravali combination of a 4 × 4 block T[y][x] (taps −1 … 2
+ * around (i0, j0)) with weights wx, wy and their derivatives, accumulated
+ * in double (16 float products would lose the exact reproduction of
+ * constants and ramps); `clamp` is SAMPLE_OPT_CUBIC_CLAMP. Shared by the
+ * general and the fast path. */
+void recon_cubic_combine(const v4f T[16], const double wx[4], const double wy[4],
+                         const double dwx[4], const double dwy[4], int clamp, float out[4],
+                         float ddu[4], float ddv[4]);
 
 /* Cubic kernel weights for fractional offset f ∈ [0, 1): taps at −1, 0, 1, 2,
  * and their derivatives d/df (dw may be NULL). */

@@ -72,39 +72,29 @@ static uint32_t recon_linear(const sample_ctx *c, int lv, float u, float v, floa
      * float, as the specification's reference implementations do. */
     float a = u - 0.5f, b = v - 0.5f;
     float i0 = floorf(a), j0 = floorf(b);
-    float al = a - i0, be = b - j0;
-    float t00[4], t10[4], t01[4], t11[4];
+    float T[4][4];
+    v4f V[4];
     int k;
-    ctx_texel(c, lv, i0, j0, 1, t00);
-    ctx_texel(c, lv, (double)i0 + 1.0, j0, 1, t10);
-    ctx_texel(c, lv, i0, (double)j0 + 1.0, 1, t01);
-    ctx_texel(c, lv, (double)i0 + 1.0, (double)j0 + 1.0, 1, t11);
-    for (k = 0; k < 4; ++k) {
-        out[k] = (1.0f - al) * (1.0f - be) * t00[k] + al * (1.0f - be) * t10[k] +
-                 (1.0f - al) * be * t01[k] + al * be * t11[k];
-        if (ddu) ddu[k] = (1.0f - be) * (t10[k] - t00[k]) + be * (t11[k] - t01[k]);
-        if (ddv) ddv[k] = (1.0f - al) * (t01[k] - t00[k]) + al * (t11[k] - t10[k]);
-    }
+    ctx_texel(c, lv, i0, j0, 1, T[0]);
+    ctx_texel(c, lv, (double)i0 + 1.0, j0, 1, T[1]);
+    ctx_texel(c, lv, i0, (double)j0 + 1.0, 1, T[2]);
+    ctx_texel(c, lv, (double)i0 + 1.0, (double)j0 + 1.0, 1, T[3]);
+    for (k = 0; k < 4; ++k) V[k] = v4_load(T[k]);
+    recon_bilerp(V, a - i0, b - j0, out, ddu, ddv);
     return 4;
 }
 
-static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float out[4],
-                            float ddu[4], float ddv[4])
+void recon_cubic_combine(const v4f T[16], const double wx[4], const double wy[4],
+                         const double dwx[4], const double dwy[4], int clamp, float out[4],
+                         float ddu[4], float ddv[4])
 {
-    float a = u - 0.5f, b = v - 0.5f;
-    float i0 = floorf(a), j0 = floorf(b);
-    double wx[4], wy[4], dwx[4], dwy[4];
     float lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
-    /* Accumulated in double: 16 products in float would lose the exact
-     * reproduction of constants and ramps that the kernels guarantee. */
     double acc[4] = {0, 0, 0, 0}, au[4] = {0, 0, 0, 0}, av[4] = {0, 0, 0, 0};
     int x, y, k;
-    cubic_weights(c->smp->cubic, a - i0, wx, dwx);
-    cubic_weights(c->smp->cubic, b - j0, wy, dwy);
     for (y = 0; y < 4; ++y) {
         for (x = 0; x < 4; ++x) {
             float tx[4];
-            ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, tx);
+            v4_store(tx, T[4 * y + x]);
             for (k = 0; k < 4; ++k) {
                 acc[k] += wx[x] * wy[y] * tx[k];
                 au[k] += dwx[x] * wy[y] * tx[k];
@@ -122,28 +112,42 @@ static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float
         if (ddv) ddv[k] = (float)av[k];
         /* Optional overshoot clamp to the central 2×2 range; where it
          * clamps, the result is locally constant. */
-        if ((c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) && (out[k] < lo[k] || out[k] > hi[k])) {
+        if (clamp && (out[k] < lo[k] || out[k] > hi[k])) {
             out[k] = out[k] < lo[k] ? lo[k] : hi[k];
             if (ddu) ddu[k] = 0.0f;
             if (ddv) ddv[k] = 0.0f;
         }
     }
-    return 16;
 }
 
-/* s·n may overflow to ±inf for finite s near FLT_MAX; keep it finite so that
- * the fractional weights stay defined (α = u − ⌊u⌋ would be inf − inf). */
-static float finite_texel_coord(float u)
+static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float out[4],
+                            float ddu[4], float ddv[4])
 {
-    return u > FLT_MAX ? FLT_MAX : (u < -FLT_MAX ? -FLT_MAX : u);
+    float a = u - 0.5f, b = v - 0.5f;
+    float i0 = floorf(a), j0 = floorf(b);
+    double wx[4], wy[4], dwx[4], dwy[4];
+    v4f T[16];
+    int x, y;
+    cubic_weights(c->smp->cubic, a - i0, wx, dwx);
+    cubic_weights(c->smp->cubic, b - j0, wy, dwy);
+    for (y = 0; y < 4; ++y) {
+        for (x = 0; x < 4; ++x) {
+            float tx[4];
+            ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, tx);
+            T[4 * y + x] = v4_load(tx);
+        }
+    }
+    recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, out,
+                        ddu, ddv);
+    return 16;
 }
 
 uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
                      float out[4], float dds[4], float ddt[4])
 {
     const struct sample_level *L = &c->tex->level[lv];
-    float u = finite_texel_coord(wrap_coord(c->smp->wrap_s, s, L->w) * (float)L->w);
-    float v = finite_texel_coord(wrap_coord(c->smp->wrap_t, t, L->h) * (float)L->h);
+    float u = recon_texel_coord(c->smp->wrap_s, s, L->w);
+    float v = recon_texel_coord(c->smp->wrap_t, t, L->h);
     uint32_t n;
     int k;
     switch (kind) {

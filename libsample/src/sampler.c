@@ -50,12 +50,6 @@ sample_status sample_sampler_validate(const sample_sampler *s)
     return SAMPLE_OK;
 }
 
-static void blend(float a[4], const float b[4], float f)
-{
-    int k;
-    for (k = 0; k < 4; ++k) a[k] = (1.0f - f) * a[k] + f * b[k];
-}
-
 /* Reconstruct and blend the levels an OpenGL filter chose for λ. */
 static uint32_t gl_apply(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
                          float out[4], float dds[4], float ddt[4], sample_stats *st)
@@ -64,9 +58,9 @@ static uint32_t gl_apply(const sample_ctx *c, const sample_query *q, float lam, 
     if (ch->level1 >= 0) {
         float o1[4], ds1[4], dt1[4];
         n += recon_level(c, ch->level1, ch->kind, q->s, q->t, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
-        blend(out, o1, ch->frac);
-        if (dds) blend(dds, ds1, ch->frac);
-        if (ddt) blend(ddt, dt1, ch->frac);
+        recon_blend(out, o1, ch->frac);
+        if (dds) recon_blend(dds, ds1, ch->frac);
+        if (ddt) recon_blend(ddt, dt1, ch->frac);
     }
     if (st) {
         st->level0 = (int16_t)ch->level0;

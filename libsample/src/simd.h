@@ -1,0 +1,106 @@
+/*
+ * A thin 4-float vector layer (stb style): one RGBA texel or result per
+ * vector. SSE2 where the compiler targets it (every x86-64), plain structs
+ * otherwise or when SAMPLE_NO_SIMD is defined.
+ *
+ * Only IEEE-exact lane-wise operations are offered (add, sub, mul, div,
+ * exact int → float): with fused multiply-add off (-ffp-contract=off, and no
+ * FMA intrinsics here) each lane then rounds exactly as the scalar C
+ * expression would, so the vector and scalar builds give the same bits.
+ */
+#ifndef SAMPLE_SIMD_H
+#define SAMPLE_SIMD_H
+
+#include "sample/sample.h"
+
+#include <stdint.h>
+#include <string.h>
+
+#if defined(__SSE2__) && !defined(SAMPLE_NO_SIMD)
+#define SAMPLE_SIMD_SSE2 1
+#include <emmintrin.h>
+
+typedef __m128 v4f;
+static inline v4f v4_load(const float *p) { return _mm_loadu_ps(p); }
+static inline void v4_store(float *p, v4f a) { _mm_storeu_ps(p, a); }
+static inline v4f v4_set1(float x) { return _mm_set1_ps(x); }
+static inline v4f v4_set(float x, float y, float z, float w) { return _mm_setr_ps(x, y, z, w); }
+static inline v4f v4_add(v4f a, v4f b) { return _mm_add_ps(a, b); }
+static inline v4f v4_sub(v4f a, v4f b) { return _mm_sub_ps(a, b); }
+static inline v4f v4_mul(v4f a, v4f b) { return _mm_mul_ps(a, b); }
+static inline v4f v4_div(v4f a, v4f b) { return _mm_div_ps(a, b); }
+/* Four 8-bit codes (4 bytes at p) as floats 0 … 255, exactly. */
+static inline v4f v4_from_u8x4(const unsigned char *p)
+{
+    uint32_t w;
+    __m128i z = _mm_setzero_si128(), x;
+    memcpy(&w, p, 4);
+    x = _mm_cvtsi32_si128((int)w);
+    x = _mm_unpacklo_epi16(_mm_unpacklo_epi8(x, z), z);
+    return _mm_cvtepi32_ps(x);
+}
+/* Four IEEE halves (8 bytes at p) widened exactly: the same bits as
+ * sample_half_to_float on each lane. Normal, inf and NaN halves move their
+ * exponent and mantissa into place and rebias the exponent (+112, or +224
+ * for the all-ones exponent); zero and subnormal halves are man × 2^−24,
+ * exact in float. */
+static inline v4f v4_from_f16x4(const unsigned char *p)
+{
+    __m128i z = _mm_setzero_si128(), h, em, sign, bits, isinf, issub;
+    __m128 sub;
+    h = _mm_unpacklo_epi16(_mm_loadl_epi64((const __m128i *)(const void *)p), z);
+    sign = _mm_slli_epi32(_mm_and_si128(h, _mm_set1_epi32(0x8000)), 16);
+    em = _mm_and_si128(h, _mm_set1_epi32(0x7fff));
+    isinf = _mm_cmpgt_epi32(em, _mm_set1_epi32(0x7bff));
+    issub = _mm_cmplt_epi32(em, _mm_set1_epi32(0x0400));
+    bits = _mm_add_epi32(_mm_slli_epi32(em, 13),
+                         _mm_add_epi32(_mm_set1_epi32(112 << 23),
+                                       _mm_and_si128(isinf, _mm_set1_epi32(112 << 23))));
+    sub = _mm_mul_ps(_mm_cvtepi32_ps(em), _mm_set1_ps(5.9604644775390625e-8f));
+    bits = _mm_or_si128(_mm_andnot_si128(issub, bits), _mm_and_si128(issub, _mm_castps_si128(sub)));
+    return _mm_castsi128_ps(_mm_or_si128(bits, sign));
+}
+#else
+typedef struct v4f {
+    float v[4];
+} v4f;
+static inline v4f v4_load(const float *p)
+{
+    v4f r;
+    memcpy(r.v, p, sizeof r.v);
+    return r;
+}
+static inline void v4_store(float *p, v4f a) { memcpy(p, a.v, sizeof a.v); }
+static inline v4f v4_set(float x, float y, float z, float w)
+{
+    v4f r;
+    r.v[0] = x; r.v[1] = y; r.v[2] = z; r.v[3] = w;
+    return r;
+}
+static inline v4f v4_set1(float x) { return v4_set(x, x, x, x); }
+#define SAMPLE_V4_LANEWISE(name, op)                                           \
+    static inline v4f name(v4f a, v4f b)                                       \
+    {                                                                          \
+        int k;                                                                 \
+        for (k = 0; k < 4; ++k) a.v[k] = a.v[k] op b.v[k];                     \
+        return a;                                                              \
+    }
+SAMPLE_V4_LANEWISE(v4_add, +)
+SAMPLE_V4_LANEWISE(v4_sub, -)
+SAMPLE_V4_LANEWISE(v4_mul, *)
+SAMPLE_V4_LANEWISE(v4_div, /)
+#undef SAMPLE_V4_LANEWISE
+static inline v4f v4_from_u8x4(const unsigned char *p)
+{
+    return v4_set((float)p[0], (float)p[1], (float)p[2], (float)p[3]);
+}
+static inline v4f v4_from_f16x4(const unsigned char *p)
+{
+    uint16_t h[4];
+    memcpy(h, p, sizeof h);
+    return v4_set(sample_half_to_float(h[0]), sample_half_to_float(h[1]),
+                  sample_half_to_float(h[2]), sample_half_to_float(h[3]));
+}
+#endif
+
+#endif /* SAMPLE_SIMD_H */
