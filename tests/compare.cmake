@@ -20,5 +20,8 @@ if(TARGET texsample)
 
   add_test(NAME compare_html COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/compare_html.sh
            $<TARGET_FILE:texsample> ${CMAKE_CURRENT_BINARY_DIR}/compare_html.out)
-  set_tests_properties(compare_html PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+  # OpenImageIO 2.4 deletes its TextureSystem through a pointer of another
+  # size (inside the library); ASan would stop there under SAMPLE_SANITIZE.
+  set_tests_properties(compare_html PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300
+    ENVIRONMENT "ASAN_OPTIONS=new_delete_type_mismatch=0")
 endif()
