@@ -1,14 +1,268 @@
-/* texsample freq: not implemented yet. */
+/* texsample freq: frequency tests of every filter (DESIGN §9,
+ * doc/frequency-tests.md). Options, the filter list and the run; the
+ * measurement is in the texsample_freq library. */
+#define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 #include "commands.h"
+#include "freq_cli.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define MAX_LIST 16
+#define MAX_BACKENDS 16
+
+static const char help[] =
+    "usage: texsample freq [options]\n"
+    "\n"
+    "Measure each filter as a linear system: sinusoidal gratings of f cycles/texel,\n"
+    "sampled with m texels per pixel along the wave and m*r across it, at many\n"
+    "offsets; the least-squares amplitude at the screen frequency F = f*m (below\n"
+    "0.5 cycles/pixel: pass-band response) or at its alias (above: leakage).\n"
+    "Writes freq.csv (every curve), summary.csv, summary.md, plot_r*_t*.svg and\n"
+    ".png, zone_*.png and index.html into the output folder.\n"
+    "\n"
+    "Options:\n"
+    "  --out DIR          output folder (default freq-out; created if missing)\n"
+    "  --quick            reduced sweep for the test suite: m 1.5,5.7,16; theta 0,45;\n"
+    "                     r 1,4; 256-texel textures; F step 1/16; 16x2 pixels x 16\n"
+    "                     offsets (the full sweep is the default)\n"
+    "  --m LIST           minifications, texels/pixel (default 1,1.5,2,3,5.7,16)\n"
+    "  --theta LIST       orientations in degrees (default 0,22.5,45)\n"
+    "  --r LIST           anisotropy ratios >= 1 (default 1,2,4,8,16)\n"
+    "  --filters LIST     nearest,bilinear,nearest_mipmap_nearest,trilinear,\n"
+    "                     cubic_mipmap_linear,aniso16,blinn_newell,ewa,\n"
+    "                     oiio_trilinear,oiio_aniso (default: all available)\n"
+    "  --no-oiio          leave out OpenImageIO's TextureSystem\n"
+    "  --size N           texture side, a power of two 16..8192 (default 1024)\n"
+    "  --step F           screen-frequency grid step, cycles/pixel (default 1/64)\n"
+    "  --fmax F           top of the grid, cycles/pixel (default 2)\n"
+    "  --width N, --rows N, --phases N\n"
+    "                     pixels per row, rows, offsets (default 32, 2, 16)\n"
+    "  --no-png           SVG plots only (no PNG, no zone plates)\n"
+    "\n"
+    "Exit codes: 0 success, 1 runtime error, 2 usage error.\n";
+
+static int parse_list(const char *s, double *out, int *n, double lo, double hi)
+{
+    char buf[512], *tok, *save = NULL;
+    if (!s || strlen(s) >= sizeof buf) return 0;
+    strcpy(buf, s);
+    *n = 0;
+    for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        float v;
+        if (*n >= MAX_LIST || !cli_parse_float(tok, &v) || v < lo || v > hi) return 0;
+        out[(*n)++] = v;
+    }
+    return *n > 0;
+}
+
+/* The backend called `name` among the engine's and OpenImageIO's. */
+static const fq_backend *find_backend(const char *name, const fq_backend *oiio, int noiio)
+{
+    int k;
+    for (k = 0; k < fq_libsample_backend_count; ++k)
+        if (strcmp(fq_libsample_backends[k].name, name) == 0) return &fq_libsample_backends[k];
+    for (k = 0; k < noiio; ++k)
+        if (strcmp(oiio[k].name, name) == 0) return &oiio[k];
+    return NULL;
+}
+
+static void progress(size_t done, size_t total) { cli_progress("freq", done, total); }
+
+/* Zone-plate pictures, one per backend (NULL where a backend failed: the
+ * page leaves it out and the run goes on). */
+static void render_zones(const fq_plan *plan, float **zone)
+{
+    sample_texture *tex;
+    float *texels;
+    sample_error serr;
+    int b;
+    if (fq_zone_texture(&tex, &texels, &serr) != SAMPLE_OK) {
+        fprintf(stderr, "texsample freq: zone plate skipped: %s\n", serr.message);
+        return;
+    }
+    for (b = 0; b < plan->nbackends; ++b) {
+        char err[256] = "";
+        void *ctx = plan->backends[b]->prepare(plan->backends[b], tex, texels, FQ_ZONE_N, err,
+                                               sizeof err);
+        if (ctx) {
+            zone[b] = fq_zone_render(plan->backends[b], ctx, err, sizeof err);
+            plan->backends[b]->release(ctx);
+        }
+        if (!zone[b])
+            fprintf(stderr, "texsample freq: zone plate of %s skipped: %s\n",
+                    plan->backends[b]->name, err);
+    }
+    sample_texture_destroy(tex);
+    free(texels);
+}
 
 int cmd_freq(int argc, char **argv)
 {
-    if (argc > 1 && cli_is_help(argv[1])) {
-        printf("usage: texsample freq ...\n\nNot implemented yet.\n");
-        return EXIT_OK;
+    static const double def_m[] = {1, 1.5, 2, 3, 5.7, 16}, def_t[] = {0, 22.5, 45},
+                        def_r[] = {1, 2, 4, 8, 16};
+    static const double quick_m[] = {1.5, 5.7, 16}, quick_t[] = {0, 45}, quick_r[] = {1, 4};
+    double m[MAX_LIST], th[MAX_LIST], r[MAX_LIST];
+    int nm = 0, nt = 0, nr = 0, quick = 0, no_oiio = 0, png = 1, i, k, rc = EXIT_OK;
+    int size = 0, width = 0, rows = 0, phases = 0, noiio;
+    float step = 0.0f, fmax = 2.0f;
+    const char *out_dir = "freq-out", *filters = NULL;
+    const fq_backend *list[MAX_BACKENDS];
+    fq_backend oiio[FQ_OIIO_MAX];
+    fq_oiio_cfg oiio_cfg[FQ_OIIO_MAX];
+    char tmp[1024] = "", err[512] = "", command[2048];
+    fq_plan plan;
+    fq_sweep sweep = {0};
+    float *zone[MAX_BACKENDS] = {0};
+
+    for (i = 1; i < argc; ++i) {
+        const char *v = NULL;
+        if (cli_is_help(argv[i])) {
+            fputs(help, stdout);
+            return EXIT_OK;
+        } else if (cli_opt(argc, argv, &i, "--quick", NULL)) {
+            quick = 1;
+        } else if (cli_opt(argc, argv, &i, "--no-oiio", NULL)) {
+            no_oiio = 1;
+        } else if (cli_opt(argc, argv, &i, "--no-png", NULL)) {
+            png = 0;
+        } else if (cli_opt(argc, argv, &i, "--out", &v)) {
+            if (!v || !*v) return cli_usage_error("freq", "--out needs a folder");
+            out_dir = v;
+        } else if (cli_opt(argc, argv, &i, "--filters", &v)) {
+            if (!v || !*v) return cli_usage_error("freq", "--filters needs a list");
+            filters = v;
+        } else if (cli_opt(argc, argv, &i, "--m", &v)) {
+            if (!parse_list(v, m, &nm, 1.0 / 64, 1024))
+                return cli_usage_error("freq", "--m: up to %d numbers in [1/64, 1024]", MAX_LIST);
+        } else if (cli_opt(argc, argv, &i, "--theta", &v)) {
+            if (!parse_list(v, th, &nt, -360, 360))
+                return cli_usage_error("freq", "--theta: up to %d angles in degrees", MAX_LIST);
+        } else if (cli_opt(argc, argv, &i, "--r", &v)) {
+            if (!parse_list(v, r, &nr, 1, 1024))
+                return cli_usage_error("freq", "--r: up to %d numbers in [1, 1024]", MAX_LIST);
+        } else if (cli_opt(argc, argv, &i, "--size", &v)) {
+            if (!cli_parse_int(v, &size) || size < 16 || size > 8192 || (size & (size - 1)))
+                return cli_usage_error("freq", "--size: a power of two from 16 to 8192");
+        } else if (cli_opt(argc, argv, &i, "--step", &v)) {
+            if (!cli_parse_float(v, &step) || !(step > 0.0f) || step > 1.0f)
+                return cli_usage_error("freq", "--step: a number in (0, 1]");
+        } else if (cli_opt(argc, argv, &i, "--fmax", &v)) {
+            if (!cli_parse_float(v, &fmax) || !(fmax > 0.0f) || fmax > 8.0f)
+                return cli_usage_error("freq", "--fmax: a number in (0, 8]");
+        } else if (cli_opt(argc, argv, &i, "--width", &v)) {
+            if (!cli_parse_int(v, &width) || width < 1 || width > 4096)
+                return cli_usage_error("freq", "--width: 1 to 4096");
+        } else if (cli_opt(argc, argv, &i, "--rows", &v)) {
+            if (!cli_parse_int(v, &rows) || rows < 1 || rows > 256)
+                return cli_usage_error("freq", "--rows: 1 to 256");
+        } else if (cli_opt(argc, argv, &i, "--phases", &v)) {
+            if (!cli_parse_int(v, &phases) || phases < 2 || phases > 4096)
+                return cli_usage_error("freq", "--phases: 2 to 4096");
+        } else {
+            return cli_usage_error("freq", "unknown option '%s'", argv[i]);
+        }
     }
-    return cli_runtime_error("freq", "not implemented yet");
+
+    /* The quick mode only changes defaults; explicit options still win. */
+#define DEFAULT_LIST(dst, n, q, d)                                                             \
+    if (!n) {                                                                                  \
+        const double *src = quick ? q : d;                                                     \
+        n = quick ? (int)(sizeof q / sizeof q[0]) : (int)(sizeof d / sizeof d[0]);             \
+        memcpy(dst, src, (size_t)n * sizeof *src);                                             \
+    }
+    DEFAULT_LIST(m, nm, quick_m, def_m)
+    DEFAULT_LIST(th, nt, quick_t, def_t)
+    DEFAULT_LIST(r, nr, quick_r, def_r)
+#undef DEFAULT_LIST
+    if (!size) size = quick ? 256 : 1024;
+    if (step == 0.0f) step = quick ? 1.0f / 16 : 1.0f / 64;
+    if (!width) width = quick ? 16 : 32;
+    if (!rows) rows = 2;
+    if (!phases) phases = 16;
+
+    /* OpenImageIO writes a texture file per grating into a private folder. */
+    noiio = 0;
+    if (!no_oiio) {
+        const char *base = getenv("TMPDIR");
+        snprintf(tmp, sizeof tmp, "%s/texsample-freq-XXXXXX", base && *base ? base : "/tmp");
+        noiio = fq_oiio_backends(oiio, oiio_cfg, tmp);
+        if (noiio && !mkdtemp(tmp))
+            return cli_runtime_error("freq", "cannot create a temporary folder %s", tmp);
+        for (k = 0; k < noiio; ++k) snprintf(oiio_cfg[k].dir, sizeof oiio_cfg[k].dir, "%s", tmp);
+    }
+    memset(&plan, 0, sizeof plan);
+    if (filters) {
+        char buf[512], *tok, *save = NULL;
+        if (strlen(filters) >= sizeof buf) return cli_usage_error("freq", "--filters: too long");
+        strcpy(buf, filters);
+        for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+            const fq_backend *b = find_backend(tok, oiio, noiio);
+            if (!b) {
+                rc = cli_usage_error("freq", "--filters: unknown or unavailable filter '%s'%s",
+                                     tok, strncmp(tok, "oiio", 4) == 0
+                                              ? " (built without OpenImageIO, or --no-oiio)"
+                                              : "");
+                goto done;
+            }
+            if (plan.nbackends >= MAX_BACKENDS) {
+                rc = cli_usage_error("freq", "--filters: at most %d", MAX_BACKENDS);
+                goto done;
+            }
+            list[plan.nbackends++] = b;
+        }
+    } else {
+        for (k = 0; k < fq_libsample_backend_count; ++k) list[plan.nbackends++] = &fq_libsample_backends[k];
+        for (k = 0; k < noiio; ++k) list[plan.nbackends++] = &oiio[k];
+    }
+    plan.m = m;
+    plan.nm = nm;
+    plan.theta_deg = th;
+    plan.ntheta = nt;
+    plan.r = r;
+    plan.nr = nr;
+    plan.n = size;
+    plan.f_step = step;
+    plan.f_max = fmax;
+    plan.width = width;
+    plan.rows = rows;
+    plan.phases = phases;
+    plan.backends = list;
+    plan.progress = progress;
+
+    if (fq_sweep_run(&plan, &sweep, err, sizeof err) != 0) {
+        rc = cli_runtime_error("freq", "%s", err);
+        goto done;
+    }
+    if (png) render_zones(&plan, zone);
+    {
+        size_t len = 0;
+        command[0] = '\0';
+        for (i = 0; i < argc; ++i) {
+            int w = snprintf(command + len, sizeof command - len, "%s%s", i ? " " : "texsample ",
+                             argv[i]);
+            if (w < 0 || (size_t)w >= sizeof command - len) break;
+            len += (size_t)w;
+        }
+    }
+    if (fq_write_outputs(out_dir, &plan, &sweep, zone, png, command, err, sizeof err) != 0) {
+        rc = cli_runtime_error("freq", "%s", err);
+        goto done;
+    }
+    {
+        fq_buf b = {0};
+        fq_report_summary_md(&plan, &sweep, &b);
+        if (!b.failed && b.data) fputs(b.data, stdout);
+        fq_buf_free(&b);
+    }
+    printf("wrote %s/index.html (%zu points)\n", out_dir, sweep.count);
+done:
+    for (k = 0; k < MAX_BACKENDS; ++k) free(zone[k]);
+    fq_sweep_free(&sweep);
+    if (noiio && tmp[0]) rmdir(tmp);
+    return rc;
 }

@@ -181,6 +181,9 @@ typedef struct fq_sweep {
  * Returns 0, or −1 with a message (the points so far are kept). */
 int fq_sweep_run(const fq_plan *plan, fq_sweep *out, char *err, size_t errlen);
 void fq_sweep_free(fq_sweep *s);
+/* The points of one curve, in increasing F: returns their count and sets
+ * *first. */
+size_t fq_curve(const fq_sweep *s, int backend, int im, int itheta, int ir, const fq_point **first);
 
 /* ---- Summary (summary.c) ------------------------------------------------- */
 
@@ -204,11 +207,26 @@ void fq_report_csv(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
 /* summary.csv and the Markdown table (per filter, then per filter and r). */
 void fq_report_summary_csv(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
 void fq_report_summary_md(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
-/* The HTML page; `plots` are the picture file names (relative), one per
- * (θ, r) in plan order, `zone` the zone-plate pictures (one per backend) or
- * NULL, `command` the command line that produced it. */
+/* The HTML page. `plots` holds two relative file names per (r, θ), r-major:
+ * the picture to show (PNG, or the SVG when there is no PNG) and the SVG to
+ * link; `zone` the zone-plate pictures (one per backend, NULL entries
+ * skipped) or NULL; `command` the command line that produced it. */
 void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *plots,
                     const char *const *zone, const char *command, fq_buf *out);
+
+/* ---- Zone plate (zone.c) -------------------------------------------------- */
+
+#define FQ_ZONE_N 512    /* texture side */
+#define FQ_ZONE_M 2.0    /* texels per pixel */
+#define FQ_ZONE_PIXELS 256
+
+/* The zone-plate texture (box pyramid, REPEAT) and its texels (caller
+ * frees both). */
+sample_status fq_zone_texture(sample_texture **out, float **texels, sample_error *err);
+/* Render the zone plate through backend b (prepared on that texture) at
+ * FQ_ZONE_M texels per pixel: FQ_ZONE_PIXELS² linear RGBA floats, grey
+ * (½ + ½·value), caller frees; NULL with a message on failure. */
+float *fq_zone_render(const fq_backend *b, void *ctx, char *err, size_t errlen);
 
 /* ---- Plots (svg.c, raster.c) --------------------------------------------- */
 
@@ -234,8 +252,17 @@ void fq_panel_origin(const fq_plan *plan, int k, double *x0, double *y0);
 /* Data → figure coordinates inside a panel's axes box. */
 double fq_plot_x(const fq_plan *plan, double F);
 double fq_plot_y(double h);
+/* Size of a panel's axes box. */
+int fq_plot_axes_w(void);
+int fq_plot_axes_h(void);
+/* Where backend k's legend entry starts (swatch left, text baseline). */
+void fq_legend_pos(const fq_plan *plan, int k, double *x, double *y);
 /* Colour of backend k as 0xRRGGBB. */
 unsigned fq_plot_color(int k);
+/* The ideal low-pass as the four corners of its step, and its value at F
+ * (½ at exactly Nyquist). */
+void fq_ideal_points(const fq_plan *plan, double F[4], double h[4]);
+double fq_ideal(double F);
 
 void fq_svg_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, fq_buf *out);
 /* The same figure rasterized: width × height linear RGBA floats (caller

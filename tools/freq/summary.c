@@ -4,30 +4,29 @@
 
 #include <math.h>
 
-/* Mean amplitude of one curve's points in a band; 0 points → NaN. */
+/* Mean amplitude of one curve's points in a band (NaN if none), and its
+ * cost summed over all of its points. */
 static double curve_mean(const fq_sweep *s, int b, int im, int it, int ir, int pass, int *count,
                          double *texels, double *ns, int *ncost)
 {
+    const fq_point *p;
+    size_t k, n = fq_curve(s, b, im, it, ir, &p);
     double sum = 0.0;
-    int n = 0;
-    size_t k;
-    for (k = 0; k < s->count; ++k) {
-        const fq_point *p = &s->pts[k];
-        double F = p->res.F;
-        if (p->backend != b || p->im != im || p->itheta != it || p->ir != ir) continue;
-        /* Cost over every point of the curve, band or not. */
+    int c = 0;
+    for (k = 0; k < n; ++k) {
+        double F = p[k].res.F;
         if (pass) {
-            *texels += p->res.texels;
-            *ns += p->res.ns;
+            *texels += p[k].res.texels;
+            *ns += p[k].res.ns;
             (*ncost)++;
         }
         if (pass ? (F > 0.0 && F < FQ_PASS_BELOW) : (F > FQ_STOP_ABOVE)) {
-            sum += p->res.amp;
-            n++;
+            sum += p[k].res.amp;
+            c++;
         }
     }
-    *count = n;
-    return n ? sum / n : NAN;
+    *count = c;
+    return c ? sum / c : NAN;
 }
 
 fq_stat fq_summarize(const fq_plan *plan, const fq_sweep *s, int backend, int im, int ir)

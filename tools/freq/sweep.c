@@ -187,3 +187,28 @@ void fq_sweep_free(fq_sweep *s)
     s->pts = NULL;
     s->count = s->cap = 0;
 }
+
+size_t fq_curve(const fq_sweep *s, int backend, int im, int itheta, int ir, const fq_point **first)
+{
+    /* Points are sorted by curve (by_curve), so a curve is one run: find
+     * its first point by bisection on the curve key. */
+    fq_point key;
+    size_t lo = 0, hi = s->count, n = 0;
+    key.backend = backend;
+    key.im = im;
+    key.itheta = itheta;
+    key.ir = ir;
+    key.res.F = -1.0;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (by_curve(&s->pts[mid], &key) < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    *first = s->pts + lo;
+    while (lo + n < s->count && s->pts[lo + n].backend == backend && s->pts[lo + n].im == im &&
+           s->pts[lo + n].itheta == itheta && s->pts[lo + n].ir == ir)
+        n++;
+    return n;
+}

@@ -1,0 +1,27 @@
+/* The parts of `texsample freq` that live in the executable (not in the
+ * texsample_freq library): OpenImageIO backend and file output. */
+#ifndef TEXSAMPLE_FREQ_CLI_H
+#define TEXSAMPLE_FREQ_CLI_H
+
+#include "freq.h"
+
+/* OpenImageIO's TextureSystem backends (trilinear, anisotropic ×16), whose
+ * temporary texture files go in `tmp`: fills out[] (with cfg[] as their
+ * caller-owned configuration) and returns how many (0 when texsample was
+ * built without the shim). */
+#define FQ_OIIO_MAX 2
+typedef struct fq_oiio_cfg {
+    int mode;
+    char dir[1024];
+} fq_oiio_cfg;
+int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], const char *tmp);
+
+/* Write every output of a finished sweep into `dir` (created if missing):
+ * freq.csv, summary.csv, summary.md, plot_r*_t*.svg (and .png when built
+ * with libsample_io and png is set), zone_*.png, index.html. `zone` holds
+ * one zone-plate picture per backend (may be NULL or hold NULLs). Returns
+ * 0, or −1 with a message in err. */
+int fq_write_outputs(const char *dir, const fq_plan *plan, const fq_sweep *s, float *const *zone,
+                     int png, const char *command, char *err, size_t errlen);
+
+#endif

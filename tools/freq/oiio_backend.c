@@ -1,0 +1,115 @@
+/* OpenImageIO's TextureSystem as a backend of the sweep (tools/oiio shim).
+ * Each grating goes through a mip-mapped file that oiio_ts_make_texture
+ * writes as maketx would (its own 2 × 2 box levels), opened in a private
+ * TextureSystem that is destroyed with the grating, so the cache never
+ * holds more than one texture. Built only when texsample has the shim. */
+#define _POSIX_C_SOURCE 200809L
+#include "freq_cli.h"
+
+#ifdef TEXSAMPLE_HAVE_OIIO
+#include "oiio_ts.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+typedef struct oiio_ctx {
+    oiio_ts *ts;
+    oiio_ts_tex *tex;
+    oiio_ts_opts opts;
+    char path[1100];
+} oiio_ctx;
+
+
+static void *oiio_prepare(const fq_backend *b, const sample_texture *tex, const float *texels,
+                          int n, char *err, size_t errlen)
+{
+    oiio_ctx *c = (oiio_ctx *)calloc(1, sizeof *c);
+    float *rgba = (float *)malloc((size_t)n * n * 4 * sizeof *rgba);
+    size_t k;
+    (void)tex;
+    if (!c || !rgba || !texels) {
+        free(c);
+        free(rgba);
+        snprintf(err, errlen, "OpenImageIO backend: out of memory");
+        return NULL;
+    }
+    for (k = 0; k < (size_t)n * n; ++k) {
+        rgba[4 * k] = rgba[4 * k + 1] = rgba[4 * k + 2] = texels[k];
+        rgba[4 * k + 3] = 1.0f;
+    }
+    snprintf(c->path, sizeof c->path, "%s/grating_%s.exr", ((const fq_oiio_cfg *)b->config)->dir,
+             b->name);
+    if (oiio_ts_make_texture(rgba, n, n, OIIO_TS_FLOAT, SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT,
+                             c->path, err, errlen) != 0) {
+        free(rgba);
+        free(c);
+        return NULL;
+    }
+    free(rgba);
+    c->ts = oiio_ts_create(64.0);
+    c->tex = c->ts ? oiio_ts_open(c->ts, c->path, err, errlen) : NULL;
+    if (!c->tex) {
+        if (!c->ts) snprintf(err, errlen, "OpenImageIO: cannot create a TextureSystem");
+        oiio_ts_destroy(c->ts);
+        remove(c->path);
+        free(c);
+        return NULL;
+    }
+    oiio_ts_opts_init(&c->opts);
+    c->opts.mode = (oiio_ts_mode)((const fq_oiio_cfg *)b->config)->mode;
+    c->opts.wrap_s = c->opts.wrap_t = SAMPLE_WRAP_REPEAT;
+    c->opts.max_aniso = 16;
+    return c;
+}
+
+static int oiio_sample(void *ctx, const sample_query *q, size_t count, float *rgba,
+                       double *texels, char *err, size_t errlen)
+{
+    oiio_ctx *c = (oiio_ctx *)ctx;
+    (void)texels;
+    return oiio_ts_sample(c->ts, c->tex, &c->opts, q, count, rgba, err, errlen);
+}
+
+static void oiio_release(void *ctx)
+{
+    oiio_ctx *c = (oiio_ctx *)ctx;
+    oiio_ts_destroy(c->ts);
+    remove(c->path);
+    free(c);
+}
+
+int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], const char *tmp)
+{
+    static const struct {
+        const char *name, *label;
+        oiio_ts_mode mode;
+    } kinds[FQ_OIIO_MAX] = {
+        {"oiio_trilinear", "OpenImageIO trilinear", OIIO_TS_TRILINEAR},
+        {"oiio_aniso", "OpenImageIO anisotropic x16", OIIO_TS_ANISO},
+    };
+    int k;
+    for (k = 0; k < FQ_OIIO_MAX; ++k) {
+        cfg[k].mode = kinds[k].mode;
+        snprintf(cfg[k].dir, sizeof cfg[k].dir, "%s", tmp);
+        out[k].name = kinds[k].name;
+        out[k].label = kinds[k].label;
+        out[k].prepare = oiio_prepare;
+        out[k].sample = oiio_sample;
+        out[k].release = oiio_release;
+        out[k].config = &cfg[k];
+        out[k].counts_texels = 0;
+    }
+    return FQ_OIIO_MAX;
+}
+
+#else
+
+int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], const char *tmp)
+{
+    (void)out;
+    (void)cfg;
+    (void)tmp;
+    return 0;
+}
+
+#endif
