@@ -9,6 +9,13 @@ add_library(texsample_render STATIC ${TEXSAMPLE_RENDER_SOURCES})
 target_include_directories(texsample_render PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/render)
 target_compile_options(texsample_render PRIVATE ${SAMPLE_WARNINGS})
 target_link_libraries(texsample_render PUBLIC sample Threads::Threads PkgConfig::CJSON m)
+# The built-in image scenes read testimages/ of this source tree.
+target_compile_definitions(texsample_render PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+# Image textures (imagetex.c) need libsample_io; without it they are refused.
+if(TARGET sample_io)
+  target_link_libraries(texsample_render PUBLIC sample_io)
+  target_compile_definitions(texsample_render PRIVATE TEXSAMPLE_HAVE_IO=1)
+endif()
 # texsample globbed tools/*/*.c already; drop the library's sources from it.
 get_target_property(_ts_sources texsample SOURCES)
 list(REMOVE_ITEM _ts_sources ${TEXSAMPLE_RENDER_SOURCES})

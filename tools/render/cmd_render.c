@@ -9,82 +9,55 @@
 #include <string.h>
 #include <unistd.h>
 
+#ifdef TEXSAMPLE_HAVE_IO
+#include "sample/sample_io.h"
+#endif
+
 static const char render_help[] =
     "usage: texsample render [options] --out FILE\n"
     "\n"
     "Render a scene with exact (s, t) and Jacobians (Blinn & Newell 1976).\n"
     "\n"
     "  --scene NAME|FILE  built-in scene (teapot, plane, zoneplate, cylinder,\n"
-    "                     sphere) or a JSON scene file; default teapot\n"
+    "                     sphere, teapot-image, photo-plane) or a JSON scene\n"
+    "                     file (image files relative to it); default teapot\n"
     "  --width N, --height N  image size (default: the scene's, 512 x 512)\n"
     "  --threads N        worker threads (default: all online CPUs)\n"
-    "  --out FILE         image: .ppm (sRGB 8-bit) or .pfm (linear float)\n"
-    "  --buffers FILE     per-pixel buffers as raw float32, channels\n"
-    "                     interleaved: s t dsdx dtdx dsdy dtdy lod texels depth\n"
-    "                     nx ny nz object prim (14 floats per pixel, row 0 at\n"
-    "                     the top; see doc/renderer.md)\n"
+    "  --out FILE         image: .exr (linear float RGBA) or .png (sRGB 8-bit)\n"
+    "  --buffers FILE.exr per-pixel buffers as a float OpenEXR with channels\n"
+    "                     s t dsdx dtdx dsdy dtdy lod texels Z N.X N.Y N.Z\n"
+    "                     object prim (see doc/renderer.md)\n"
     "  --shade full|texture  Blinn-Newell shading, or the filtered texture only\n"
     "  --corners          pass the exact footprint corners (Blinn-Newell mode)\n"
     "  --progress         show progress even when stderr is not a terminal\n"
     "\n"
     "Sampler flags (override the scene's sampler when given):\n";
 
-/* Writers return 1 on success (cli_write_file's convention). */
-static int write_ppm(const char *path, const render_image *img)
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t a = strlen(s), b = strlen(suffix);
+    return a >= b && strcmp(s + a - b, suffix) == 0;
+}
+
+#ifdef TEXSAMPLE_HAVE_IO
+/* The --buffers channels, in render_image's order. "Z" and the "N." layer
+ * are the names OpenEXR viewers know for depth and normals. */
+enum { NBUF = 14 };
+static const char *const buffer_names[NBUF] = {"s",    "t",      "dsdx", "dtdx", "dsdy",
+                                              "dtdy", "lod",    "texels", "Z",  "N.X",
+                                              "N.Y",  "N.Z",    "object", "prim"};
+
+static sample_status write_buffers(const char *path, const render_image *img, sample_error *e)
 {
     size_t n = (size_t)img->width * img->height, k;
-    char head[64];
-    int hl = snprintf(head, sizeof head, "P6\n%d %d\n255\n", img->width, img->height);
-    unsigned char *buf = malloc((size_t)hl + 3 * n);
-    int r;
-    if (!buf) return 0;
-    memcpy(buf, head, (size_t)hl);
-    for (k = 0; k < 3 * n; ++k) {
-        float v = img->rgba[4 * (k / 3) + k % 3];
-        float e = sample_linear_to_srgb(v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f);
-        buf[hl + k] = (unsigned char)(e * 255.0f + 0.5f);
+    float *b = malloc(n * NBUF * sizeof *b);
+    sample_status st;
+    if (!b) {
+        snprintf(e->message, sizeof e->message, "out of memory");
+        return SAMPLE_E_OUT_OF_MEMORY;
     }
-    r = cli_write_file(path, buf, (size_t)hl + 3 * n);
-    free(buf);
-    return r;
-}
-
-/* PFM stores rows bottom to top; little-endian when the scale is negative. */
-static int write_pfm(const char *path, const render_image *img)
-{
-    size_t w = (size_t)img->width, h = (size_t)img->height, i, j;
-    char head[64];
-    int hl = snprintf(head, sizeof head, "PF\n%d %d\n-1.0\n", img->width, img->height), r;
-    unsigned char *buf = malloc((size_t)hl + 12 * w * h), *p;
-    if (!buf) return 0;
-    memcpy(buf, head, (size_t)hl);
-    p = buf + hl;
-    for (j = 0; j < h; ++j)
-        for (i = 0; i < w; ++i) {
-            const float *src = img->rgba + 4 * ((h - 1 - j) * w + i);
-            int c;
-            for (c = 0; c < 3; ++c) {
-                uint32_t u;
-                memcpy(&u, &src[c], 4);
-                *p++ = (unsigned char)(u & 255u);
-                *p++ = (unsigned char)((u >> 8) & 255u);
-                *p++ = (unsigned char)((u >> 16) & 255u);
-                *p++ = (unsigned char)(u >> 24);
-            }
-        }
-    r = cli_write_file(path, buf, (size_t)hl + 12 * w * h);
-    free(buf);
-    return r;
-}
-
-static int write_buffers(const char *path, const render_image *img)
-{
-    size_t n = (size_t)img->width * img->height, k;
-    float *b = malloc(n * 14 * sizeof *b);
-    int r;
-    if (!b) return 0;
     for (k = 0; k < n; ++k) {
-        float *o = b + 14 * k;
+        float *o = b + NBUF * k;
         memcpy(o, img->st + 2 * k, 2 * sizeof *o);
         memcpy(o + 2, img->jacobian + 4 * k, 4 * sizeof *o);
         o[6] = img->lod[k];
@@ -93,16 +66,24 @@ static int write_buffers(const char *path, const render_image *img)
         memcpy(o + 9, img->normal + 3 * k, 3 * sizeof *o);
         memcpy(o + 12, img->id + 2 * k, 2 * sizeof *o);
     }
-    r = cli_write_file(path, b, n * 14 * sizeof *b);
+    st = sample_io_write_channels(path, b, img->width, img->height, NBUF, buffer_names, e);
     free(b);
-    return r;
+    return st;
 }
 
-static int ends_with(const char *s, const char *suffix)
+/* .exr: linear float RGBA (the reference values, unrounded); .png: sRGB
+ * 8-bit RGB, through OCIO like every other picture the tools write. */
+static sample_status write_picture(const char *path, const render_image *img, sample_error *e)
 {
-    size_t a = strlen(s), b = strlen(suffix);
-    return a >= b && strcmp(s + a - b, suffix) == 0;
+    sample_io_write_options o;
+    sample_io_write_options_init(&o);
+    if (ends_with(path, ".exr")) {
+        o.type = SAMPLE_IO_TYPE_FLOAT;
+        return sample_io_write_image_ex(path, img->rgba, img->width, img->height, 4, &o, e);
+    }
+    return sample_io_write_image_ex(path, img->rgba, img->width, img->height, 3, &o, e);
 }
+#endif
 
 int cmd_render(int argc, char **argv)
 {
@@ -113,6 +94,9 @@ int cmd_render(int argc, char **argv)
     render_scene *sc = NULL;
     render_image img;
     char err[256];
+#ifdef TEXSAMPLE_HAVE_IO
+    sample_error e;
+#endif
     render_options_init(&o);
     o.threads = ncpu > 0 && ncpu < 1024 ? (int)ncpu : 1;
     o.progress = cli_progress;
@@ -156,8 +140,13 @@ int cmd_render(int argc, char **argv)
         }
     }
     if (!out && !buffers) return cli_usage_error("render", "--out FILE or --buffers FILE is required");
-    if (out && !ends_with(out, ".ppm") && !ends_with(out, ".pfm"))
-        return cli_usage_error("render", "--out: this build writes .ppm and .pfm");
+    if (out && !ends_with(out, ".exr") && !ends_with(out, ".png"))
+        return cli_usage_error("render", "--out '%s': the image is .exr or .png", out);
+    if (buffers && !ends_with(buffers, ".exr"))
+        return cli_usage_error("render", "--buffers '%s': the buffers are an .exr file", buffers);
+#ifndef TEXSAMPLE_HAVE_IO
+    return cli_runtime_error("render", "this build has no image output (libsample_io)");
+#endif
     o.use_scene_sampler = !sampler_given;
     if (buffers) o.buffers = RENDER_BUF_ST | RENDER_BUF_JACOBIAN | RENDER_BUF_LOD |
                              RENDER_BUF_TEXELS | RENDER_BUF_DEPTH | RENDER_BUF_NORMAL | RENDER_BUF_ID;
@@ -168,10 +157,12 @@ int cmd_render(int argc, char **argv)
         render_scene_destroy(sc);
         return cli_runtime_error("render", "%s", err);
     }
-    if (out && !(ends_with(out, ".ppm") ? write_ppm(out, &img) : write_pfm(out, &img)))
-        rc = cli_runtime_error("render", "cannot write '%s'", out);
-    if (rc == EXIT_OK && buffers && !write_buffers(buffers, &img))
-        rc = cli_runtime_error("render", "cannot write '%s'", buffers);
+#ifdef TEXSAMPLE_HAVE_IO
+    if (out && write_picture(out, &img, &e) != SAMPLE_OK)
+        rc = cli_runtime_error("render", "%s", e.message);
+    if (rc == EXIT_OK && buffers && write_buffers(buffers, &img, &e) != SAMPLE_OK)
+        rc = cli_runtime_error("render", "%s", e.message);
+#endif
     render_image_free(&img);
     render_scene_destroy(sc);
     return rc;

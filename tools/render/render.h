@@ -44,7 +44,10 @@ typedef struct render_scene render_scene;
 /* ---- Scenes --------------------------------------------------------- */
 
 /* Built-in scene names, NULL-terminated: "teapot", "plane", "zoneplate",
- * "cylinder", "sphere". */
+ * "cylinder", "sphere" (procedural textures), and "teapot-image",
+ * "photo-plane" (the photograph testimages/photo.jpg of the source tree,
+ * TEXSAMPLE_SOURCE_DIR: they need libsample_io and that file, else they
+ * fail with a message saying which). */
 extern const char *const render_builtin_names[];
 
 /* Build a built-in scene at width × height (0 = the default 512 × 512).
@@ -52,12 +55,37 @@ extern const char *const render_builtin_names[];
 int render_scene_builtin(const char *name, int width, int height, render_scene **out,
                          char *err, size_t errlen);
 /* Load a scene file (JSON, doc/renderer.md §Scene files). width/height > 0
- * override the file's image size. */
+ * override the file's image size. Image files are relative to the scene
+ * file's folder. */
 int render_scene_load(const char *path, int width, int height, render_scene **out,
                       char *err, size_t errlen);
-/* Same from a JSON text in memory (tests, fuzzing). */
+/* Same from a JSON text in memory (tests, fuzzing); image files relative to
+ * the working directory, default limits. */
 int render_scene_parse(const char *json, size_t len, int width, int height,
                        render_scene **out, char *err, size_t errlen);
+
+/* What the parser may do. Everything a scene makes it compute or allocate
+ * up front is bounded by these, so that no scene text can stall or exhaust
+ * the process while it is being built (issue 9). */
+typedef struct render_parse_options {
+    const char *base_dir; /* image "file"s are relative to it; NULL: working directory */
+    int images;           /* 1 (default): load image textures; 0: refuse them */
+    /* Procedural evaluations when baking: Σ size²·samples² over textures,
+     * plus 4 per environment-map texel. Default RENDER_MAX_BAKE_WORK. */
+    double max_bake_work;
+    /* Base-level texels of all textures and maps together (image textures
+     * included). Default RENDER_MAX_TEXELS. */
+    double max_texels;
+} render_parse_options;
+
+#define RENDER_MAX_BAKE_WORK 268435456.0 /* 2^28: 16 × a 4096² bake at 1 sample */
+#define RENDER_MAX_TEXELS 67108864.0     /* 2^26: one 8192² texture, 1 GiB as float RGBA */
+
+void render_parse_options_init(render_parse_options *po);
+/* render_scene_parse with options (po NULL: defaults). */
+int render_scene_parse_ex(const char *json, size_t len, int width, int height,
+                          const render_parse_options *po, render_scene **out, char *err,
+                          size_t errlen);
 void render_scene_destroy(render_scene *sc); /* accepts NULL */
 
 void render_scene_size(const render_scene *sc, int *width, int *height);

@@ -9,6 +9,7 @@
  *   jacobian.c      exact d(s,t)/d(x,y), normals and their derivatives
  *   hit.c           visible-surface search over objects, corners, cache
  *   proc.c          procedural textures (exact functions) and baking
+ *   imagetex.c      image textures through libsample_io
  *   noise.c         Perlin gradient noise, periodic, seeded
  *   envmap.c        lat-long and cube environment maps, reflection lookup
  *   shade.c         Blinn–Newell shading, bump and normal mapping
@@ -202,7 +203,8 @@ typedef struct rn_texture {
     int bake_size, bake_samples;
     sample_wrap wrap_s, wrap_t;
     sample_texture *tex; /* baked or loaded; owned */
-    char path[512];      /* image textures */
+    char path[512];      /* image textures: "file" as written in the scene */
+    char colorspace[64]; /* image textures: OCIO name, "" = by file and rule */
 } rn_texture;
 
 /* Defaults for a kind (colours black/white, freq 8, ...). */
@@ -211,6 +213,11 @@ void proc_defaults(rn_texture *t, rn_tex_kind kind);
 void proc_eval(const rn_texture *t, double s, double t_, const double P[3], float out[4]);
 /* Bake a procedural texture into t->tex (bake_samples² box per texel). */
 int proc_bake(rn_texture *t, char *err, size_t errlen);
+/* Read an image texture into t->tex (imagetex.c): t->path relative to
+ * base_dir (NULL: as given), refused if it holds more than max_texels
+ * (base level); *texels gets its base-level texel count. */
+int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
+               size_t errlen);
 
 /* ---- Environment maps (envmap.c) ---------------------------------------- */
 
@@ -290,8 +297,10 @@ void material_defaults(rn_material *m);
 void object_defaults(rn_object *o, rn_kind kind);
 /* The Newell teapot as an object (patches prepared), scaled and moved. */
 int scene_teapot_object(rn_object *o, double scale, const double offset[3]);
-/* Finish: bake textures, prepare patches/polygons. */
-int scene_finish(render_scene *sc, char *err, size_t errlen);
+/* Finish: bake procedural textures, read image textures (relative to
+ * base_dir, at most texels_left base-level texels together). */
+int scene_finish(render_scene *sc, const char *base_dir, double texels_left, char *err,
+                 size_t errlen);
 
 /* Run fn(ctx, row) for rows 0..rows−1 on `threads` threads (rows handed
  * out in order; each row's work must not depend on which thread runs it).

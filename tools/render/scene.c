@@ -77,21 +77,73 @@ static const char scene_sphere[] =
     "\"environment\":{\"type\":\"cube\",\"size\":128},"
     "\"objects\":[{\"type\":\"sphere\",\"centre\":[0,0,0],\"radius\":1}]}";
 
-const char *const render_builtin_names[] = {"teapot", "plane", "zoneplate", "cylinder", "sphere",
-                                            NULL};
-static const char *const builtin_json[] = {scene_teapot, scene_plane, scene_zoneplate,
-                                           scene_cylinder, scene_sphere};
+/* The teapot of Fig. 10 with the photograph instead of the grid: each
+ * patch carries the whole picture (REPEAT across patch seams). */
+static const char scene_teapot_image[] =
+    "{\"camera\":{\"eye\":[6.5,-8.5,5.2],\"look\":[0.15,0,1.35],\"up\":[0,0,1],\"fov\":28},"
+    "\"background\":[0.02,0.02,0.03,1],"
+    "\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\"},"
+    "\"textures\":[{\"name\":\"photo\",\"type\":\"image\",\"file\":\"photo.jpg\"}],"
+    "\"materials\":[{\"name\":\"glaze\",\"texture\":\"photo\",\"diffuse\":[0.9,0.9,0.9],"
+    "\"ambient\":0.15,\"gloss\":0.8,\"exponent\":60,\"reflect\":0.25}],"
+    "\"lights\":[{\"dir\":[0.6,-0.5,0.8],\"color\":[1,1,1]}],"
+    "\"environment\":{\"type\":\"latlong\",\"size\":512,\"radius\":12,\"centre\":[0,0,1.5]},"
+    "\"objects\":[{\"type\":\"teapot\",\"material\":\"glaze\"}]}";
+
+/* The photograph on a 2 × 4 quad lying on z = 0, seen from 0.75 above its
+ * near edge: minification grows, and grows anisotropic, towards the far
+ * edge. t = 0 (the picture's top row) is the far edge, so it stands upright;
+ * CLAMP_TO_EDGE, as a photograph does not tile. The same geometry as the
+ * comparison's "photo-plane" (tools/compare/scenes.c). */
+static const char scene_photo_plane[] =
+    "{\"camera\":{\"eye\":[0,-1.6,0.75],\"look\":[0,1.2,0],\"up\":[0,0,1],\"fov\":50},"
+    "\"background\":[0.5,0.6,0.8,1],"
+    "\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\","
+    "\"wrap_s\":\"clamp_to_edge\",\"wrap_t\":\"clamp_to_edge\"},"
+    "\"textures\":[{\"name\":\"photo\",\"type\":\"image\",\"file\":\"photo.jpg\"}],"
+    "\"materials\":[{\"name\":\"m\",\"texture\":\"photo\",\"ambient\":1,\"gloss\":0}],"
+    "\"objects\":[{\"type\":\"polygons\",\"material\":\"m\",\"polygons\":[{\"v\":[[-1,-0.5,0],"
+    "[1,-0.5,0],[1,3.5,0],[-1,3.5,0]],\"st\":[[0,1],[1,1],[1,0],[0,0]]}]}]}";
+
+const char *const render_builtin_names[] = {"teapot",   "plane",        "zoneplate",   "cylinder",
+                                            "sphere",   "teapot-image", "photo-plane", NULL};
+static const char *const builtin_json[] = {scene_teapot,   scene_plane,        scene_zoneplate,
+                                           scene_cylinder, scene_sphere,       scene_teapot_image,
+                                           scene_photo_plane};
+_Static_assert(sizeof builtin_json / sizeof builtin_json[0] ==
+                   sizeof render_builtin_names / sizeof render_builtin_names[0] - 1,
+               "one JSON text per built-in name");
+
+/* Image files of the built-in scenes: testimages/ of the source tree (the
+ * build defines TEXSAMPLE_SOURCE_DIR), else of the working directory. */
+#ifdef TEXSAMPLE_SOURCE_DIR
+#define RN_BUILTIN_IMAGES TEXSAMPLE_SOURCE_DIR "/testimages"
+#else
+#define RN_BUILTIN_IMAGES "testimages"
+#endif
 
 int render_scene_builtin(const char *name, int width, int height, render_scene **out, char *err,
                          size_t errlen)
 {
+    render_parse_options po;
     int k;
     *out = NULL;
+    render_parse_options_init(&po);
+    po.base_dir = RN_BUILTIN_IMAGES;
     for (k = 0; render_builtin_names[k]; ++k)
-        if (strcmp(name, render_builtin_names[k]) == 0)
-            return render_scene_parse(builtin_json[k], strlen(builtin_json[k]), width, height, out,
-                                      err, errlen);
-    rn_seterr(err, errlen, "no built-in scene '%s' (teapot, plane, zoneplate, cylinder, sphere)",
+        if (strcmp(name, render_builtin_names[k]) == 0) {
+            int r = render_scene_parse_ex(builtin_json[k], strlen(builtin_json[k]), width, height,
+                                          &po, out, err, errlen);
+            if (r != 0) {
+                char inner[200];
+                snprintf(inner, sizeof inner, "%s", err ? err : "");
+                rn_seterr(err, errlen, "built-in scene '%s': %s", name, inner);
+            }
+            return r;
+        }
+    rn_seterr(err, errlen,
+              "no built-in scene '%s' (teapot, plane, zoneplate, cylinder, sphere, teapot-image, "
+              "photo-plane)",
               name);
     return -1;
 }
@@ -159,16 +211,19 @@ int scene_teapot_object(rn_object *o, double scale, const double offset[3])
     return 1;
 }
 
-int scene_finish(render_scene *sc, char *err, size_t errlen)
+int scene_finish(render_scene *sc, const char *base_dir, double texels_left, char *err,
+                 size_t errlen)
 {
     int k;
     for (k = 0; k < sc->ntex; ++k) {
         rn_texture *t = &sc->tex[k];
-        if (t->kind == RN_TEX_IMAGE) {
-            rn_seterr(err, errlen, "image textures are not supported by this build ('%s')", t->path);
-            return 0;
+        double n = 0.0;
+        if (t->kind != RN_TEX_IMAGE) {
+            if (!proc_bake(t, err, errlen)) return 0;
+            continue;
         }
-        if (!proc_bake(t, err, errlen)) return 0;
+        if (!image_load(t, base_dir, texels_left, &n, err, errlen)) return 0;
+        texels_left -= n;
     }
     for (k = 0; k < sc->nobj; ++k)
         if (sc->obj[k].material < 0 || sc->obj[k].material >= sc->nmat) sc->obj[k].material = 0;
@@ -197,6 +252,9 @@ int render_scene_load(const char *path, int width, int height, render_scene **ou
                       size_t errlen)
 {
     FILE *f = fopen(path, "rb");
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    render_parse_options po;
     char *buf;
     long n;
     int r;
@@ -220,7 +278,16 @@ int render_scene_load(const char *path, int width, int height, render_scene **ou
     }
     fclose(f);
     buf[n] = '\0';
-    r = render_scene_parse(buf, (size_t)n, width, height, out, err, errlen);
+    /* Image files are relative to the scene file's folder (as a scene
+     * written next to its textures expects), not to the working directory. */
+    render_parse_options_init(&po);
+    if (slash && (size_t)(slash - path) < sizeof dir) {
+        size_t len = slash == path ? 1 : (size_t)(slash - path);
+        memcpy(dir, path, len);
+        dir[len] = '\0';
+        po.base_dir = dir;
+    }
+    r = render_scene_parse_ex(buf, (size_t)n, width, height, &po, out, err, errlen);
     free(buf);
     return r;
 }

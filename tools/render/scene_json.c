@@ -14,7 +14,24 @@ typedef struct jctx {
     char *err;
     size_t errlen;
     const cJSON *textures, *materials;
+    render_parse_options po;
+    double work, texels; /* spent so far of po.max_bake_work, po.max_texels */
 } jctx;
+
+/* Charge a bake to the scene's budgets before it is made: 0 (error set)
+ * if it would exceed them. Counted in double: 8192² · 16² overflows 32 bits. */
+static int budget(jctx *c, const char *what, double texels, double work)
+{
+    if (c->texels + texels > c->po.max_texels || c->work + work > c->po.max_bake_work) {
+        rn_seterr(c->err, c->errlen,
+                  "%s: the scene's textures exceed the limits (%.0f texels, %.0f bake samples)",
+                  what, c->po.max_texels, c->po.max_bake_work);
+        return 0;
+    }
+    c->texels += texels;
+    c->work += work;
+    return 1;
+}
 
 /* Optional number: 1 if absent or valid, 0 (error set) if wrong. */
 static int jnum(jctx *c, const cJSON *o, const char *key, double lo, double hi, double *out)
@@ -145,10 +162,52 @@ static int parse_sampler(jctx *c, const cJSON *o)
     return 1;
 }
 
+/* Optional wrap mode by name; 1 if absent or valid. */
+static int jwrap(jctx *c, const cJSON *o, const char *key, sample_wrap *out)
+{
+    const char *v = jstr(o, key);
+    int e;
+    if (!cJSON_GetObjectItemCaseSensitive(o, key)) return 1;
+    if (!v || (e = sample_wrap_parse(v)) < 0) {
+        rn_seterr(c->err, c->errlen, "'%s' must name a wrap mode", key);
+        return 0;
+    }
+    *out = (sample_wrap)e;
+    return 1;
+}
+
+/* An image texture's own fields: file, colorspace, wrap modes (default: the
+ * scene sampler's, so that the ground truth's bilinear lookup and the pyramid
+ * treat the edges as the render does). */
+static int parse_image_fields(jctx *c, const cJSON *o, rn_texture *t)
+{
+    const char *file = jstr(o, "file"), *cs = jstr(o, "colorspace");
+    if (!c->po.images) {
+        rn_seterr(c->err, c->errlen, "image textures are not allowed here");
+        return 0;
+    }
+    if (!file || !file[0] || strlen(file) >= sizeof t->path) {
+        rn_seterr(c->err, c->errlen, "image texture needs a 'file' (a path of at most %zu bytes)",
+                  sizeof t->path - 1);
+        return 0;
+    }
+    strcpy(t->path, file);
+    if (cJSON_GetObjectItemCaseSensitive(o, "colorspace") &&
+        (!cs || !cs[0] || strlen(cs) >= sizeof t->colorspace)) {
+        rn_seterr(c->err, c->errlen, "'colorspace' must be an OCIO name of at most %zu bytes",
+                  sizeof t->colorspace - 1);
+        return 0;
+    }
+    if (cs) strcpy(t->colorspace, cs);
+    t->wrap_s = c->sc->sampler.wrap_s;
+    t->wrap_t = c->sc->sampler.wrap_t;
+    return jwrap(c, o, "wrap_s", &t->wrap_s) && jwrap(c, o, "wrap_t", &t->wrap_t);
+}
+
 static int parse_texture(jctx *c, const cJSON *o)
 {
     rn_texture t;
-    const char *type = jstr(o, "type"), *file = jstr(o, "file");
+    const char *type = jstr(o, "type");
     double d;
     int k, kind = -1;
     for (k = 0; type && k < RN_TEX_KIND_COUNT; ++k)
@@ -158,13 +217,7 @@ static int parse_texture(jctx *c, const cJSON *o)
         return 0;
     }
     proc_defaults(&t, (rn_tex_kind)kind);
-    if (kind == RN_TEX_IMAGE) {
-        if (!file || strlen(file) >= sizeof t.path) {
-            rn_seterr(c->err, c->errlen, "image texture needs a 'file'");
-            return 0;
-        }
-        strcpy(t.path, file);
-    }
+    if (kind == RN_TEX_IMAGE && !parse_image_fields(c, o, &t)) return 0;
     d = t.seed;
     if (!jnum(c, o, "freq", 1, 256, &t.freq) || !jnum(c, o, "width", 0, 1, &t.width) ||
         !jint(c, o, "octaves", 1, 12, &t.octaves) || !jnum(c, o, "amount", 0, 1e4, &t.amount) ||
@@ -177,6 +230,10 @@ static int parse_texture(jctx *c, const cJSON *o)
     if (kind == RN_TEX_NOISE || kind == RN_TEX_TURBULENCE || kind == RN_TEX_MARBLE ||
         kind == RN_TEX_FOURIER)
         t.freq = floor(t.freq); /* integer periods: seamless tiling */
+    if (kind != RN_TEX_IMAGE) {
+        double n2 = (double)t.bake_size * t.bake_size, m2 = (double)t.bake_samples * t.bake_samples;
+        if (!budget(c, "texture", n2, n2 * m2)) return 0;
+    }
     return scene_add_texture(c->sc, &t) ? 1 : (rn_seterr(c->err, c->errlen, "out of memory"), 0);
 }
 
@@ -381,6 +438,11 @@ static int parse_env(jctx *c, const cJSON *o)
     if (!jint(c, o, "size", 2, 8192, &size) || !jnum(c, o, "radius", 0, 1e9, &e->radius) ||
         !jvec(c, o, "centre", 3, e->centre) || !jnum(c, o, "strength", 0, 1e6, &strength))
         return 0;
+    {
+        /* Lat-long is size × size/2, a cube six size²; 2 × 2 samples each. */
+        double n = kind == RN_ENV_LATLONG ? (double)size * (size / 2) : 6.0 * size * size;
+        if (!budget(c, "environment", n, 4.0 * n)) return 0;
+    }
     e->strength = (float)strength;
     return env_build_sky(e, kind, size, c->err, c->errlen);
 }
@@ -424,23 +486,37 @@ static int parse_root(jctx *c, const cJSON *root, int width, int height)
         if (!c->err || !c->err[0]) rn_seterr(c->err, c->errlen, "bad 'environment'");
         return 0;
     }
-    return scene_finish(c->sc, c->err, c->errlen);
+    return scene_finish(c->sc, c->po.base_dir, c->po.max_texels - c->texels, c->err, c->errlen);
 }
 
-int render_scene_parse(const char *json, size_t len, int width, int height, render_scene **out,
-                       char *err, size_t errlen)
+void render_parse_options_init(render_parse_options *po)
+{
+    memset(po, 0, sizeof *po);
+    po->images = 1;
+    po->max_bake_work = RENDER_MAX_BAKE_WORK;
+    po->max_texels = RENDER_MAX_TEXELS;
+}
+
+int render_scene_parse_ex(const char *json, size_t len, int width, int height,
+                          const render_parse_options *po, render_scene **out, char *err,
+                          size_t errlen)
 {
     cJSON *root;
+    const char *end = NULL;
     jctx c;
     *out = NULL;
     if (err && errlen) err[0] = '\0';
-    root = cJSON_ParseWithLength(json, len);
+    /* The end pointer, not cJSON_GetErrorPtr(): that one is a global, which
+     * another thread's parse may overwrite (and then points into its text). */
+    root = cJSON_ParseWithLengthOpts(json, len, &end, 0);
     if (!root) {
         rn_seterr(err, errlen, "not valid JSON (near byte %ld)",
-                  cJSON_GetErrorPtr() ? (long)(cJSON_GetErrorPtr() - json) : -1L);
+                  end && end >= json && end <= json + len ? (long)(end - json) : -1L);
         return -1;
     }
     memset(&c, 0, sizeof c);
+    if (po) c.po = *po;
+    else render_parse_options_init(&c.po);
     c.sc = scene_new();
     c.err = err;
     c.errlen = errlen;
@@ -457,4 +533,10 @@ int render_scene_parse(const char *json, size_t len, int width, int height, rend
     cJSON_Delete(root);
     *out = c.sc;
     return 0;
+}
+
+int render_scene_parse(const char *json, size_t len, int width, int height, render_scene **out,
+                       char *err, size_t errlen)
+{
+    return render_scene_parse_ex(json, len, width, height, NULL, out, err, errlen);
 }
