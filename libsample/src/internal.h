@@ -162,6 +162,38 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
     tex_decode(c->tex, L, x, y, out);
 }
 
+/* Whether query k of a batch can be filtered: DESIGN §10, non-finite
+ * coordinates, Jacobian, bias or corners give the border colour, decided
+ * before any arithmetic could turn them into an index. */
+static inline int batch_query_finite(const sample_batch_args *a, size_t k)
+{
+    const sample_query *q = &a->queries[k];
+    int m;
+    if (!(isfinite(q->s) && isfinite(q->t) && isfinite(q->dsdx) && isfinite(q->dtdx) &&
+          isfinite(q->dsdy) && isfinite(q->dtdy)))
+        return 0;
+    if (a->lod_bias && !isfinite(a->lod_bias[k])) return 0;
+    if (a->corners)
+        for (m = 0; m < 4; ++m)
+            if (!isfinite(a->corners[k].st[m][0]) || !isfinite(a->corners[k].st[m][1])) return 0;
+    return 1;
+}
+
+/* Prefetch hint; never dereferences, but callers keep the address inside
+ * the level anyway so that no invalid pointer is ever formed. */
+#if defined(__GNUC__)
+#define SAMPLE_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define SAMPLE_PREFETCH(p) ((void)(p))
+#endif
+
+/* The specialized batch loop for the OpenGL filters (fast_gl.c): a kernel
+ * for this batch's format and channel count, or NULL where the general
+ * path must run (footprint filters). Bit-for-bit the general path's
+ * results (tests/test_fastpath.c). */
+typedef void (*fast_gl_fn)(const sample_ctx *c, const sample_batch_args *a);
+fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a);
+
 /* ---- Reconstruction on one level (reconstruct.c) ------------------------ */
 
 /* kind is SAMPLE_NEAREST, SAMPLE_LINEAR or SAMPLE_CUBIC. (s, t) normalized.

@@ -79,20 +79,6 @@ uint32_t sample_gl(const sample_ctx *c, const sample_query *q, float call_bias, 
     return gl_apply(c, q, lam, &ch, out, dds, ddt, st);
 }
 
-static int query_finite(const sample_query *q)
-{
-    return isfinite(q->s) && isfinite(q->t) && isfinite(q->dsdx) && isfinite(q->dtdx) &&
-           isfinite(q->dsdy) && isfinite(q->dtdy);
-}
-
-static int quad_finite(const sample_quad *qd)
-{
-    int k;
-    for (k = 0; k < 4; ++k)
-        if (!isfinite(qd->st[k][0]) || !isfinite(qd->st[k][1])) return 0;
-    return 1;
-}
-
 /* What a query will do, decided for a block of queries before any texel is
  * read, so that the texel rows can be prefetched: random queries into a
  * large texture are bound by memory latency, and overlapping the misses of
@@ -105,12 +91,6 @@ typedef struct query_plan {
 
 enum { PLAN_BLOCK = 16 };
 
-#if defined(__GNUC__)
-#define PREFETCH(p) __builtin_prefetch(p)
-#else
-#define PREFETCH(p) ((void)(p))
-#endif
-
 /* Touch the two texel rows a bilinear read near (s, t) needs. Wrapping is
  * ignored (a prefetch is only a hint), but the address is kept inside the
  * level so that no invalid pointer is ever formed. */
@@ -121,17 +101,15 @@ static void prefetch_level(const sample_ctx *c, int lv, float s, float t)
     int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
     int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
     const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * c->tex->texel_bytes;
-    PREFETCH(p);
-    if (j + 1 < L->h) PREFETCH(p + L->stride);
+    SAMPLE_PREFETCH(p);
+    if (j + 1 < L->h) SAMPLE_PREFETCH(p + L->stride);
 }
 
 static void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i, query_plan *pl)
 {
     const sample_query *q = &a->queries[i];
     float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
-    if (!query_finite(q) || !isfinite(bias) || (a->corners && !quad_finite(&a->corners[i]))) {
-        /* DESIGN §10: non-finite input gives the border colour, decided
-         * before any arithmetic could turn it into an index. */
+    if (!batch_query_finite(a, i)) {
         pl->kind = PLAN_BORDER;
         return;
     }
@@ -192,6 +170,7 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
 {
     sample_ctx c;
     sample_status st;
+    fast_gl_fn fast;
     size_t i;
     if (!tex || !a) return SAMPLE_E_INVALID_ARGUMENT;
     if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
@@ -206,6 +185,12 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
     c.base = smp->base_level < tex->nlevels ? smp->base_level : tex->nlevels - 1;
     c.maxlev = smp->max_level < tex->nlevels - 1 ? smp->max_level : tex->nlevels - 1;
     if (c.maxlev < c.base) c.maxlev = c.base;
+    /* The specialized loop where one applies; the general one below is the
+     * reference it must match bit for bit. */
+    if (!(smp->options & SAMPLE_OPT_SCALAR_PATH) && (fast = fast_gl_select(&c, a)) != NULL) {
+        fast(&c, a);
+        return SAMPLE_OK;
+    }
     for (i = 0; i < a->count; i += PLAN_BLOCK) {
         query_plan plan[PLAN_BLOCK];
         size_t k, m = a->count - i < PLAN_BLOCK ? a->count - i : PLAN_BLOCK;

@@ -1,0 +1,267 @@
+/*
+ * The fast path of sample_batch for the OpenGL filters (footprint NONE):
+ * NEAREST, LINEAR and CUBIC per level, with or without mipmaps.
+ *
+ * It computes exactly what the general path (sampler.c's loop over
+ * recon_level / ctx_texel) computes, with the same operations in the same
+ * order — the arithmetic itself is shared (tex_decode_v4, recon_bilerp,
+ * recon_blend, recon_cubic_combine in internal.h) — and differs only in how
+ * it gets there:
+ *
+ *  - one loop per (format × channel count), chosen once per batch: the
+ *    texel decode has no per-texel switch (zstd style: a generic static
+ *    inline function instantiated by a small macro);
+ *  - texel addresses are computed once per level and query as row pointers
+ *    and column indices; a run of taps inside the level (most queries) needs
+ *    no wrap at all, REPEAT uses an integer modulo, and only the rest goes
+ *    through the double-valued wrap_index;
+ *  - queries are planned in blocks (λ, levels, addresses) and every cache
+ *    line they will read is prefetched before the first texel is decoded:
+ *    random queries into a large texture are bound by memory latency, and
+ *    overlapping the misses of many queries is worth more than any
+ *    arithmetic saving;
+ *  - when the result cannot depend on λ (no mipmaps, the same per-level
+ *    filter for magnification and minification, no stats wanted) λ is not
+ *    computed at all.
+ *
+ * Identity with the general path is tested for every format, channel
+ * count, wrap mode and filter (tests/test_fastpath.c);
+ * SAMPLE_OPT_SCALAR_PATH turns this file off.
+ */
+#include "internal.h"
+
+/* Queries planned (and prefetched) ahead of their evaluation. Larger blocks
+ * keep more misses in flight; past about 32 the prefetches of one block
+ * start to evict each other's lines from L1 (doc/performance.md). */
+enum { FAST_BLOCK = 32 };
+
+/* Texel addresses and fractions of one query on one level: taps
+ * (col[x], row[y]) for x, y < 1, 2 or 4 (NEAREST, LINEAR, CUBIC). */
+typedef struct fast_taps {
+    const unsigned char *row[4]; /* NULL: the row reads the border colour */
+    int col[4];                  /* texel index; −1: the border colour */
+    float fu, fv;                /* α, β: the fractional parts (eq. 8.13) */
+} fast_taps;
+
+typedef struct fast_plan {
+    int border; /* non-finite input: the border colour */
+    float lam;
+    lod_choice ch;
+    fast_taps tp[2]; /* ch.level0, ch.level1 */
+} fast_plan;
+
+static int kind_taps(sample_filter kind)
+{
+    return kind == SAMPLE_NEAREST ? 1 : (kind == SAMPLE_LINEAR ? 2 : 4);
+}
+
+/* Indices (double)i0 + first + k, k < n, on an axis of len texels, exactly
+ * as wrap_index maps them. i0 is integral (a floor). A run inside the axis
+ * maps to itself; REPEAT below 2^24 is an integer modulo (the same true
+ * modulo as wrap_index's exact fmod); anything else asks wrap_index. */
+static inline void axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
+                              int out[4])
+{
+    int k;
+    if (i0 >= (float)-first && i0 <= (float)(len - n - first)) {
+        int b = (int)i0 + first;
+        for (k = 0; k < n; ++k) out[k] = b + k;
+        return;
+    }
+    if (mode == SAMPLE_WRAP_REPEAT && fabsf(i0) < 16777216.0f) {
+        int r = ((int)i0 + first) % len;
+        if (r < 0) r += len;
+        for (k = 0; k < n; ++k) {
+            out[k] = r;
+            if (++r == len) r = 0;
+        }
+        return;
+    }
+    for (k = 0; k < n; ++k) out[k] = wrap_index(mode, (double)i0 + (first + k), len, linear);
+}
+
+/* Addresses of one query on level lv (recon_level's coordinate rules) and
+ * prefetches of the lines they touch: the first and last byte of each
+ * row's run cover it when the run is contiguous, as it almost always is. */
+static inline void plan_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
+                              size_t tb, fast_taps *tp)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    float u = recon_texel_coord(c->smp->wrap_s, s, L->w);
+    float v = recon_texel_coord(c->smp->wrap_t, t, L->h);
+    int n = kind_taps(kind), first = kind == SAMPLE_CUBIC ? -1 : 0, y[4], k;
+    float i0, j0;
+    if (kind == SAMPLE_NEAREST) {
+        /* i = ⌊u⌋, j = ⌊v⌋ (eq. 8.12), NEAREST addressing rule. */
+        i0 = floorf(u);
+        j0 = floorf(v);
+        tp->fu = tp->fv = 0.0f;
+    } else {
+        float a = u - 0.5f, b = v - 0.5f;
+        i0 = floorf(a);
+        j0 = floorf(b);
+        tp->fu = a - i0;
+        tp->fv = b - j0;
+    }
+    axis_index(c->smp->wrap_s, i0, L->w, n, first, kind != SAMPLE_NEAREST, tp->col);
+    axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y);
+    for (k = 0; k < n; ++k) {
+        const unsigned char *r = y[k] < 0 ? NULL : L->data + (size_t)y[k] * L->stride;
+        tp->row[k] = r;
+        if (!r) continue;
+        if (tp->col[0] >= 0) SAMPLE_PREFETCH(r + (size_t)tp->col[0] * tb);
+        if (tp->col[n - 1] >= 0) SAMPLE_PREFETCH(r + (size_t)tp->col[n - 1] * tb + (tb - 1));
+    }
+}
+
+static inline v4f fetch(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
+                        const unsigned char *row, int col)
+{
+    if (!row || col < 0) return v4_load(c->border);
+    return tex_decode_v4(fmt, nc, row + (size_t)col * tb);
+}
+
+/* recon_level on planned taps. Returns the texels read. */
+static inline uint32_t run_level(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
+                                 sample_filter kind, int lv, const fast_taps *tp, float out[4],
+                                 float dds[4], float ddt[4])
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    uint32_t n;
+    if (kind == SAMPLE_NEAREST) {
+        v4_store(out, fetch(c, fmt, nc, tb, tp->row[0], tp->col[0]));
+        if (dds) v4_store(dds, v4_set1(0.0f));
+        if (ddt) v4_store(ddt, v4_set1(0.0f));
+        return 1;
+    }
+    if (kind == SAMPLE_LINEAR) {
+        v4f T[4];
+        T[0] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[0]);
+        T[1] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[1]);
+        T[2] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[0]);
+        T[3] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[1]);
+        recon_bilerp(T, tp->fu, tp->fv, out, dds, ddt);
+        n = 4;
+    } else {
+        double wx[4], wy[4], dwx[4], dwy[4];
+        v4f T[16];
+        int x, y;
+        cubic_weights(c->smp->cubic, tp->fu, wx, dwx);
+        cubic_weights(c->smp->cubic, tp->fv, wy, dwy);
+        for (y = 0; y < 4; ++y)
+            for (x = 0; x < 4; ++x) T[4 * y + x] = fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]);
+        recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0,
+                            out, dds, ddt);
+        n = 16;
+    }
+    /* ∂/∂s = ∂/∂u · w, as recon_level. */
+    if (dds) v4_store(dds, v4_mul(v4_load(dds), v4_set1((float)L->w)));
+    if (ddt) v4_store(ddt, v4_mul(v4_load(ddt), v4_set1((float)L->h)));
+    return n;
+}
+
+static inline void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
+                              const lod_choice *fixed, size_t tb, fast_plan *pl)
+{
+    const sample_query *q = &a->queries[i];
+    pl->border = !batch_query_finite(a, i);
+    if (pl->border) return;
+    if (fixed) {
+        pl->ch = *fixed;
+        pl->lam = 0.0f;
+    } else {
+        pl->lam = lod_lambda(c, lod_lambda_base(c, q), a->lod_bias ? a->lod_bias[i] : 0.0f);
+        pl->ch = lod_select(c, pl->lam);
+    }
+    plan_level(c, pl->ch.level0, pl->ch.kind, q->s, q->t, tb, &pl->tp[0]);
+    if (pl->ch.level1 >= 0) plan_level(c, pl->ch.level1, pl->ch.kind, q->s, q->t, tb, &pl->tp[1]);
+}
+
+/* sampler.c's run_query + gl_apply for a planned query. */
+static inline void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
+                             const fast_plan *pl, sample_format fmt, int nc, size_t tb)
+{
+    float *out = a->rgba + 4 * i;
+    float *dds = a->drgba_ds ? a->drgba_ds + 4 * i : NULL;
+    float *ddt = a->drgba_dt ? a->drgba_dt + 4 * i : NULL;
+    uint32_t n;
+    if (pl->border) {
+        v4_store(out, v4_load(c->border));
+        if (dds) v4_store(dds, v4_set1(0.0f));
+        if (ddt) v4_store(ddt, v4_set1(0.0f));
+        if (a->stats) {
+            a->stats[i].texels = 0;
+            a->stats[i].level0 = a->stats[i].level1 = -1;
+            a->stats[i].level_frac = 0.0f;
+            a->stats[i].lod = 0.0f;
+        }
+        return;
+    }
+    n = run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level0, &pl->tp[0], out, dds, ddt);
+    if (pl->ch.level1 >= 0) {
+        float o1[4], ds1[4], dt1[4];
+        n += run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level1, &pl->tp[1], o1,
+                       dds ? ds1 : NULL, ddt ? dt1 : NULL);
+        recon_blend(out, o1, pl->ch.frac);
+        if (dds) recon_blend(dds, ds1, pl->ch.frac);
+        if (ddt) recon_blend(ddt, dt1, pl->ch.frac);
+    }
+    if (a->stats) {
+        a->stats[i].texels = n;
+        a->stats[i].level0 = (int16_t)pl->ch.level0;
+        a->stats[i].level1 = (int16_t)pl->ch.level1;
+        a->stats[i].level_frac = pl->ch.frac;
+        a->stats[i].lod = pl->lam;
+    }
+}
+
+/* The batch loop, generic over the texel format and channel count; each
+ * instantiation below has them as constants. */
+static inline void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
+                                 int nc)
+{
+    const size_t tb = (size_t)nc * (fmt == SAMPLE_FORMAT_F32 ? 4u : (fmt == SAMPLE_FORMAT_F16 ? 2u : 1u));
+    const sample_sampler *smp = c->smp;
+    lod_choice mn = lod_select(c, 1.0f), mg = lod_select(c, -1.0f);
+    /* λ only picks between two identical choices: a non-mipmapped min filter
+     * whose per-level filter is the mag filter's (lod_select then returns
+     * level_base and that filter for every λ). Stats report λ, so they need
+     * it computed. */
+    int fixed = !a->stats &&
+                (smp->min_filter == SAMPLE_NEAREST || smp->min_filter == SAMPLE_LINEAR ||
+                 smp->min_filter == SAMPLE_CUBIC) &&
+                mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
+    size_t i, k;
+    for (i = 0; i < a->count; i += FAST_BLOCK) {
+        fast_plan plan[FAST_BLOCK];
+        size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
+        for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed ? &mg : NULL, tb, &plan[k]);
+        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], fmt, nc, tb);
+    }
+}
+
+#define FAST_GL_KERNEL(fmt, nc)                                                \
+    static void fast_gl_##fmt##_##nc(const sample_ctx *c, const sample_batch_args *a) \
+    {                                                                          \
+        fast_gl_batch(c, a, SAMPLE_FORMAT_##fmt, nc);                          \
+    }
+#define FAST_GL_KERNELS(fmt)                                                   \
+    FAST_GL_KERNEL(fmt, 1) FAST_GL_KERNEL(fmt, 2) FAST_GL_KERNEL(fmt, 3) FAST_GL_KERNEL(fmt, 4)
+FAST_GL_KERNELS(F32)
+FAST_GL_KERNELS(F16)
+FAST_GL_KERNELS(UNORM8)
+FAST_GL_KERNELS(SRGB8)
+
+#define FAST_GL_ROW(fmt)                                                       \
+    [SAMPLE_FORMAT_##fmt] = {fast_gl_##fmt##_1, fast_gl_##fmt##_2, fast_gl_##fmt##_3, fast_gl_##fmt##_4}
+static const fast_gl_fn fast_gl_table[SAMPLE_FORMAT_COUNT][4] = {
+    FAST_GL_ROW(F32), FAST_GL_ROW(F16), FAST_GL_ROW(UNORM8), FAST_GL_ROW(SRGB8),
+};
+_Static_assert(SAMPLE_FORMAT_COUNT == 4, "one row of fast_gl_table per format");
+
+fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a)
+{
+    (void)a;
+    if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE) return NULL;
+    return fast_gl_table[c->tex->format][c->tex->channels - 1];
+}

@@ -1,0 +1,294 @@
+/*
+ * The fast path of sample_batch (fast_gl.c) against the general path
+ * (SAMPLE_OPT_SCALAR_PATH): for every format × channel count, wrap mode,
+ * OpenGL min/mag filter (cubic included) and option, random queries in
+ * range, out of range, huge, negative and non-finite, with and without
+ * derivatives, per-query bias, corners and stats, the results must be
+ * memcmp-identical — and stay so for any batch size and thread count.
+ */
+#include "check.h"
+#include "internal.h"
+
+#include <pthread.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+static uint64_t rng_state = 0x243F6A8885A308D3ull;
+
+static uint32_t rnd(void)
+{
+    /* xorshift64*: a fixed sequence, so a failure reproduces. */
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return (uint32_t)((rng_state * 2685821657736338717ull) >> 32);
+}
+
+static float frand(float lo, float hi) { return lo + (hi - lo) * (float)(rnd() >> 8) / 16777216.0f; }
+
+/* A coordinate from one of the classes the fast path treats differently:
+ * in range, near the edges, a few periods out, huge, extreme, non-finite. */
+static float coord(void)
+{
+    switch (rnd() % 12) {
+    case 0: return frand(-0.05f, 0.05f);
+    case 1: return frand(0.95f, 1.05f);
+    case 2: return frand(-40.0f, 40.0f);
+    case 3: return frand(-1.0f, 1.0f) * 3e7f;
+    case 4: return (rnd() & 1 ? 1.0f : -1.0f) * 1e30f;
+    case 5: return (rnd() & 1 ? 1.0f : -1.0f) * 3.4e38f;
+    case 6: return rnd() % 64 == 0 ? NAN : (rnd() & 1 ? INFINITY : -INFINITY);
+    case 7: return (float)(rnd() % 33) / 32.0f; /* exact texel edges and centres */
+    default: return frand(0.0f, 1.0f);
+    }
+}
+
+static float deriv(void)
+{
+    switch (rnd() % 8) {
+    case 0: return 0.0f;
+    case 1: return frand(-1.0f, 1.0f) * 1e-4f;
+    case 2: return frand(-1.0f, 1.0f) * 10.0f;
+    case 3: return rnd() % 16 == 0 ? INFINITY : 1e20f;
+    default: return frand(-0.3f, 0.3f);
+    }
+}
+
+static sample_texture *make_texture(sample_format f, int nc, int w, int h)
+{
+    size_t n = (size_t)w * h * nc, bytes = n * sample_format_bytes(f), i;
+    unsigned char *data = malloc(bytes);
+    sample_image im;
+    sample_mip_params mp;
+    sample_texture *tex = NULL;
+    for (i = 0; i < n; ++i) {
+        float v = frand(-0.5f, 1.5f);
+        switch (f) {
+        case SAMPLE_FORMAT_F32: memcpy(data + 4 * i, &v, 4); break;
+        case SAMPLE_FORMAT_F16: {
+            /* Every half bit pattern but NaN (whose payload is not data). */
+            uint16_t hb = (uint16_t)rnd();
+            if ((hb & 0x7c00u) == 0x7c00u && (hb & 0x3ffu)) hb &= 0xfc00u;
+            memcpy(data + 2 * i, &hb, 2);
+            break;
+        }
+        default: data[i] = (unsigned char)rnd(); break;
+        }
+    }
+    im.width = w;
+    im.height = h;
+    im.channels = nc;
+    im.format = f;
+    im.data = data;
+    im.row_stride = 0;
+    sample_mip_params_init(&mp);
+    mp.wrap_s = mp.wrap_t = SAMPLE_WRAP_REPEAT;
+    CHECK(sample_texture_create(&im, &mp, &tex, NULL) == SAMPLE_OK, "create");
+    free(data);
+    return tex;
+}
+
+static void random_sampler(sample_sampler *s, int wrap, int min)
+{
+    static const sample_filter mags[3] = {SAMPLE_NEAREST, SAMPLE_LINEAR, SAMPLE_CUBIC};
+    sample_sampler_init(s);
+    s->wrap_s = (sample_wrap)wrap;
+    s->wrap_t = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
+    if (rnd() & 1) { /* swap, so that every mode is tested on both axes */
+        sample_wrap x = s->wrap_s;
+        s->wrap_s = s->wrap_t;
+        s->wrap_t = x;
+    }
+    s->min_filter = (sample_filter)min;
+    s->mag_filter = mags[rnd() % 3];
+    s->cubic = (sample_cubic)(rnd() % SAMPLE_CUBIC_COUNT);
+    s->options = rnd() & (SAMPLE_OPT_LEGACY_SWITCHOVER | SAMPLE_OPT_NEAREST_LEVEL_FLOOR | SAMPLE_OPT_CUBIC_CLAMP);
+    s->border_color[0] = 0.25f;
+    s->border_color[1] = -2.0f;
+    s->border_color[2] = 7.0f;
+    s->border_color[3] = 0.5f;
+    if (rnd() % 4 == 0) s->lod_bias = frand(-3.0f, 3.0f);
+    if (rnd() % 4 == 0) s->base_level = (int)(rnd() % 3);
+    if (rnd() % 4 == 0) s->max_level = s->base_level + (int)(rnd() % 3);
+    if (rnd() % 8 == 0) s->min_lod = frand(-1.0f, 2.0f), s->max_lod = s->min_lod + frand(0.0f, 3.0f);
+}
+
+enum { NQ = 240 };
+
+typedef struct outputs {
+    float rgba[NQ * 4], ds[NQ * 4], dt[NQ * 4];
+    sample_stats st[NQ];
+} outputs;
+
+static void fill_queries(sample_query *q, float *bias, sample_quad *quad)
+{
+    int i, k;
+    for (i = 0; i < NQ; ++i) {
+        q[i].s = coord();
+        q[i].t = rnd() % 3 ? coord() : q[i].s;
+        q[i].dsdx = deriv();
+        q[i].dtdx = deriv();
+        q[i].dsdy = deriv();
+        q[i].dtdy = deriv();
+        bias[i] = rnd() % 50 == 0 ? NAN : frand(-2.0f, 2.0f);
+        for (k = 0; k < 4; ++k) {
+            quad->st[k][0] = q[i].s;
+            quad->st[k][1] = rnd() % 200 == 0 ? INFINITY : q[i].t;
+        }
+        ++quad;
+    }
+}
+
+/* Run `count` queries in batches of `chunk`, through the general path when
+ * `scalar`; extras (derivatives, stats, bias, corners) by the bits of
+ * `what`. */
+static void run(const sample_texture *tex, sample_sampler s, int scalar, const sample_query *q,
+                const float *bias, const sample_quad *quad, unsigned what, size_t chunk, outputs *o)
+{
+    size_t i;
+    memset(o, 0xA5, sizeof *o);
+    if (scalar) s.options |= SAMPLE_OPT_SCALAR_PATH;
+    for (i = 0; i < NQ; i += chunk) {
+        sample_batch_args a;
+        memset(&a, 0, sizeof a);
+        a.count = NQ - i < chunk ? NQ - i : chunk;
+        a.queries = q + i;
+        a.rgba = o->rgba + 4 * i;
+        if (what & 1) a.drgba_ds = o->ds + 4 * i;
+        if (what & 2) a.drgba_dt = o->dt + 4 * i;
+        if (what & 4) a.stats = o->st + i;
+        if (what & 8) a.lod_bias = bias + i;
+        if (what & 16) a.corners = quad + i;
+        CHECK(sample_batch(tex, &s, &a) == SAMPLE_OK, "sample_batch");
+    }
+}
+
+static int same(const outputs *x, const outputs *y, const sample_texture *tex, const sample_sampler *s,
+                const sample_query *q)
+{
+    int i;
+    if (!memcmp(x, y, sizeof *x)) return 1;
+    for (i = 0; i < NQ; ++i) {
+        if (memcmp(x->rgba + 4 * i, y->rgba + 4 * i, 16) || memcmp(x->ds + 4 * i, y->ds + 4 * i, 16) ||
+            memcmp(x->dt + 4 * i, y->dt + 4 * i, 16) || memcmp(&x->st[i], &y->st[i], sizeof x->st[i])) {
+            fprintf(stderr,
+                    "query %d (s %.9g t %.9g J %g %g %g %g) format %d ch %d wrap %d/%d min %d mag %d: "
+                    "%.9g %.9g vs %.9g %.9g\n",
+                    i, q[i].s, q[i].t, q[i].dsdx, q[i].dtdx, q[i].dsdy, q[i].dtdy, (int)tex->format,
+                    tex->channels, s->wrap_s, s->wrap_t, s->min_filter, s->mag_filter, x->rgba[4 * i],
+                    x->rgba[4 * i + 3], y->rgba[4 * i], y->rgba[4 * i + 3]);
+            break;
+        }
+    }
+    return 0;
+}
+
+static outputs ref, got;
+static sample_query qs[NQ];
+static float biases[NQ];
+static sample_quad quads[NQ];
+
+static void test_identical_all_combinations(void)
+{
+    /* Sizes: an odd non-power-of-two pyramid, a power-of-two one, and a
+     * one-texel-wide strip (every bilinear footprint wraps). */
+    static const int sizes[3][2] = {{13, 7}, {16, 8}, {1, 5}};
+    int f, nc, z, wrap, min, fails = 0;
+    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
+        for (nc = 1; nc <= 4; ++nc)
+            for (z = 0; z < 3; ++z) {
+                sample_texture *tex = make_texture((sample_format)f, nc, sizes[z][0], sizes[z][1]);
+                if (!tex) continue;
+                for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
+                    for (min = 0; min < SAMPLE_FILTER_COUNT; ++min) {
+                        sample_sampler s;
+                        unsigned what = rnd() & 31;
+                        random_sampler(&s, wrap, min);
+                        fill_queries(qs, biases, quads);
+                        run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
+                        run(tex, s, 0, qs, biases, quads, what, NQ, &got);
+                        if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) break;
+                    }
+                CHECK(fails == 0, "%d configurations differ (format %d, %d channels)", fails, f, nc);
+                sample_texture_destroy(tex);
+            }
+}
+
+static void test_batch_sizes(void)
+{
+    static const size_t chunks[4] = {1, 7, 16, 1000};
+    sample_texture *tex = make_texture(SAMPLE_FORMAT_F16, 4, 37, 21);
+    int rep, c;
+    for (rep = 0; rep < 40; ++rep) {
+        sample_sampler s;
+        unsigned what = 31;
+        random_sampler(&s, (int)(rnd() % SAMPLE_WRAP_COUNT), (int)(rnd() % SAMPLE_FILTER_COUNT));
+        fill_queries(qs, biases, quads);
+        run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
+        for (c = 0; c < 4; ++c) {
+            run(tex, s, 0, qs, biases, quads, what, chunks[c], &got);
+            CHECK(same(&ref, &got, tex, &s, qs), "batch size %zu differs", chunks[c]);
+        }
+    }
+    sample_texture_destroy(tex);
+}
+
+typedef struct job {
+    const sample_texture *tex;
+    const sample_sampler *s;
+    size_t first, count;
+    float *rgba;
+} job;
+
+static void *worker(void *p)
+{
+    job *j = (job *)p;
+    sample_batch_args a;
+    memset(&a, 0, sizeof a);
+    a.count = j->count;
+    a.queries = qs + j->first;
+    a.rgba = j->rgba + 4 * j->first;
+    sample_batch(j->tex, j->s, &a);
+    return NULL;
+}
+
+static void test_threads(void)
+{
+    sample_texture *tex = make_texture(SAMPLE_FORMAT_SRGB8, 3, 64, 64);
+    sample_sampler s;
+    static float par[NQ * 4];
+    int nt, t;
+    random_sampler(&s, SAMPLE_WRAP_REPEAT, SAMPLE_LINEAR_MIPMAP_LINEAR);
+    fill_queries(qs, biases, quads);
+    run(tex, s, 1, qs, biases, quads, 0, NQ, &ref);
+    for (nt = 2; nt <= 4; ++nt) {
+        pthread_t th[4];
+        job jobs[4];
+        for (t = 0; t < nt; ++t) {
+            jobs[t].tex = tex;
+            jobs[t].s = &s;
+            jobs[t].first = (size_t)NQ * t / nt;
+            jobs[t].count = (size_t)NQ * (t + 1) / nt - jobs[t].first;
+            jobs[t].rgba = par;
+            CHECK(pthread_create(&th[t], NULL, worker, &jobs[t]) == 0, "pthread_create");
+        }
+        for (t = 0; t < nt; ++t) pthread_join(th[t], NULL);
+        CHECK(!memcmp(par, ref.rgba, sizeof par), "%d threads differ", nt);
+    }
+    sample_texture_destroy(tex);
+}
+
+static void test_scalar_option_value(void)
+{
+    /* Additive: the next free bit after the existing options. */
+    CHECK(SAMPLE_OPT_SCALAR_PATH == 1u << 4, "bit %u", (unsigned)SAMPLE_OPT_SCALAR_PATH);
+}
+
+int main(void)
+{
+    RUN(test_identical_all_combinations);
+    RUN(test_batch_sizes);
+    RUN(test_threads);
+    RUN(test_scalar_option_value);
+    return check_finish();
+}
