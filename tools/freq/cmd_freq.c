@@ -87,8 +87,8 @@ static void render_zones(const fq_plan *plan, float **zone)
     }
     for (b = 0; b < plan->nbackends; ++b) {
         char err[256] = "";
-        void *ctx = plan->backends[b]->prepare(plan->backends[b], tex, texels, FQ_ZONE_N, err,
-                                               sizeof err);
+        void *ctx = plan->backends[b]->prepare(plan->backends[b], tex, texels, FQ_ZONE_N, 1,
+                                               err, sizeof err);
         if (ctx) {
             zone[b] = fq_zone_render(plan->backends[b], ctx, err, sizeof err);
             plan->backends[b]->release(ctx);

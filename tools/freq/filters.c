@@ -19,12 +19,13 @@ typedef struct lib_ctx {
 } lib_ctx;
 
 static void *lib_prepare(const fq_backend *b, const sample_texture *tex, const float *texels,
-                         int n, char *err, size_t errlen)
+                         int n, int channels, char *err, size_t errlen)
 {
     const lib_config *cfg = (const lib_config *)b->config;
     lib_ctx *c = (lib_ctx *)malloc(sizeof *c);
     (void)texels;
     (void)n;
+    (void)channels;
     if (!c) {
         snprintf(err, errlen, "out of memory");
         return NULL;

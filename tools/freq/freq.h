@@ -17,7 +17,7 @@
  *
  * GEOMETRY (doc/frequency-tests.md §2). Texel space of the base level,
  * u = s·N, v = t·N, texel centres at integers + ½. The grating is
- * g(u, v) = cos(2π(p·u + q·v)/N) on an N × N REPEAT texture: p and q are
+ * g(u, v) = e^{2πi(p·u + q·v)/N} on an N × N REPEAT texture: p and q are
  * integers, so it has exactly (p, q) cycles across the texture and tiles
  * without a seam; its frequency is f = √(p² + q²)/N cycles/texel at the
  * angle θ = atan2(q, p). The screen maps pixel (x, y) to
@@ -64,16 +64,17 @@ typedef struct fq_wave {
  * theta on an N-texel texture. f = 0 gives (0, 0). */
 fq_wave fq_wave_nearest(int n, double f, double theta);
 
-/* The one-channel float texture of the grating (a constant 1 for p = q = 0),
- * with a box-filtered REPEAT pyramid built by the library. */
+/* The float texture of the complex grating e^{2πi(p·u + q·v)/N}: channel 0
+ * the cosine, channel 1 the sine (measure.c says why), with a box-filtered
+ * REPEAT pyramid built by the library. p = q = 0 is the constant (1, 0). */
 sample_status fq_grating_texture(const fq_wave *w, sample_texture **out, sample_error *err);
 
-/* A texture from N × N one-channel float texels: box pyramid, REPEAT
- * (what every libsample configuration in the sweep reads). */
-sample_status fq_texture_create(const float *texels, int n, sample_texture **out,
+/* A texture from N × N float texels of 1 or 2 channels: box pyramid,
+ * REPEAT (what every libsample configuration in the sweep reads). */
+sample_status fq_texture_create(const float *texels, int n, int channels, sample_texture **out,
                                 sample_error *err);
 
-/* The grating's texel values (N × N floats, row v = 0 first); for the
+/* The grating's texel values (N × N × 2 floats, row v = 0 first); for the
  * texture above and for backends that build their own files. */
 float *fq_grating_texels(const fq_wave *w);
 
@@ -93,11 +94,11 @@ typedef int (*fq_sample_fn)(void *ctx, const sample_query *q, size_t count, floa
 typedef struct fq_backend {
     const char *name;  /* as in the CSV, e.g. "trilinear" */
     const char *label; /* for plots and tables */
-    /* Prepare for one texture (levels built by the library in `tex`, texels
-     * in `texels` for backends that need a file). Returns a context for
-     * sample() or NULL with a message in err. */
+    /* Prepare for one texture (levels built by the library in `tex`; its
+     * N × N texels of `channels` floats in `texels`, for backends that need
+     * a file). Returns a context for sample() or NULL with a message. */
     void *(*prepare)(const struct fq_backend *b, const sample_texture *tex, const float *texels,
-                     int n, char *err, size_t errlen);
+                     int n, int channels, char *err, size_t errlen);
     fq_sample_fn sample;
     void (*release)(void *ctx);
     const void *config; /* backend data: the sampler state for libsample */
@@ -124,7 +125,7 @@ typedef struct fq_layout {
     uint64_t seed;
 } fq_layout;
 
-/* Defaults: width 32, rows 2, phases 16, subtexel −1, lattice 1, seed 1. */
+/* Defaults: width 16, rows 1, phases 64, subtexel −1, lattice 1, seed 1. */
 void fq_layout_init(fq_layout *l, double m, double r);
 
 typedef struct fq_result {
@@ -132,15 +133,16 @@ typedef struct fq_result {
     double alias_F;  /* |F − round(F)|: where the output shows it */
     double re, im;   /* coherent complex response H */
     double amp;      /* |H|: response below Nyquist, leakage above */
-    double stderr_;  /* standard error of amp from the fit residual */
-    double residual; /* RMS of what the fit leaves, as an amplitude (√2·RMS) */
+    double stderr_;  /* standard error of amp, clustered by offset */
+    double residual; /* RMS of |z − H·e^{iφ}|: what the fit leaves */
     double texels;   /* texels read per sample (NaN if not counted) */
     double ns;       /* wall time per sample, nanoseconds */
 } fq_result;
 
 /* Sample the texture of wave w through `b` (context ctx) on the layout and
- * fit y = c + a·cos φ + b·sin φ, φ the grating's phase at each sample's
- * exact position; H = a − i·b. Returns 0, or −1 with a message. */
+ * fit z = H·e^{iφ} by least squares, z = channel 0 + i·channel 1 and φ the
+ * grating's phase at each sample's exact position. Returns 0, or −1 with a
+ * message. */
 int fq_measure(const fq_backend *b, void *ctx, const fq_wave *w, const fq_layout *l,
                fq_result *out, char *err, size_t errlen);
 

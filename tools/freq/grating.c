@@ -22,7 +22,7 @@ fq_wave fq_wave_nearest(int n, double f, double theta)
 float *fq_grating_texels(const fq_wave *w)
 {
     int n = w->n, i, j;
-    float *t = (float *)malloc((size_t)n * (size_t)n * sizeof *t);
+    float *t = (float *)malloc((size_t)n * (size_t)n * 2 * sizeof *t);
     long two_n = 2L * n;
     if (!t) return NULL;
     for (j = 0; j < n; ++j)
@@ -32,20 +32,20 @@ float *fq_grating_texels(const fq_wave *w)
              * first keeps the argument small, so every period is bit-identical
              * (a float cos of a large argument would not be). */
             long a = ((long)w->p * (2L * i + 1) + (long)w->q * (2L * j + 1)) % two_n;
-            if (a < 0) a += two_n;
-            t[(size_t)j * n + i] =
-                (w->p == 0 && w->q == 0) ? 1.0f : (float)cos(FQ_PI * (double)a / n);
+            double ph = FQ_PI * (double)(a < 0 ? a + two_n : a) / n;
+            t[2 * ((size_t)j * n + i)] = (float)cos(ph);
+            t[2 * ((size_t)j * n + i) + 1] = (float)sin(ph);
         }
     return t;
 }
 
-sample_status fq_texture_create(const float *texels, int n, sample_texture **out,
+sample_status fq_texture_create(const float *texels, int n, int channels, sample_texture **out,
                                 sample_error *err)
 {
     sample_image img = {0};
     sample_mip_params mip;
     img.width = img.height = n;
-    img.channels = 1;
+    img.channels = channels;
     img.format = SAMPLE_FORMAT_F32;
     img.data = texels;
     sample_mip_params_init(&mip);
@@ -67,7 +67,7 @@ sample_status fq_grating_texture(const fq_wave *w, sample_texture **out, sample_
         }
         return SAMPLE_E_OUT_OF_MEMORY;
     }
-    st = fq_texture_create(t, w->n, out, err);
+    st = fq_texture_create(t, w->n, 2, out, err);
     free(t);
     return st;
 }

@@ -1,20 +1,24 @@
 /*
- * The measurement (doc/frequency-tests.md §3): sample a grating on a small
- * screen at many offsets and fit the known frequency by least squares.
+ * The measurement (doc/frequency-tests.md §3): sample the complex grating
+ * e^{2πi k·u} (cos in channel 0, sin in channel 1) on a small screen at
+ * many offsets and fit its known frequency by least squares.
  *
  * Why the fit is unbiased. A filter that is linear in the texels and
  * periodic on the texel lattice of each level it reads turns the grating
- * exp(2πi k·p) into Σ_n c_n exp(2πi (k + n)·p), n over the reciprocal
- * lattice of those levels: n = 0 is the coherent response H = c_0, the rest
- * are images of the texel grid. The model c + a·cos φ + b·sin φ, φ the
- * grating's phase at each sample's exact position, holds the n = 0 term
- * exactly (Re(H e^{iφ}) = Re H·cos φ − Im H·sin φ), so least squares
- * returns it without error; each image term carries a factor exp(2πi n·o)
- * relative to it, o the screen offset, whose mean over offsets uniform on the
- * torus is 0, so it adds zero-mean noise, not bias, and the standard error
- * reported says how much. Above Nyquist the pixels see the same samples as a
- * sinusoid at the alias frequency F − round(F) with the same phase φ, so the
- * one fit measures leakage there too.
+ * e^{2πi k·p} into Σ_n c_n e^{2πi (k + n)·p}, n over the reciprocal lattice
+ * of those levels: n = 0 is the coherent response H = c_0, the rest are
+ * images of the texel grid. The least-squares fit of z ≈ H·e^{iφ}, φ the
+ * grating's phase at each sample's exact position, is Ĥ = mean(z·e^{−iφ})
+ * (|e^{iφ}| = 1), which holds c_0 exactly plus c_n·mean(e^{2πi n·p}) for
+ * each image; with every offset uniform on the torus the expectation of
+ * each of those is 0, so Ĥ is unbiased, and the standard error reported
+ * says how far one run may be off. A real grating would instead fold the
+ * image n = −2k onto the conjugate term wherever 2k is a lattice vector
+ * (a level's Nyquist frequency), making the result depend on where the
+ * texel centres fall on the wave; the complex grating is the same linear
+ * system averaged over that phase. Above Nyquist the pixels see the same
+ * samples as a sinusoid at the alias frequency F − round(F) with the same
+ * phase φ, so the one fit measures leakage there too.
  */
 #define _POSIX_C_SOURCE 199309L
 #include "freq.h"
@@ -29,9 +33,9 @@ void fq_layout_init(fq_layout *l, double m, double r)
 {
     l->m = m;
     l->r = r;
-    l->width = 32;
-    l->rows = 2;
-    l->phases = 16;
+    l->width = 16;
+    l->rows = 1;
+    l->phases = 64;
     l->subtexel = -1.0;
     l->lattice = 1;
     l->seed = 1;
@@ -48,6 +52,8 @@ static double next_uniform(uint64_t *state)
     return (double)(z >> 11) * (1.0 / 9007199254740992.0);
 }
 
+static double frac1(double x) { return x - floor(x); }
+
 /* x mod n in [0, n). */
 static double wrap_n(double x, double n)
 {
@@ -61,6 +67,7 @@ int fq_layout_queries(const fq_wave *w, const fq_layout *l, sample_query **queri
     size_t n = (size_t)l->width * (size_t)l->rows * (size_t)l->phases, k = 0;
     double N = w->n, c = cos(w->theta), s = sin(w->theta);
     uint64_t state = l->seed;
+    double xi_u, xi_v;
     sample_query *q;
     double *ph;
     int j, x, y;
@@ -75,14 +82,17 @@ int fq_layout_queries(const fq_wave *w, const fq_layout *l, sample_query **queri
         free(ph);
         return -1;
     }
+    /* One uniform shift ξ for the whole set; the offsets are the R2
+     * low-discrepancy sequence (Roberts 2018: multiples of 1/φ₂ and 1/φ₂²,
+     * φ₂ the plastic number) shifted by ξ mod 1. Each offset is then
+     * uniform on the torus (what unbiasedness needs) while the set covers
+     * the texel cells of every level far more evenly than independent
+     * draws, so the image terms cancel to O(log P / P), not O(1/√P). */
+    xi_u = next_uniform(&state);
+    xi_v = next_uniform(&state);
     for (j = 0; j < l->phases; ++j) {
-        double ou, ov;
-        /* Normal mode: u stratified over the texture (one stratum per
-         * offset), v uniform: each offset is uniform on the torus, which is
-         * what makes the image terms average out. */
-        double xi = next_uniform(&state), eta = next_uniform(&state);
-        ou = N * ((j + xi) / l->phases);
-        ov = N * eta;
+        double ou = N * frac1(xi_u + j * 0.75487766624669276),
+               ov = N * frac1(xi_v + j * 0.56984029099805327);
         if (l->subtexel >= 0.0) {
             double L = l->lattice > 0 ? l->lattice : 1;
             ou = L * floor(ou / L) + l->subtexel;
@@ -118,46 +128,6 @@ int fq_layout_queries(const fq_wave *w, const fq_layout *l, sample_query **queri
     return 0;
 }
 
-/* Solve the symmetric 3 × 3 system A x = b by Gaussian elimination with
- * partial pivoting, also returning A⁻¹ (for the standard errors). Returns
- * 0, or −1 when A is singular to working precision. */
-static int solve3(double A[3][3], const double b[3], double x[3], double inv[3][3])
-{
-    double M[3][7];
-    int i, j, k;
-    for (i = 0; i < 3; ++i) {
-        for (j = 0; j < 3; ++j) {
-            M[i][j] = A[i][j];
-            M[i][3 + j] = (i == j);
-        }
-        M[i][6] = b[i];
-    }
-    for (k = 0; k < 3; ++k) {
-        int piv = k;
-        double scale = fabs(A[0][0]) + fabs(A[1][1]) + fabs(A[2][2]);
-        for (i = k + 1; i < 3; ++i)
-            if (fabs(M[i][k]) > fabs(M[piv][k])) piv = i;
-        if (!(fabs(M[piv][k]) > 1e-12 * scale)) return -1;
-        if (piv != k)
-            for (j = 0; j < 7; ++j) {
-                double t = M[k][j];
-                M[k][j] = M[piv][j];
-                M[piv][j] = t;
-            }
-        for (i = 0; i < 3; ++i) {
-            double fac;
-            if (i == k) continue;
-            fac = M[i][k] / M[k][k];
-            for (j = k; j < 7; ++j) M[i][j] -= fac * M[k][j];
-        }
-    }
-    for (i = 0; i < 3; ++i) {
-        x[i] = M[i][6] / M[i][i];
-        for (j = 0; j < 3; ++j) inv[i][j] = M[i][3 + j] / M[i][i];
-    }
-    return 0;
-}
-
 static double now_ns(void)
 {
     struct timespec ts;
@@ -169,9 +139,8 @@ int fq_measure(const fq_backend *b, void *ctx, const fq_wave *w, const fq_layout
                fq_result *out, char *err, size_t errlen)
 {
     sample_query *q;
-    double *ph, texels = 0.0, t0, t1;
-    double A[3][3] = {{0}}, rhs[3] = {0}, beta[3], inv[3][3], yy = 0.0;
-    size_t n, i;
+    double *ph, texels = 0.0, t0, t1, sr = 0.0, si = 0.0, *hr, *hi, rss = 0.0, var = 0.0;
+    size_t n, i, j, per = (size_t)l->width * (size_t)l->rows, P = (size_t)l->phases;
     float *rgba;
     int rc;
     memset(out, 0, sizeof *out);
@@ -181,12 +150,16 @@ int fq_measure(const fq_backend *b, void *ctx, const fq_wave *w, const fq_layout
         return -1;
     }
     rgba = (float *)malloc(n * 4 * sizeof *rgba);
-    if (!rgba) {
+    hr = (double *)malloc(2 * P * sizeof *hr);
+    if (!rgba || !hr) {
         free(q);
         free(ph);
+        free(rgba);
+        free(hr);
         snprintf(err, errlen, "out of memory for %zu results", n);
         return -1;
     }
+    hi = hr + P;
     t0 = now_ns();
     rc = b->sample(ctx, q, n, rgba, &texels, err, errlen);
     t1 = now_ns();
@@ -194,58 +167,50 @@ int fq_measure(const fq_backend *b, void *ctx, const fq_wave *w, const fq_layout
     if (rc != 0) {
         free(ph);
         free(rgba);
+        free(hr);
         return -1;
     }
     out->F = w->f * l->m;
     out->alias_F = fabs(out->F - floor(out->F + 0.5));
     out->texels = b->counts_texels ? texels / (double)n : NAN;
     out->ns = (t1 - t0) / (double)n;
-    if (w->p == 0 && w->q == 0) {
-        /* The constant texture (1): the response is the mean output. */
-        double sum = 0.0, sum2 = 0.0, mean;
-        for (i = 0; i < n; ++i) {
-            sum += rgba[4 * i];
-            sum2 += (double)rgba[4 * i] * rgba[4 * i];
+    /* Ĥ = mean of z·e^{−iφ}, kept per offset for the standard error. */
+    for (j = 0; j < P; ++j) {
+        double ar = 0.0, ai = 0.0;
+        for (i = j * per; i < (j + 1) * per; ++i) {
+            double zr = rgba[4 * i], zi = rgba[4 * i + 1], c = cos(ph[i]), s = sin(ph[i]);
+            ar += zr * c + zi * s;
+            ai += zi * c - zr * s;
         }
-        mean = sum / (double)n;
-        out->re = out->amp = mean;
-        out->residual = sqrt(2.0 * fmax(0.0, sum2 / (double)n - mean * mean));
-        out->stderr_ = out->residual / sqrt(2.0 * (double)n);
-        free(ph);
-        free(rgba);
-        return 0;
+        hr[j] = ar / (double)per;
+        hi[j] = ai / (double)per;
+        sr += hr[j];
+        si += hi[j];
     }
-    /* Normal equations of y = c + a·cos φ + b·sin φ. */
+    out->re = sr / (double)P;
+    out->im = si / (double)P;
+    out->amp = hypot(out->re, out->im);
     for (i = 0; i < n; ++i) {
-        double x[3] = {1.0, cos(ph[i]), sin(ph[i])}, y = rgba[4 * i];
-        int r, c;
-        for (r = 0; r < 3; ++r) {
-            for (c = 0; c < 3; ++c) A[r][c] += x[r] * x[c];
-            rhs[r] += x[r] * y;
-        }
-        yy += y * y;
+        double c = cos(ph[i]), s = sin(ph[i]);
+        double er = rgba[4 * i] - (out->re * c - out->im * s);
+        double ei = rgba[4 * i + 1] - (out->re * s + out->im * c);
+        rss += er * er + ei * ei;
     }
+    /* Standard error clustered by offset: the residual is the image terms,
+     * which repeat from pixel to pixel when m is an integer, so only the
+     * offsets are independent; the spread of the per-offset estimates,
+     * projected on Ĥ's direction (delta method for |Ĥ|), divided by √P.
+     * Conservative with low-discrepancy offsets. */
+    for (j = 0; j < P; ++j) {
+        double dr = hr[j] - out->re, di = hi[j] - out->im;
+        double d = out->amp > 0.0 ? (dr * out->re + di * out->im) / out->amp
+                                  : sqrt(0.5 * (dr * dr + di * di));
+        var += d * d;
+    }
+    out->stderr_ = P > 1 ? sqrt(var / ((double)P * (double)(P - 1))) : NAN;
+    out->residual = sqrt(rss / (double)n);
     free(ph);
     free(rgba);
-    if (solve3(A, rhs, beta, inv) != 0) {
-        snprintf(err, errlen,
-                 "degenerate fit at (p, q) = (%d, %d): the offsets do not spread the phase",
-                 w->p, w->q);
-        return -1;
-    }
-    {
-        /* RSS = yᵀy − βᵀXᵀy for the least-squares β. */
-        double rss = fmax(0.0, yy - (beta[0] * rhs[0] + beta[1] * rhs[1] + beta[2] * rhs[2]));
-        double s2 = n > 3 ? rss / (double)(n - 3) : 0.0;
-        double a = beta[1], bb = beta[2], amp = hypot(a, bb);
-        double va = s2 * inv[1][1], vb = s2 * inv[2][2], cab = s2 * inv[1][2];
-        out->re = a;
-        out->im = -bb;
-        out->amp = amp;
-        /* Delta method for |H|; at H = 0 the spread of either component. */
-        out->stderr_ = amp > 0.0 ? sqrt(fmax(0.0, a * a * va + bb * bb * vb + 2.0 * a * bb * cab)) / amp
-                                 : sqrt(0.5 * (va + vb));
-        out->residual = sqrt(2.0 * rss / (double)n);
-    }
+    free(hr);
     return 0;
 }

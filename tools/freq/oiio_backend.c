@@ -21,7 +21,7 @@ typedef struct oiio_ctx {
 
 
 static void *oiio_prepare(const fq_backend *b, const sample_texture *tex, const float *texels,
-                          int n, char *err, size_t errlen)
+                          int n, int channels, char *err, size_t errlen)
 {
     oiio_ctx *c = (oiio_ctx *)calloc(1, sizeof *c);
     float *rgba = (float *)malloc((size_t)n * n * 4 * sizeof *rgba);
@@ -34,7 +34,9 @@ static void *oiio_prepare(const fq_backend *b, const sample_texture *tex, const 
         return NULL;
     }
     for (k = 0; k < (size_t)n * n; ++k) {
-        rgba[4 * k] = rgba[4 * k + 1] = rgba[4 * k + 2] = texels[k];
+        rgba[4 * k] = texels[channels * k];
+        rgba[4 * k + 1] = channels > 1 ? texels[channels * k + 1] : 0.0f;
+        rgba[4 * k + 2] = 0.0f;
         rgba[4 * k + 3] = 1.0f;
     }
     snprintf(c->path, sizeof c->path, "%s/grating_%s.exr", ((const fq_oiio_cfg *)b->config)->dir,

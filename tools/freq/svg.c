@@ -23,7 +23,9 @@ static void svg_panel(const fq_plan *plan, const fq_sweep *s, int im, int it, in
     fq_buf_printf(out, "<g class=\"panel\" data-m=\"%g\">\n", plan->m[im]);
     fq_buf_printf(out, "<text class=\"title\" x=\"%.2f\" y=\"%.2f\">m = %g, &#952; = %g&#176;, r = %g</text>\n",
                   x0, y0 - 8, plan->m[im], plan->theta_deg[it], plan->r[ir]);
-    /* Grid every ¼ cycle/pixel and every ¼ of response, labelled every ½. */
+    /* Grid every ¼ cycle/pixel and every ¼ of response, labelled every ½;
+     * a tick label's x (xtick) or y (ytick) is its grid line's, so the
+     * labels locate the data (tests/freq_cli.c reads them back). */
     for (v = 0.0; v <= plan->f_max + 1e-9; v += 0.25) {
         double x = x0 + fq_plot_x(plan, v);
         fq_buf_printf(out, "<line class=\"grid\" x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n",
@@ -38,7 +40,7 @@ static void svg_panel(const fq_plan *plan, const fq_sweep *s, int im, int it, in
                       x0, y, x0 + aw, y);
         if (fmod(v, 0.5) == 0.0)
             fq_buf_printf(out, "<text class=\"ytick\" x=\"%.2f\" y=\"%.2f\">%g</text>\n", x0 - 4,
-                          y + 4, v);
+                          y, v);
     }
     fq_buf_printf(out, "<rect class=\"axes\" x=\"%.2f\" y=\"%.2f\" width=\"%d\" height=\"%d\"/>\n",
                   x0, y0, aw, ah);
@@ -72,7 +74,7 @@ void fq_svg_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, f
                   ".axes{fill:none;stroke:#808080;stroke-width:1}"
                   ".ideal{fill:none;stroke:#000;stroke-width:1.5;stroke-dasharray:5,3}"
                   ".curve{fill:none;stroke-width:1.5}"
-                  ".xtick{text-anchor:middle}.ytick{text-anchor:end}.xlabel{text-anchor:end}"
+                  ".xtick{text-anchor:middle}.ytick{text-anchor:end;dominant-baseline:middle}.xlabel{text-anchor:end}"
                   ".title{font-weight:bold}</style>\n"
                   "<rect width=\"100%%\" height=\"100%%\" fill=\"#fff\"/>\n",
                   fig.width, fig.height, fig.width, fig.height);

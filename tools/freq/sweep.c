@@ -103,14 +103,14 @@ static int run_wave(const fq_plan *plan, int itheta, const need *needs, size_t c
         snprintf(err, errlen, "out of memory for a %d x %d grating", w->n, w->n);
         return -1;
     }
-    if (fq_texture_create(texels, w->n, &tex, &serr) != SAMPLE_OK) {
+    if (fq_texture_create(texels, w->n, 2, &tex, &serr) != SAMPLE_OK) {
         snprintf(err, errlen, "grating texture: %s", serr.message);
         free(texels);
         return -1;
     }
     for (ib = 0; ib < plan->nbackends && rc == 0; ++ib) {
         const fq_backend *b = plan->backends[ib];
-        void *ctx = b->prepare(b, tex, texels, w->n, err, errlen);
+        void *ctx = b->prepare(b, tex, texels, w->n, 2, err, errlen);
         size_t k;
         int ir;
         if (!ctx) {

@@ -17,7 +17,7 @@ sample_status fq_zone_texture(sample_texture **out, float **texels, sample_error
         }
         return SAMPLE_E_OUT_OF_MEMORY;
     }
-    st = fq_texture_create(*texels, FQ_ZONE_N, out, err);
+    st = fq_texture_create(*texels, FQ_ZONE_N, 1, out, err);
     if (st != SAMPLE_OK) {
         free(*texels);
         *texels = NULL;
