@@ -33,7 +33,9 @@
 /* Queries planned (and prefetched) ahead of their evaluation. Larger blocks
  * keep more misses in flight; past about 32 the prefetches of one block
  * start to evict each other's lines from L1 (doc/performance.md). */
-enum { FAST_BLOCK = 32 };
+#ifndef FAST_BLOCK
+#define FAST_BLOCK 32
+#endif
 
 /* Texel addresses and fractions of one query on one level: taps
  * (col[x], row[y]) for x, y < 1, 2 or 4 (NEAREST, LINEAR, CUBIC). */
@@ -59,7 +61,7 @@ static int kind_taps(sample_filter kind)
  * as wrap_index maps them. i0 is integral (a floor). A run inside the axis
  * maps to itself; REPEAT below 2^24 is an integer modulo (the same true
  * modulo as wrap_index's exact fmod); anything else asks wrap_index. */
-static inline void axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
+SAMPLE_FORCE_INLINE void axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
                               int out[4])
 {
     int k;
@@ -80,10 +82,22 @@ static inline void axis_index(sample_wrap mode, float i0, int len, int n, int fi
     for (k = 0; k < n; ++k) out[k] = wrap_index(mode, (double)i0 + (first + k), len, linear);
 }
 
+/* Prefetch the lines of texels c0 … c1 of a row (either may be −1, the
+ * border). A second prefetch of a line already asked for still takes a slot
+ * in the miss queue, so the last texel's line is only asked for when it
+ * differs. */
+SAMPLE_FORCE_INLINE void prefetch_run(const unsigned char *r, int c0, int c1, size_t tb)
+{
+    uintptr_t a = c0 >= 0 ? (uintptr_t)(r + (size_t)c0 * tb) : 0;
+    if (a) SAMPLE_PREFETCH(r + (size_t)c0 * tb);
+    if (c1 >= 0 && ((uintptr_t)(r + (size_t)c1 * tb + (tb - 1)) >> 6) != a >> 6)
+        SAMPLE_PREFETCH(r + (size_t)c1 * tb + (tb - 1));
+}
+
 /* Addresses of one query on level lv (recon_level's coordinate rules) and
  * prefetches of the lines they touch: the first and last byte of each
  * row's run cover it when the run is contiguous, as it almost always is. */
-static inline void plan_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
+SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
                               size_t tb, fast_taps *tp)
 {
     const struct sample_level *L = &c->tex->level[lv];
@@ -109,12 +123,11 @@ static inline void plan_level(const sample_ctx *c, int lv, sample_filter kind, f
         const unsigned char *r = y[k] < 0 ? NULL : L->data + (size_t)y[k] * L->stride;
         tp->row[k] = r;
         if (!r) continue;
-        if (tp->col[0] >= 0) SAMPLE_PREFETCH(r + (size_t)tp->col[0] * tb);
-        if (tp->col[n - 1] >= 0) SAMPLE_PREFETCH(r + (size_t)tp->col[n - 1] * tb + (tb - 1));
+        prefetch_run(r, tp->col[0], tp->col[n - 1], tb);
     }
 }
 
-static inline v4f fetch(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
+SAMPLE_FORCE_INLINE v4f fetch(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
                         const unsigned char *row, int col)
 {
     if (!row || col < 0) return v4_load(c->border);
@@ -122,7 +135,7 @@ static inline v4f fetch(const sample_ctx *c, sample_format fmt, int nc, size_t t
 }
 
 /* recon_level on planned taps. Returns the texels read. */
-static inline uint32_t run_level(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
+SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
                                  sample_filter kind, int lv, const fast_taps *tp, float out[4],
                                  float dds[4], float ddt[4])
 {
@@ -160,7 +173,7 @@ static inline uint32_t run_level(const sample_ctx *c, sample_format fmt, int nc,
     return n;
 }
 
-static inline void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
+SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
                               const lod_choice *fixed, size_t tb, fast_plan *pl)
 {
     const sample_query *q = &a->queries[i];
@@ -178,7 +191,7 @@ static inline void plan_query(const sample_ctx *c, const sample_batch_args *a, s
 }
 
 /* sampler.c's run_query + gl_apply for a planned query. */
-static inline void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
+SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
                              const fast_plan *pl, sample_format fmt, int nc, size_t tb)
 {
     float *out = a->rgba + 4 * i;
@@ -217,7 +230,7 @@ static inline void run_query(const sample_ctx *c, const sample_batch_args *a, si
 
 /* The batch loop, generic over the texel format and channel count; each
  * instantiation below has them as constants. */
-static inline void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
+SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
                                  int nc)
 {
     const size_t tb = (size_t)nc * (fmt == SAMPLE_FORMAT_F32 ? 4u : (fmt == SAMPLE_FORMAT_F16 ? 2u : 1u));

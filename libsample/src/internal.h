@@ -52,13 +52,22 @@ struct sample_texture {
 /* The exact sRGB EOTF for each 8-bit code (color.c). */
 extern const float sample_srgb_table[256];
 
+/* For the generic functions that the fast path instantiates per format:
+ * GCC otherwise keeps some of them out of line, and the constants that
+ * remove the per-texel switches never reach them. */
+#if defined(__GNUC__)
+#define SAMPLE_FORCE_INLINE static inline __attribute__((always_inline))
+#else
+#define SAMPLE_FORCE_INLINE static inline
+#endif
+
 /* Decode one texel at p to linear RGBA with the OpenGL channel expansion
  * (missing G, B → 0, missing A → 1). With `format` and `nc` constants (the
  * fast path instantiates it per format and channel count) the switches
  * vanish; every reader, fast or general, decodes through this one function.
  * Reads exactly nc channels: shorter texels are copied into a padded buffer
  * first, so the last texel of a level is never over-read. */
-static inline v4f tex_decode_v4(sample_format format, int nc, const unsigned char *p)
+SAMPLE_FORCE_INLINE v4f tex_decode_v4(sample_format format, int nc, const unsigned char *p)
 {
     switch (format) {
     case SAMPLE_FORMAT_F32: {
@@ -207,7 +216,7 @@ uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, f
  * (GL 4.6 eq. 8.13), and its derivatives d/du, d/dv (may be NULL). The one
  * copy of this arithmetic: the general and the fast path both call it, so
  * they round identically. */
-static inline void recon_bilerp(const v4f T[4], float al, float be, float out[4], float ddu[4],
+SAMPLE_FORCE_INLINE void recon_bilerp(const v4f T[4], float al, float be, float out[4], float ddu[4],
                                 float ddv[4])
 {
     v4f a1 = v4_set1(1.0f - al), b1 = v4_set1(1.0f - be), a = v4_set1(al), b = v4_set1(be);
@@ -221,7 +230,7 @@ static inline void recon_bilerp(const v4f T[4], float al, float be, float out[4]
 }
 
 /* a ← (1 − f)·a + f·b: the blend of two mip levels (GL 4.6 eq. 8.18). */
-static inline void recon_blend(float a[4], const float b[4], float f)
+SAMPLE_FORCE_INLINE void recon_blend(float a[4], const float b[4], float f)
 {
     v4_store(a, v4_add(v4_mul(v4_set1(1.0f - f), v4_load(a)), v4_mul(v4_set1(f), v4_load(b))));
 }
