@@ -28,7 +28,7 @@ static const char help[] =
     "Options:\n"
     "  --out DIR          output folder (default freq-out; created if missing)\n"
     "  --quick            reduced sweep for the test suite: m 1.5,5.7,16; theta 0,45;\n"
-    "                     r 1,4; 256-texel textures; F step 1/16; 16x2 pixels x 16\n"
+    "                     r 1,4; 256-texel textures; F step 1/16; 8 pixels x 32\n"
     "                     offsets (the full sweep is the default)\n"
     "  --m LIST           minifications, texels/pixel (default 1,1.5,2,3,5.7,16)\n"
     "  --theta LIST       orientations in degrees (default 0,22.5,45)\n"
@@ -37,11 +37,11 @@ static const char help[] =
     "                     cubic_mipmap_linear,aniso16,blinn_newell,ewa,\n"
     "                     oiio_trilinear,oiio_aniso (default: all available)\n"
     "  --no-oiio          leave out OpenImageIO's TextureSystem\n"
-    "  --size N           texture side, a power of two 16..8192 (default 1024)\n"
+    "  --size N           texture side, a power of two 16..8192 (default 512)\n"
     "  --step F           screen-frequency grid step, cycles/pixel (default 1/64)\n"
     "  --fmax F           top of the grid, cycles/pixel (default 2)\n"
     "  --width N, --rows N, --phases N\n"
-    "                     pixels per row, rows, offsets (default 32, 2, 16)\n"
+    "                     pixels per row, rows, offsets (default 16, 1, 64)\n"
     "  --no-png           SVG plots only (no PNG, no zone plates)\n"
     "\n"
     "Exit codes: 0 success, 1 runtime error, 2 usage error.\n";
@@ -114,6 +114,7 @@ int cmd_freq(int argc, char **argv)
     const fq_backend *list[MAX_BACKENDS];
     fq_backend oiio[FQ_OIIO_MAX];
     fq_oiio_cfg oiio_cfg[FQ_OIIO_MAX];
+    fq_oiio_file oiio_file = {{0}, NULL, 0};
     char tmp[1024] = "", err[512] = "", command[2048];
     fq_plan plan;
     fq_sweep sweep = {0};
@@ -179,21 +180,20 @@ int cmd_freq(int argc, char **argv)
     DEFAULT_LIST(th, nt, quick_t, def_t)
     DEFAULT_LIST(r, nr, quick_r, def_r)
 #undef DEFAULT_LIST
-    if (!size) size = quick ? 256 : 1024;
+    if (!size) size = quick ? 256 : 512;
     if (step == 0.0f) step = quick ? 1.0f / 16 : 1.0f / 64;
-    if (!width) width = quick ? 16 : 32;
-    if (!rows) rows = 2;
-    if (!phases) phases = 16;
+    if (!width) width = quick ? 8 : 16;
+    if (!rows) rows = 1;
+    if (!phases) phases = quick ? 32 : 64;
 
     /* OpenImageIO writes a texture file per grating into a private folder. */
     noiio = 0;
     if (!no_oiio) {
         const char *base = getenv("TMPDIR");
         snprintf(tmp, sizeof tmp, "%s/texsample-freq-XXXXXX", base && *base ? base : "/tmp");
-        noiio = fq_oiio_backends(oiio, oiio_cfg, tmp);
-        if (noiio && !mkdtemp(tmp))
+        if (!mkdtemp(tmp))
             return cli_runtime_error("freq", "cannot create a temporary folder %s", tmp);
-        for (k = 0; k < noiio; ++k) snprintf(oiio_cfg[k].dir, sizeof oiio_cfg[k].dir, "%s", tmp);
+        noiio = fq_oiio_backends(oiio, oiio_cfg, &oiio_file, tmp);
     }
     memset(&plan, 0, sizeof plan);
     if (filters) {
@@ -263,6 +263,7 @@ int cmd_freq(int argc, char **argv)
 done:
     for (k = 0; k < MAX_BACKENDS; ++k) free(zone[k]);
     fq_sweep_free(&sweep);
-    if (noiio && tmp[0]) rmdir(tmp);
+    fq_oiio_file_clear(&oiio_file);
+    if (tmp[0]) rmdir(tmp);
     return rc;
 }

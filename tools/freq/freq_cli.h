@@ -10,11 +10,22 @@
  * caller-owned configuration) and returns how many (0 when texsample was
  * built without the shim). */
 #define FQ_OIIO_MAX 2
+/* The texture file the OpenImageIO backends share: written once per
+ * grating (the backends are prepared one after the other on the same
+ * texels), replaced when the texels change. */
+typedef struct fq_oiio_file {
+    char path[1100];
+    float *texels; /* copy of what the file holds; NULL: no file */
+    size_t count;
+} fq_oiio_file;
 typedef struct fq_oiio_cfg {
     int mode;
-    char dir[1024];
+    fq_oiio_file *file;
 } fq_oiio_cfg;
-int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], const char *tmp);
+int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], fq_oiio_file *file,
+                     const char *tmp);
+/* Remove the shared file and free its copy. */
+void fq_oiio_file_clear(fq_oiio_file *file);
 
 /* Write every output of a finished sweep into `dir` (created if missing):
  * freq.csv, summary.csv, summary.md, plot_r*_t*.svg (and .png when built

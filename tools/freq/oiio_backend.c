@@ -1,8 +1,8 @@
 /* OpenImageIO's TextureSystem as a backend of the sweep (tools/oiio shim).
  * Each grating goes through a mip-mapped file that oiio_ts_make_texture
- * writes as maketx would (its own 2 × 2 box levels), opened in a private
- * TextureSystem that is destroyed with the grating, so the cache never
- * holds more than one texture. Built only when texsample has the shim. */
+ * writes as maketx would (its own 2 × 2 box levels), one file shared by
+ * both OpenImageIO configurations, opened in a private TextureSystem that
+ * is destroyed with the grating. Built only when texsample has the shim. */
 #define _POSIX_C_SOURCE 200809L
 #include "freq_cli.h"
 
@@ -11,27 +11,41 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct oiio_ctx {
     oiio_ts *ts;
     oiio_ts_tex *tex;
     oiio_ts_opts opts;
-    char path[1100];
 } oiio_ctx;
 
-
-static void *oiio_prepare(const fq_backend *b, const sample_texture *tex, const float *texels,
-                          int n, int channels, char *err, size_t errlen)
+void fq_oiio_file_clear(fq_oiio_file *file)
 {
-    oiio_ctx *c = (oiio_ctx *)calloc(1, sizeof *c);
-    float *rgba = (float *)malloc((size_t)n * n * 4 * sizeof *rgba);
-    size_t k;
-    (void)tex;
-    if (!c || !rgba || !texels) {
-        free(c);
+    if (file->texels) remove(file->path);
+    free(file->texels);
+    file->texels = NULL;
+    file->count = 0;
+}
+
+/* Make sure file->path holds these texels (N × N of `channels` floats). */
+static int oiio_file(fq_oiio_file *file, const float *texels, int n, int channels, char *err,
+                     size_t errlen)
+{
+    size_t count = (size_t)n * n * (size_t)channels, k;
+    float *rgba;
+    int rc;
+    if (file->texels && file->count == count &&
+        memcmp(file->texels, texels, count * sizeof *texels) == 0)
+        return 0;
+    fq_oiio_file_clear(file);
+    rgba = (float *)malloc((size_t)n * n * 4 * sizeof *rgba);
+    file->texels = (float *)malloc(count * sizeof *texels);
+    if (!rgba || !file->texels) {
         free(rgba);
+        free(file->texels);
+        file->texels = NULL;
         snprintf(err, errlen, "OpenImageIO backend: out of memory");
-        return NULL;
+        return -1;
     }
     for (k = 0; k < (size_t)n * n; ++k) {
         rgba[4 * k] = texels[channels * k];
@@ -39,26 +53,46 @@ static void *oiio_prepare(const fq_backend *b, const sample_texture *tex, const 
         rgba[4 * k + 2] = 0.0f;
         rgba[4 * k + 3] = 1.0f;
     }
-    snprintf(c->path, sizeof c->path, "%s/grating_%s.exr", ((const fq_oiio_cfg *)b->config)->dir,
-             b->name);
-    if (oiio_ts_make_texture(rgba, n, n, OIIO_TS_FLOAT, SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT,
-                             c->path, err, errlen) != 0) {
-        free(rgba);
-        free(c);
+    rc = oiio_ts_make_texture(rgba, n, n, OIIO_TS_FLOAT, SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT,
+                              file->path, err, errlen);
+    free(rgba);
+    if (rc != 0) {
+        free(file->texels);
+        file->texels = NULL;
+        return -1;
+    }
+    memcpy(file->texels, texels, count * sizeof *texels);
+    file->count = count;
+    return 0;
+}
+
+static void *oiio_prepare(const fq_backend *b, const sample_texture *tex, const float *texels,
+                          int n, int channels, char *err, size_t errlen)
+{
+    const fq_oiio_cfg *cfg = (const fq_oiio_cfg *)b->config;
+    oiio_ctx *c;
+    (void)tex;
+    if (!texels || oiio_file(cfg->file, texels, n, channels, err, errlen) != 0) {
+        if (!texels) snprintf(err, errlen, "OpenImageIO backend: no texels");
         return NULL;
     }
-    free(rgba);
+    c = (oiio_ctx *)calloc(1, sizeof *c);
+    if (!c) {
+        snprintf(err, errlen, "OpenImageIO backend: out of memory");
+        return NULL;
+    }
+    /* A private TextureSystem per grating: its cache then never holds more
+     * than this one texture, and a reused file name is never served stale. */
     c->ts = oiio_ts_create(64.0);
-    c->tex = c->ts ? oiio_ts_open(c->ts, c->path, err, errlen) : NULL;
+    c->tex = c->ts ? oiio_ts_open(c->ts, cfg->file->path, err, errlen) : NULL;
     if (!c->tex) {
         if (!c->ts) snprintf(err, errlen, "OpenImageIO: cannot create a TextureSystem");
         oiio_ts_destroy(c->ts);
-        remove(c->path);
         free(c);
         return NULL;
     }
     oiio_ts_opts_init(&c->opts);
-    c->opts.mode = (oiio_ts_mode)((const fq_oiio_cfg *)b->config)->mode;
+    c->opts.mode = (oiio_ts_mode)cfg->mode;
     c->opts.wrap_s = c->opts.wrap_t = SAMPLE_WRAP_REPEAT;
     c->opts.max_aniso = 16;
     return c;
@@ -76,11 +110,11 @@ static void oiio_release(void *ctx)
 {
     oiio_ctx *c = (oiio_ctx *)ctx;
     oiio_ts_destroy(c->ts);
-    remove(c->path);
     free(c);
 }
 
-int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], const char *tmp)
+int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], fq_oiio_file *file,
+                     const char *tmp)
 {
     static const struct {
         const char *name, *label;
@@ -90,9 +124,12 @@ int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], 
         {"oiio_aniso", "OpenImageIO anisotropic x16", OIIO_TS_ANISO},
     };
     int k;
+    snprintf(file->path, sizeof file->path, "%s/grating.exr", tmp);
+    file->texels = NULL;
+    file->count = 0;
     for (k = 0; k < FQ_OIIO_MAX; ++k) {
         cfg[k].mode = kinds[k].mode;
-        snprintf(cfg[k].dir, sizeof cfg[k].dir, "%s", tmp);
+        cfg[k].file = file;
         out[k].name = kinds[k].name;
         out[k].label = kinds[k].label;
         out[k].prepare = oiio_prepare;
@@ -106,12 +143,16 @@ int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], 
 
 #else
 
-int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], const char *tmp)
+int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], fq_oiio_file *file,
+                     const char *tmp)
 {
     (void)out;
     (void)cfg;
+    (void)file;
     (void)tmp;
     return 0;
 }
+
+void fq_oiio_file_clear(fq_oiio_file *file) { (void)file; }
 
 #endif
