@@ -12,10 +12,8 @@
 
 sample_status io_tmp_create(const char *path, char *tmp, size_t tmp_size, sample_error *err)
 {
-    /* A per-process counter keeps two threads of one process apart; the pid
-     * keeps processes apart; O_EXCL catches whatever is left. The counter is
-     * only a uniqueness hint, so a data race on it could at worst cost a
-     * retry; an atomic avoids even that. */
+    /* The pid keeps processes apart, the atomic counter threads; O_EXCL
+     * catches whatever is left (a stale file from a killed run). */
     static _Atomic unsigned counter;
     int attempt;
     for (attempt = 0; attempt < 100; ++attempt) {
