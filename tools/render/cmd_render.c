@@ -9,9 +9,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#ifdef TEXSAMPLE_HAVE_IO
-#include "sample/sample_io.h"
-#endif
 
 static const char render_help[] =
     "usage: texsample render [options] --out FILE\n"
@@ -39,52 +36,6 @@ static int ends_with(const char *s, const char *suffix)
     return a >= b && strcmp(s + a - b, suffix) == 0;
 }
 
-#ifdef TEXSAMPLE_HAVE_IO
-/* The --buffers channels, in render_image's order. "Z" and the "N." layer
- * are the names OpenEXR viewers know for depth and normals. */
-enum { NBUF = 14 };
-static const char *const buffer_names[NBUF] = {"s",    "t",      "dsdx", "dtdx", "dsdy",
-                                              "dtdy", "lod",    "texels", "Z",  "N.X",
-                                              "N.Y",  "N.Z",    "object", "prim"};
-
-static sample_status write_buffers(const char *path, const render_image *img, sample_error *e)
-{
-    size_t n = (size_t)img->width * img->height, k;
-    float *b = malloc(n * NBUF * sizeof *b);
-    sample_status st;
-    if (!b) {
-        snprintf(e->message, sizeof e->message, "out of memory");
-        return SAMPLE_E_OUT_OF_MEMORY;
-    }
-    for (k = 0; k < n; ++k) {
-        float *o = b + NBUF * k;
-        memcpy(o, img->st + 2 * k, 2 * sizeof *o);
-        memcpy(o + 2, img->jacobian + 4 * k, 4 * sizeof *o);
-        o[6] = img->lod[k];
-        o[7] = img->texels[k];
-        o[8] = img->depth[k];
-        memcpy(o + 9, img->normal + 3 * k, 3 * sizeof *o);
-        memcpy(o + 12, img->id + 2 * k, 2 * sizeof *o);
-    }
-    st = sample_io_write_channels(path, b, img->width, img->height, NBUF, buffer_names, e);
-    free(b);
-    return st;
-}
-
-/* .exr: linear float RGBA (the reference values, unrounded); .png: sRGB
- * 8-bit RGB, through OCIO like every other picture the tools write. */
-static sample_status write_picture(const char *path, const render_image *img, sample_error *e)
-{
-    sample_io_write_options o;
-    sample_io_write_options_init(&o);
-    if (ends_with(path, ".exr")) {
-        o.type = SAMPLE_IO_TYPE_FLOAT;
-        return sample_io_write_image_ex(path, img->rgba, img->width, img->height, 4, &o, e);
-    }
-    return sample_io_write_image_ex(path, img->rgba, img->width, img->height, 3, &o, e);
-}
-#endif
-
 int cmd_render(int argc, char **argv)
 {
     const char *scene = "teapot", *out = NULL, *buffers = NULL, *val;
@@ -94,9 +45,6 @@ int cmd_render(int argc, char **argv)
     render_scene *sc = NULL;
     render_image img;
     char err[256];
-#ifdef TEXSAMPLE_HAVE_IO
-    sample_error e;
-#endif
     render_options_init(&o);
     o.threads = ncpu > 0 && ncpu < 1024 ? (int)ncpu : 1;
     o.progress = cli_progress;
@@ -140,13 +88,10 @@ int cmd_render(int argc, char **argv)
         }
     }
     if (!out && !buffers) return cli_usage_error("render", "--out FILE or --buffers FILE is required");
-    if (out && !ends_with(out, ".exr") && !ends_with(out, ".png"))
+    if (out && !render_output_kind(out))
         return cli_usage_error("render", "--out '%s': the image is .exr or .png", out);
-    if (buffers && !ends_with(buffers, ".exr"))
+    if (buffers && render_output_kind(buffers) != 1)
         return cli_usage_error("render", "--buffers '%s': the buffers are an .exr file", buffers);
-#ifndef TEXSAMPLE_HAVE_IO
-    return cli_runtime_error("render", "this build has no image output (libsample_io)");
-#endif
     o.use_scene_sampler = !sampler_given;
     if (buffers) o.buffers = RENDER_BUF_ST | RENDER_BUF_JACOBIAN | RENDER_BUF_LOD |
                              RENDER_BUF_TEXELS | RENDER_BUF_DEPTH | RENDER_BUF_NORMAL | RENDER_BUF_ID;
@@ -157,12 +102,10 @@ int cmd_render(int argc, char **argv)
         render_scene_destroy(sc);
         return cli_runtime_error("render", "%s", err);
     }
-#ifdef TEXSAMPLE_HAVE_IO
-    if (out && write_picture(out, &img, &e) != SAMPLE_OK)
-        rc = cli_runtime_error("render", "%s", e.message);
-    if (rc == EXIT_OK && buffers && write_buffers(buffers, &img, &e) != SAMPLE_OK)
-        rc = cli_runtime_error("render", "%s", e.message);
-#endif
+    if (out && render_image_write(&img, out, err, sizeof err) != 0)
+        rc = cli_runtime_error("render", "%s", err);
+    if (rc == EXIT_OK && buffers && render_image_write_buffers(&img, buffers, err, sizeof err) != 0)
+        rc = cli_runtime_error("render", "%s", err);
     render_image_free(&img);
     render_scene_destroy(sc);
     return rc;

@@ -212,4 +212,19 @@ int render_image_run(const render_scene *sc, const render_options *o, render_ima
                      char *err, size_t errlen);
 void render_image_free(render_image *img);
 
+/* ---- Output (libsample_io; without it these fail with a message) ------ */
+
+/* 1 for a path ending in .exr, 2 for .png, 0 otherwise. */
+int render_output_kind(const char *path);
+/* The picture: .exr as linear float RGBA, .png as sRGB 8-bit RGB. Written
+ * to a temporary file and renamed. Returns 0 on success. */
+int render_image_write(const render_image *img, const char *path, char *err, size_t errlen);
+/* All seven buffers (render with every RENDER_BUF_* bit) as one float
+ * OpenEXR with the channels render_buffer_names, row 0 at the top;
+ * background pixels: Z = inf, object = prim = −1, the rest 0. */
+#define RENDER_BUFFER_CHANNELS 14
+extern const char *const render_buffer_names[RENDER_BUFFER_CHANNELS];
+int render_image_write_buffers(const render_image *img, const char *path, char *err,
+                               size_t errlen);
+
 #endif

@@ -17,6 +17,7 @@
  *   scene_json.c    scene files (cJSON)
  *   parallel.c      rows over pthreads, progress
  *   image.c         threaded rendering into float buffers
+ *   output.c        pictures and buffers to files (libsample_io)
  *   cmd_render.c    the texsample subcommand
  */
 #ifndef TEXSAMPLE_RN_INTERNAL_H
@@ -272,6 +273,14 @@ typedef struct rn_light {
 } rn_light;
 
 #define RN_MAX_LIGHTS 8
+/* Scene-file limits (issue 9): far above what a texture test scene needs,
+ * low enough that memory and the per-sample search (linear in objects and
+ * polygons) stay bounded. A teapot holds ~250 KB of patch data. */
+#define RN_MAX_OBJECTS 1024
+#define RN_MAX_TEAPOTS 64
+#define RN_MAX_POLYGONS 65536
+#define RN_MAX_TEXTURES 256
+#define RN_MAX_MATERIALS 1024
 
 struct render_scene {
     rn_camera cam;

@@ -16,6 +16,7 @@ typedef struct jctx {
     const cJSON *textures, *materials;
     render_parse_options po;
     double work, texels; /* spent so far of po.max_bake_work, po.max_texels */
+    int teapots;
 } jctx;
 
 /* Charge a bake to the scene's budgets before it is made: 0 (error set)
@@ -274,8 +275,9 @@ static int parse_polygons(jctx *c, const cJSON *list, rn_object *o)
 {
     const cJSON *p;
     int n = cJSON_GetArraySize(list), k = 0;
-    if (!cJSON_IsArray(list) || n < 1 || n > 1000000) {
-        rn_seterr(c->err, c->errlen, "'polygons' must be a non-empty array");
+    if (!cJSON_IsArray(list) || n < 1 || n > RN_MAX_POLYGONS) {
+        rn_seterr(c->err, c->errlen, "'polygons' must be an array of 1 to %d polygons",
+                  RN_MAX_POLYGONS);
         return 0;
     }
     o->polys = calloc((size_t)n, sizeof *o->polys);
@@ -357,6 +359,11 @@ static int parse_object(jctx *c, const cJSON *j)
         rn_seterr(c->err, c->errlen, "'axis' must not be zero");
         return 0;
     }
+    if (kind == RN_PATCHES && ++c->teapots > RN_MAX_TEAPOTS) {
+        rn_seterr(c->err, c->errlen, "at most %d teapots (%d patches each)", RN_MAX_TEAPOTS,
+                  TEAPOT_PATCHES);
+        return 0;
+    }
     if (kind == RN_PATCHES) ok = scene_teapot_object(&o, scale, offset);
     else if (kind == RN_POLYGONS)
         ok = parse_polygons(c, cJSON_GetObjectItemCaseSensitive(j, "polygons"), &o);
@@ -377,7 +384,11 @@ static int parse_object(jctx *c, const cJSON *j)
 
 typedef int (*jlist_fn)(jctx *c, const cJSON *o);
 
-static int parse_list(jctx *c, const cJSON *root, const char *key, jlist_fn fn, int required)
+/* A list of at most max elements, each parsed by fn. The caps keep the
+ * scene's memory and the per-sample search cost (linear in objects, and
+ * in polygons) bounded whatever the file says. */
+static int parse_list(jctx *c, const cJSON *root, const char *key, jlist_fn fn, int required,
+                      int max)
 {
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(root, key), *e;
     int k = 0;
@@ -385,8 +396,8 @@ static int parse_list(jctx *c, const cJSON *root, const char *key, jlist_fn fn, 
         if (required) rn_seterr(c->err, c->errlen, "'%s' is missing", key);
         return !required;
     }
-    if (!cJSON_IsArray(list)) {
-        rn_seterr(c->err, c->errlen, "'%s' must be an array", key);
+    if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) > max) {
+        rn_seterr(c->err, c->errlen, "'%s' must be an array of at most %d", key, max);
         return 0;
     }
     cJSON_ArrayForEach(e, list) {
@@ -472,10 +483,10 @@ static int parse_root(jctx *c, const cJSON *root, int width, int height)
     c->textures = cJSON_GetObjectItemCaseSensitive(root, "textures");
     c->materials = cJSON_GetObjectItemCaseSensitive(root, "materials");
     if (!parse_sampler(c, cJSON_GetObjectItemCaseSensitive(root, "sampler")) ||
-        !parse_list(c, root, "textures", parse_texture, 0) ||
-        !parse_list(c, root, "materials", parse_material, 0) ||
-        !parse_list(c, root, "lights", parse_light, 0) ||
-        !parse_list(c, root, "objects", parse_object, 1))
+        !parse_list(c, root, "textures", parse_texture, 0, RN_MAX_TEXTURES) ||
+        !parse_list(c, root, "materials", parse_material, 0, RN_MAX_MATERIALS) ||
+        !parse_list(c, root, "lights", parse_light, 0, RN_MAX_LIGHTS) ||
+        !parse_list(c, root, "objects", parse_object, 1, RN_MAX_OBJECTS))
         return 0;
     if (c->sc->nmat == 0) {
         rn_material m;
