@@ -89,6 +89,9 @@ static void tiny_json(void)
     CHECK(num(root, "queries") == 300 && num(root, "size") == 32 && num(root, "runs") == 1,
           "parameters recorded");
     CHECK(strstr(str(root, "command"), "--quick") != NULL, "command recorded");
+    CHECK(cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(root, "load_before")) &&
+              cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(root, "load_after")),
+          "load averages recorded");
     res = cJSON_GetObjectItemCaseSensitive(root, "results");
     CHECK(cJSON_IsArray(res), "results array");
     cJSON_ArrayForEach(x, res) {

@@ -113,6 +113,7 @@ typedef struct bench_report {
     int size, threads_max, runs;
     size_t queries, batch;
     const char *command; /* the command line, for the record */
+    double load[2];      /* 1-minute load average before and after (< 0: unknown) */
 } bench_report;
 
 void bench_print_table(const bench_report *r);

@@ -3,7 +3,8 @@
  * OpenImageIO's TextureSystem at the matching settings, on standard query
  * sets, on one thread and on all of them (doc/benchmarks.md).
  */
-#define _POSIX_C_SOURCE 200809L
+/* getloadavg (glibc, the BSDs, macOS). */
+#define _DEFAULT_SOURCE
 #include "bench.h"
 #include "cli.h"
 #include "commands.h"
@@ -283,6 +284,7 @@ int cmd_bench(int argc, char **argv)
     char dir[1024];
     const char *tmp;
     char *command = NULL;
+    double load[2];
     int i, rc;
     long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
 
@@ -314,9 +316,13 @@ int cmd_bench(int argc, char **argv)
             return cli_runtime_error("bench", "cannot create an OpenImageIO TextureSystem");
         }
     }
+    if (getloadavg(&load[0], 1) != 1) load[0] = -1.0;
     rc = run_all(&b, dir);
+    if (getloadavg(&load[1], 1) != 1) load[1] = -1.0;
     if (rc == 0) {
         bench_report r;
+        r.load[0] = load[0];
+        r.load[1] = load[1];
         command = join_args(argc, argv);
         r.engines = b.eng;
         r.engine_count = b.neng;
