@@ -114,7 +114,7 @@ int cmd_freq(int argc, char **argv)
     const fq_backend *list[MAX_BACKENDS];
     fq_backend oiio[FQ_OIIO_MAX];
     fq_oiio_cfg oiio_cfg[FQ_OIIO_MAX];
-    fq_oiio_file oiio_file = {{0}, NULL, 0};
+    fq_oiio_file oiio_file;
     char tmp[1024] = "", err[512] = "", command[2048];
     fq_plan plan;
     fq_sweep sweep = {0};
@@ -188,6 +188,7 @@ int cmd_freq(int argc, char **argv)
 
     /* OpenImageIO writes a texture file per grating into a private folder. */
     noiio = 0;
+    memset(&oiio_file, 0, sizeof oiio_file);
     if (!no_oiio) {
         const char *base = getenv("TMPDIR");
         snprintf(tmp, sizeof tmp, "%s/texsample-freq-XXXXXX", base && *base ? base : "/tmp");

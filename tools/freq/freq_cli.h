@@ -10,13 +10,17 @@
  * caller-owned configuration) and returns how many (0 when texsample was
  * built without the shim). */
 #define FQ_OIIO_MAX 2
-/* The texture file the OpenImageIO backends share: written once per
- * grating (the backends are prepared one after the other on the same
- * texels), replaced when the texels change. */
+/* The TextureSystem and texture file the OpenImageIO backends share: one
+ * file per grating, written once (the backends are prepared one after the
+ * other on the same texels) under a new name whenever the texels change. */
 typedef struct fq_oiio_file {
+    char dir[1024];
     char path[1100];
-    float *texels; /* copy of what the file holds; NULL: no file */
+    float *texels; /* copy of what the current file holds; NULL: none */
     size_t count;
+    unsigned serial;
+    struct oiio_ts *ts;         /* created on first use */
+    struct oiio_ts_tex *handle; /* the current file, opened in ts */
 } fq_oiio_file;
 typedef struct fq_oiio_cfg {
     int mode;
@@ -24,7 +28,7 @@ typedef struct fq_oiio_cfg {
 } fq_oiio_cfg;
 int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], fq_oiio_file *file,
                      const char *tmp);
-/* Remove the shared file and free its copy. */
+/* Remove the current file, free the copy and the TextureSystem. */
 void fq_oiio_file_clear(fq_oiio_file *file);
 
 /* Write every output of a finished sweep into `dir` (created if missing):
