@@ -125,13 +125,14 @@ static void tiny_json(void)
     cJSON_Delete(root);
 
     rc = run("--quick --size 32 --queries 50 --runs 1 --threads 1 --no-oiio --sets minify "
-             "--formats half --filters trilinear,ewa --json -");
+             "--formats half --filters trilinear,ewa --scalar --json -");
     CHECK(rc == 0, "--json - exits 0");
     text = slurp("out.txt");
     root = text ? cJSON_Parse(text) : NULL;
     CHECK(root != NULL, "--json - prints only JSON on stdout");
     res = root ? cJSON_GetObjectItemCaseSensitive(root, "results") : NULL;
     CHECK(cJSON_GetArraySize(res) == 2, "two filters, one thread count, no OIIO");
+    CHECK(cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(root, "scalar_path")), "--scalar recorded");
     cJSON_Delete(root);
     free(text);
 }

@@ -113,6 +113,7 @@ typedef struct bench_report {
     int size, threads_max, runs;
     size_t queries, batch;
     const char *command; /* the command line, for the record */
+    int scalar;          /* 1: libsample ran with SAMPLE_OPT_SCALAR_PATH */
     double load[2];      /* 1-minute load average before and after (< 0: unknown) */
 } bench_report;
 

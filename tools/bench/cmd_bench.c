@@ -38,6 +38,8 @@ static const char help[] =
     "  --formats LIST     comma-separated formats (default all)\n"
     "  --filters LIST     comma-separated filters (default all)\n"
     "  --no-oiio          measure libsample only\n"
+    "  --scalar           libsample through its general per-query path\n"
+    "                     (SAMPLE_OPT_SCALAR_PATH), to measure the fast path\n"
     "  --tmpdir DIR       where OIIO's texture files are written (default $TMPDIR\n"
     "                     or /tmp); they are removed at the end\n"
     "  --json FILE        also write the results as JSON ('-': stdout, no table)\n\n"
@@ -46,7 +48,7 @@ static const char help[] =
 enum { MAX_ENGINES = 32 };
 
 typedef struct bench_opts {
-    int size, runs, threads, oiio;
+    int size, runs, threads, oiio, scalar;
     size_t queries, batch;
     unsigned sets, formats, filters; /* bit masks */
     const char *json, *tmpdir;
@@ -100,6 +102,8 @@ static int parse_args(int argc, char **argv, const bench_engine *eng, int neng, 
             o->runs = 3;
         } else if (cli_opt(argc, argv, &i, "--no-oiio", NULL)) {
             o->oiio = 0;
+        } else if (cli_opt(argc, argv, &i, "--scalar", NULL)) {
+            o->scalar = 1;
         } else if (cli_opt(argc, argv, &i, "--size", &v)) {
             if (parse_size("--size", v, 16, SAMPLE_MAX_SIZE / 4, &x)) return -1;
             o->size = (int)x;
@@ -305,6 +309,8 @@ int cmd_bench(int argc, char **argv)
     b.o.formats = (1u << BENCH_FMT_COUNT) - 1;
     b.o.filters = ~0u;
     if (b.neng < 0 || parse_args(argc, argv, b.eng, b.neng, &b.o) != 0) return EXIT_USAGE;
+    for (i = 0; i < b.neng; ++i)
+        if (b.o.scalar && !b.eng[i].oiio) b.eng[i].smp.options |= SAMPLE_OPT_SCALAR_PATH;
 
     tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
     snprintf(dir, sizeof dir, "%s/texsample-bench-XXXXXX", tmp && *tmp ? tmp : "/tmp");
@@ -321,6 +327,7 @@ int cmd_bench(int argc, char **argv)
     if (getloadavg(&load[1], 1) != 1) load[1] = -1.0;
     if (rc == 0) {
         bench_report r;
+        r.scalar = b.o.scalar;
         r.load[0] = load[0];
         r.load[1] = load[1];
         command = join_args(argc, argv);
