@@ -14,7 +14,8 @@ target_compile_definitions(texsample_render PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJ
 # Image textures (imagetex.c) need libsample_io; without it they are refused.
 if(TARGET sample_io)
   target_link_libraries(texsample_render PUBLIC sample_io)
-  target_compile_definitions(texsample_render PRIVATE TEXSAMPLE_HAVE_IO=1)
+  # PUBLIC: the renderer tests check the I/O only where it exists.
+  target_compile_definitions(texsample_render PUBLIC TEXSAMPLE_HAVE_IO=1)
 endif()
 # texsample globbed tools/*/*.c already; drop the library's sources from it.
 get_target_property(_ts_sources texsample SOURCES)

@@ -90,11 +90,14 @@ static const char scene_teapot_image[] =
     "\"environment\":{\"type\":\"latlong\",\"size\":512,\"radius\":12,\"centre\":[0,0,1.5]},"
     "\"objects\":[{\"type\":\"teapot\",\"material\":\"glaze\"}]}";
 
-/* The photograph on a 2 × 4 quad lying on z = 0, seen from 0.75 above its
- * near edge: minification grows, and grows anisotropic, towards the far
+/* The photograph on a 2 × 4.7 quad lying on z = 0, seen from 0.75 above
+ * its near part: minification grows, and grows anisotropic, towards the far
  * edge. t = 0 (the picture's top row) is the far edge, so it stands upright;
- * CLAMP_TO_EDGE, as a photograph does not tile. The same geometry as the
- * comparison's "photo-plane" (tools/compare/scenes.c). */
+ * CLAMP_TO_EDGE, as a photograph does not tile. The camera is that of the
+ * comparison's procedural stand-in (tools/compare/scenes.c), but the near
+ * edge is at y = −1.2, below the view, so that the bottom rows show the
+ * photograph and not the background (the bottom ray meets z = 0 at
+ * y ≈ −0.71). */
 static const char scene_photo_plane[] =
     "{\"camera\":{\"eye\":[0,-1.6,0.75],\"look\":[0,1.2,0],\"up\":[0,0,1],\"fov\":50},"
     "\"background\":[0.5,0.6,0.8,1],"
@@ -102,8 +105,8 @@ static const char scene_photo_plane[] =
     "\"wrap_s\":\"clamp_to_edge\",\"wrap_t\":\"clamp_to_edge\"},"
     "\"textures\":[{\"name\":\"photo\",\"type\":\"image\",\"file\":\"photo.jpg\"}],"
     "\"materials\":[{\"name\":\"m\",\"texture\":\"photo\",\"ambient\":1,\"gloss\":0}],"
-    "\"objects\":[{\"type\":\"polygons\",\"material\":\"m\",\"polygons\":[{\"v\":[[-1,-0.5,0],"
-    "[1,-0.5,0],[1,3.5,0],[-1,3.5,0]],\"st\":[[0,1],[1,1],[1,0],[0,0]]}]}]}";
+    "\"objects\":[{\"type\":\"polygons\",\"material\":\"m\",\"polygons\":[{\"v\":[[-1,-1.2,0],"
+    "[1,-1.2,0],[1,3.5,0],[-1,3.5,0]],\"st\":[[0,1],[1,1],[1,0],[0,0]]}]}]}";
 
 const char *const render_builtin_names[] = {"teapot",   "plane",        "zoneplate",   "cylinder",
                                             "sphere",   "teapot-image", "photo-plane", NULL};
