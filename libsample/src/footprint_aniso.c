@@ -56,6 +56,13 @@ uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_b
      * λ ≤ 0 reads the base level bilinearly. */
     lod_split(c, lam, &l0, &l1, &f);
     if (f == 0.0f) l1 = l0;
+    /* Ask for every probe's rows first, so that their misses overlap. */
+    for (i = 1; i <= n; ++i) {
+        double off = (double)i / (n + 1) - 0.5;
+        float s = (float)(q->s + off * ms), t = (float)(q->t + off * mt);
+        ctx_prefetch_bilinear(c, l0, s, t);
+        if (l1 != l0) ctx_prefetch_bilinear(c, l1, s, t);
+    }
     for (i = 1; i <= n; ++i) {
         double off = (double)i / (n + 1) - 0.5;
         float s = (float)(q->s + off * ms), t = (float)(q->t + off * mt);

@@ -103,6 +103,7 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         ilo = a;
         ncol = b >= a ? b - a + 1.0 : 0.0;
         if (count_only) {
+            fp_prefetch_span(c, lv, j, ilo, ncol);
             total += ncol;
             if (total > cap) return INFINITY;
             continue;

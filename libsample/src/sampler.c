@@ -91,20 +91,6 @@ typedef struct query_plan {
 
 enum { PLAN_BLOCK = 16 };
 
-/* Touch the two texel rows a bilinear read near (s, t) needs. Wrapping is
- * ignored (a prefetch is only a hint), but the address is kept inside the
- * level so that no invalid pointer is ever formed. */
-static void prefetch_level(const sample_ctx *c, int lv, float s, float t)
-{
-    const struct sample_level *L = &c->tex->level[lv];
-    float u = s * (float)L->w - 0.5f, v = t * (float)L->h - 0.5f;
-    int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
-    int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
-    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * c->tex->texel_bytes;
-    SAMPLE_PREFETCH(p);
-    if (j + 1 < L->h) SAMPLE_PREFETCH(p + L->stride);
-}
-
 static void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i, query_plan *pl)
 {
     const sample_query *q = &a->queries[i];
@@ -120,8 +106,8 @@ static void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i
     }
     pl->kind = PLAN_GL;
     pl->ch = lod_select(c, pl->lam);
-    prefetch_level(c, pl->ch.level0, q->s, q->t);
-    if (pl->ch.level1 >= 0) prefetch_level(c, pl->ch.level1, q->s, q->t);
+    ctx_prefetch_bilinear(c, pl->ch.level0, q->s, q->t);
+    if (pl->ch.level1 >= 0) ctx_prefetch_bilinear(c, pl->ch.level1, q->s, q->t);
 }
 
 static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const query_plan *pl)
