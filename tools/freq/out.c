@@ -66,8 +66,10 @@ static int write_figures(const char *dir, const fq_plan *plan, const fq_sweep *s
         for (it = 0; it < plan->ntheta; ++it, k += 2) {
             fq_buf b = {0};
             int rc, done = 0;
-            snprintf(names[k + 1], 64, "plot_r%g_t%g.svg", plan->r[ir], plan->theta_deg[it]);
-            snprintf(names[k], 64, "%s", names[k + 1]);
+            char svg[64];
+            snprintf(svg, sizeof svg, "plot_r%g_t%g.svg", plan->r[ir], plan->theta_deg[it]);
+            memcpy(names[k], svg, sizeof svg);
+            memcpy(names[k + 1], svg, sizeof svg);
             fq_svg_figure(plan, s, it, ir, &b);
             rc = write_buf(dir, names[k + 1], &b, err, errlen);
             fq_buf_free(&b);

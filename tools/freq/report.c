@@ -227,7 +227,9 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *p
                           plan->r[ir]);
         }
     }
-    if (zone) {
+    for (b = 0; zone && b < plan->nbackends && !zone[b]; ++b)
+        ;
+    if (zone && b < plan->nbackends) {
         fq_buf_printf(out, "<h2>Zone plate</h2>\n<p>cos(&pi;(x&sup2; + y&sup2;)/N), local "
                            "frequency 0 at the centre to 0.5 cycles/texel at the edges, seen "
                            "at 2 texels per pixel: every ring pattern away from the centre is "
