@@ -71,12 +71,13 @@ static const char quad_scene[] =
 
 static render_scene *quad_setup(void)
 {
-    float px[4 * 4 * 3];
+    float px[4 * 4 * 4]; /* the writer takes RGBA and writes the first 3 */
     char png[128], json[128], err[256] = "";
     render_scene *sc = NULL;
     sample_error e;
     int k;
-    for (k = 0; k < 48; ++k) px[k] = (float)((k * 37) % 48) / 47.0f; /* 48 distinct levels */
+    for (k = 0; k < 64; ++k) /* 48 distinct levels in R, G, B; alpha 1 */
+        px[k] = k % 4 == 3 ? 1.0f : (float)((k - k / 4) * 37 % 48) / 47.0f;
     path_in(png, sizeof png, "tex.png");
     path_in(json, sizeof json, "scene.json");
     CHECK(sample_io_write_image(png, px, 4, 4, 3, NULL, &e) == SAMPLE_OK, "%s", e.message);
