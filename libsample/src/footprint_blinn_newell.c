@@ -206,8 +206,8 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     const struct sample_level *L = &c->tex->level[lv];
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     double u0, v0, ku, kv, d[4][2], H[4][2], Si[2][2], S[2][2], mx, my, vmin, vmax, jlo, nrows;
-    double total = 0.0;
-    int fs, ft, r, k, i;
+    double total = 0.0, dlo = 0.0, dhi = 0.0, dref = 0.0, dgx = 0.0, dgy = 0.0, dsg = 1.0;
+    int fs, ft, r, k, i, area = 0;
     fp_svd sv;
 
     fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
@@ -243,6 +243,37 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     jlo = ceil(v0 + vmin);
     nrows = floor(v0 + vmax) - jlo + 1.0;
     if (!(nrows <= cap)) return INFINITY;
+    if (!count_only && (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT)) {
+        /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
+         * ∫ pyr(x, y)·T(P(x, y)) dx dy = ∫ pyr(P⁻¹(u))·T(u) / |det DP| du,
+         * so each texel's weight is divided by |det DP| at its preimage.
+         * With e = d1 − d0, f = d3 − d0, g = d0 − d1 + d2 − d3 and
+         * DP = ½[e + g·b | f + g·a], det DP = ¼(e×f + a·e×g + b·g×f) (the
+         * g×g term vanishes): affine in (x, y), so over the quad its
+         * extremes are at the corners, where it is ¼ of the corner's edge
+         * cross product — one sign for a strictly convex quad. Beyond the
+         * quad (the widened support) the extension may approach 0 or change
+         * sign, so |det| is clamped to the range it takes on the quad, and
+         * that range's floor to 2⁻²⁰ of its top (rounding cannot then make
+         * a weight infinite). dref (|det| at the centre) only scales. */
+        double e[2] = {d[1][0] - d[0][0], d[1][1] - d[0][1]}, f[2] = {d[3][0] - d[0][0], d[3][1] - d[0][1]};
+        double gg[2] = {d[0][0] - d[1][0] + d[2][0] - d[3][0], d[0][1] - d[1][1] + d[2][1] - d[3][1]};
+        double A0 = 0.25 * cross2(e, f), Aa = 0.25 * cross2(e, gg), Ab = 0.25 * cross2(gg, f);
+        double dc[4];
+        dsg = A0 + 0.5 * (Aa + Ab) < 0.0 ? -1.0 : 1.0;
+        dc[0] = dsg * A0;
+        dc[1] = dsg * (A0 + Aa);
+        dc[2] = dsg * (A0 + Aa + Ab);
+        dc[3] = dsg * (A0 + Ab);
+        dlo = fmin(fmin(dc[0], dc[1]), fmin(dc[2], dc[3]));
+        dhi = fmax(fmax(dc[0], dc[1]), fmax(dc[2], dc[3]));
+        dlo = fmax(dlo, dhi * 0x1p-20);
+        dref = dsg * (A0 + 0.5 * (Aa + Ab));
+        /* ∂(dsg·det)/∂x = dsg·Aa/2 (a = (x + 1)/2), likewise y. */
+        dgx = 0.5 * dsg * Aa;
+        dgy = 0.5 * dsg * Ab;
+        area = dhi > 0.0 && dref > 0.0; /* else (no area at all) unweighted */
+    }
     for (r = 0; r < (int)nrows; ++r) {
         double j = jlo + r, dv = j - v0, lo, hi, ilo = 0.0, ncol;
         hull_row(H, dv, &lo, &hi);
@@ -265,6 +296,19 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
             /* ∂w/∂q = ∇pyr·S⁻¹·D⁻¹; the centre moves opposite to q. */
             ax = gx * Si[0][0] + gy * Si[1][0];
             ay = gx * Si[0][1] + gy * Si[1][1];
+            if (area) {
+                /* w ← w·m, m = dref/|det|: ∇(w·m) = m·(∇w − w·∇|det|/|det|),
+                 * the last term 0 where the clamp holds |det| fixed; past
+                 * a fold (sign opposite to the centre's) the floor holds. */
+                double dd = dsg * det, m, hx = 0.0, hy = 0.0;
+                if (dd < dlo) dd = dlo;
+                else if (dd > dhi) dd = dhi;
+                else hx = dgx, hy = dgy;
+                m = dref / dd;
+                ax = m * (ax - w * hx / dd);
+                ay = m * (ay - w * hy / dd);
+                w *= m;
+            }
             fp_accum_add(acc, w, -((ax * D[1][1] - ay * D[1][0]) / det) * ku,
                          -((-ax * D[0][1] + ay * D[0][0]) / det) * kv, T);
             total += 1.0;

@@ -34,6 +34,7 @@ typedef struct cmp_config {
     float max_aniso;
     int corners; /* 1: pass the exact footprint corners (Blinn–Newell corner mode) */
     int oiio;    /* 1: OpenImageIO's TextureSystem instead of libsample */
+    unsigned options; /* SAMPLE_OPT_* added to the scene's sampler options */
 } cmp_config;
 
 extern const cmp_config cmp_configs[];

@@ -11,25 +11,29 @@
 #include <string.h>
 
 const cmp_config cmp_configs[] = {
-    {"nearest", "nearest, no mips", SAMPLE_NEAREST, SAMPLE_NEAREST, SAMPLE_FOOTPRINT_NONE, 1, 0, 0},
-    {"bilinear", "bilinear, no mips", SAMPLE_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE, 1, 0, 0},
+    {"nearest", "nearest, no mips", SAMPLE_NEAREST, SAMPLE_NEAREST, SAMPLE_FOOTPRINT_NONE, 1, 0, 0, 0},
+    {"bilinear", "bilinear, no mips", SAMPLE_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE, 1, 0, 0, 0},
     {"nmn", "nearest-mipmap-nearest", SAMPLE_NEAREST_MIPMAP_NEAREST, SAMPLE_NEAREST,
-     SAMPLE_FOOTPRINT_NONE, 1, 0, 0},
+     SAMPLE_FOOTPRINT_NONE, 1, 0, 0, 0},
     {"trilinear", "trilinear", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE, 1,
-     0, 0},
+     0, 0, 0},
     {"aniso16", "anisotropic x16", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-     SAMPLE_FOOTPRINT_ANISOTROPIC, 16, 0, 0},
+     SAMPLE_FOOTPRINT_ANISOTROPIC, 16, 0, 0, 0},
     {"bicubic", "bicubic (cubic_mipmap_linear)", SAMPLE_CUBIC_MIPMAP_LINEAR, SAMPLE_CUBIC,
-     SAMPLE_FOOTPRINT_NONE, 1, 0, 0},
+     SAMPLE_FOOTPRINT_NONE, 1, 0, 0, 0},
     {"bn-jacobian", "Blinn-Newell, Jacobian", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-     SAMPLE_FOOTPRINT_BLINN_NEWELL, 1, 0, 0},
+     SAMPLE_FOOTPRINT_BLINN_NEWELL, 1, 0, 0, 0},
     {"bn-corners", "Blinn-Newell, exact corners", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-     SAMPLE_FOOTPRINT_BLINN_NEWELL, 1, 1, 0},
-    {"ewa", "EWA", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_EWA, 1, 0, 0},
+     SAMPLE_FOOTPRINT_BLINN_NEWELL, 1, 1, 0, 0},
+    /* Corner mode weighted by the screen-space area element, i.e. the
+     * integral DESIGN §8 scores against (doc/footprint-filters.md). */
+    {"bn-corners-area", "Blinn-Newell, exact corners, area-weighted", SAMPLE_LINEAR_MIPMAP_LINEAR,
+     SAMPLE_LINEAR, SAMPLE_FOOTPRINT_BLINN_NEWELL, 1, 1, 0, SAMPLE_OPT_BN_AREA_WEIGHT},
+    {"ewa", "EWA", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_EWA, 1, 0, 0, 0},
     /* OpenImageIO at its best: smartcubic interpolation, its EWA-like
      * anisotropic filter, same derivatives (oiio.c). */
     {"oiio", "OpenImageIO TextureSystem", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-     SAMPLE_FOOTPRINT_NONE, 16, 0, 1},
+     SAMPLE_FOOTPRINT_NONE, 16, 0, 1, 0},
 };
 const int cmp_config_count = (int)(sizeof cmp_configs / sizeof cmp_configs[0]);
 
@@ -69,4 +73,5 @@ void cmp_config_sampler(const cmp_config *c, const sample_sampler *scene, sample
     out->mag_filter = c->mag;
     out->footprint = c->footprint;
     out->max_anisotropy = c->max_aniso;
+    out->options |= c->options;
 }

@@ -228,6 +228,8 @@ enum {
      * specialized fast path. Results are bit-for-bit the same either way;
      * this exists for tests and for measuring the fast path. */
     SAMPLE_OPT_SCALAR_PATH = 1u << 4,
+    /* Blinn–Newell corners: texel weight pyramid / |det| of the quad map (screen-space integral). */
+    SAMPLE_OPT_BN_AREA_WEIGHT = 1u << 5,
 };
 
 typedef struct sample_sampler {
