@@ -54,22 +54,20 @@ typedef struct bench_opts {
     const char *json, *tmpdir;
 } bench_opts;
 
-/* "a,b,c" over `names` into a bit mask; returns 0 or −1 (reported). */
+/* "a,b,c" over `names` into a bit mask; returns 0, or EXIT_USAGE after
+ * reporting. */
 static int parse_list(const char *opt, const char *list, const char *const *names, int count,
                       unsigned *mask)
 {
     const char *p = list;
     *mask = 0;
-    if (!list || !*list) return cli_usage_error("bench", "%s needs a list", opt), -1;
+    if (!list || !*list) return cli_usage_error("bench", "%s needs a list", opt);
     while (*p) {
         size_t len = strcspn(p, ",");
         int k;
         for (k = 0; k < count; ++k)
             if (strlen(names[k]) == len && strncmp(p, names[k], len) == 0) break;
-        if (k == count) {
-            cli_usage_error("bench", "%s: unknown name '%.*s'", opt, (int)len, p);
-            return -1;
-        }
+        if (k == count) return cli_usage_error("bench", "%s: unknown name '%.*s'", opt, (int)len, p);
         *mask |= 1u << k;
         p += len;
         if (*p == ',') ++p;
@@ -77,18 +75,18 @@ static int parse_list(const char *opt, const char *list, const char *const *name
     return 0;
 }
 
+/* An integer option in [lo, hi]; returns 0, or EXIT_USAGE after reporting. */
 static int parse_size(const char *opt, const char *v, long lo, long hi, long *out)
 {
     int x;
-    if (!cli_parse_int(v, &x) || x < lo || x > hi) {
-        cli_usage_error("bench", "%s must be an integer in [%ld, %ld], not '%s'", opt, lo, hi,
-                        v ? v : "");
-        return -1;
-    }
+    if (!cli_parse_int(v, &x) || x < lo || x > hi)
+        return cli_usage_error("bench", "%s must be an integer in [%ld, %ld], not '%s'", opt, lo,
+                               hi, v ? v : "");
     *out = x;
     return 0;
 }
 
+/* Returns 0, or nonzero after reporting a usage error. */
 static int parse_args(int argc, char **argv, const bench_engine *eng, int neng, bench_opts *o)
 {
     const char *names[MAX_ENGINES], *v;
@@ -127,14 +125,13 @@ static int parse_args(int argc, char **argv, const bench_engine *eng, int neng, 
         } else if (cli_opt(argc, argv, &i, "--filters", &v)) {
             if (parse_list("--filters", v, names, nours, &o->filters)) return -1;
         } else if (cli_opt(argc, argv, &i, "--json", &v)) {
-            if (!v) return cli_usage_error("bench", "--json needs a file name"), -1;
+            if (!v) return cli_usage_error("bench", "--json needs a file name");
             o->json = v;
         } else if (cli_opt(argc, argv, &i, "--tmpdir", &v)) {
-            if (!v) return cli_usage_error("bench", "--tmpdir needs a directory"), -1;
+            if (!v) return cli_usage_error("bench", "--tmpdir needs a directory");
             o->tmpdir = v;
         } else {
-            cli_usage_error("bench", "unknown option '%s'", argv[i]);
-            return -1;
+            return cli_usage_error("bench", "unknown option '%s'", argv[i]);
         }
     }
     return 0;
@@ -167,7 +164,8 @@ static int engine_selected(const bench_engine *eng, int neng, int e, unsigned fi
     return 0;
 }
 
-/* Mean texels read per sample over the whole set (an untimed pass). */
+/* Mean texels read per sample over the whole set (an untimed pass).
+ * Returns 0, or −1 after reporting. */
 static int texels_per_sample(const bench_engine *e, const bench_texture *t,
                              const sample_query *q, size_t n, double *out)
 {
@@ -176,7 +174,9 @@ static int texels_per_sample(const bench_engine *e, const bench_texture *t,
     double sum = 0.0;
     size_t i;
     int rc = -1;
-    if (st && rgba && bench_engine_run(e, t, NULL, q, n, rgba, st) == 0) {
+    if (!st || !rgba) {
+        cli_runtime_error("bench", "out of memory");
+    } else if (bench_engine_run(e, t, NULL, q, n, rgba, st) == 0) {
         for (i = 0; i < n; ++i) sum += st[i].texels;
         *out = sum / (double)n;
         rc = 0;
@@ -196,7 +196,7 @@ typedef struct bench_run {
 } bench_run;
 
 /* Every selected engine on one texture and query set, at 1 and at all
- * threads. */
+ * threads. Returns 0, or nonzero after reporting. */
 static int measure(bench_run *b, const bench_texture *tex, bench_format fmt, bench_set set,
                    const sample_query *q, size_t *done, size_t total)
 {
@@ -217,8 +217,7 @@ static int measure(bench_run *b, const bench_texture *tex, bench_format fmt, ben
             if (bench_time(en, tex, b->ts, q, b->o.queries, thr[k], b->o.runs, b->o.batch,
                            &r->timing) != 0)
                 return cli_runtime_error("bench", "%s on %s/%s failed", en->name,
-                                         bench_set_names[set], bench_format_names[fmt]),
-                       -1;
+                                         bench_set_names[set], bench_format_names[fmt]);
             b->nres++;
             cli_progress("bench", ++*done, total);
         }
