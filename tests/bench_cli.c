@@ -57,6 +57,9 @@ static void help_and_usage(void)
     CHECK(out && strstr(out, "nope") != NULL, "the message names the bad set");
     free(out);
     CHECK(run("--json") == 2, "--json without a file exits 2");
+    CHECK(run("--size 16 --queries 8 --runs 1 --threads 1 --no-oiio --sets magnify "
+              "--formats float --filters nearest --json /nonexistent-dir/r.json") == 1,
+          "an unwritable --json exits 1");
 }
 
 static double num(const cJSON *o, const char *k)

@@ -40,7 +40,7 @@ static void random_set(float major, float minor, int size, uint64_t seed, sample
     size_t i;
     for (i = 0; i < n; ++i) {
         double a = two_pi * unit(&st), c = cos(a), s = sin(a);
-        double M = major / size, m = minor / size;
+        double M = (double)major / size, m = (double)minor / size;
         q[i].s = unit(&st);
         q[i].t = unit(&st);
         q[i].dsdx = (float)(M * c);
