@@ -7,7 +7,6 @@ libopenimageio-dev openimageio-tools
 libopencolorio-dev opencolorio-tools
 libopenexr-dev openexr
 libcjson-dev
-zlib1g-dev
 libosmesa6-dev
 clang libclang-rt-14-dev
 chromium fonts-dejavu-core"

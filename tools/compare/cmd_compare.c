@@ -29,7 +29,11 @@ typedef struct opts {
 
 static void usage(void)
 {
-    int k;
+    int k, nw = 0;
+    for (k = 0; k < cmp_config_count; ++k) {
+        int n = (int)strlen(cmp_configs[k].name);
+        if (n > nw) nw = n;
+    }
     printf("usage: texsample compare [--scene NAME|FILE]... [options]\n\n"
            "Renders each scene with every filter configuration and scores each against\n"
            "the ground truth (the texture integrated against the 2x2-pixel pyramid through\n"
@@ -47,7 +51,7 @@ static void usage(void)
            "  --out DIR           output folder (default out/compare)\n"
            "  --configs LIST      comma-separated configurations (default all):\n");
     for (k = 0; k < cmp_config_count; ++k)
-        printf("                        %-12s %s\n", cmp_configs[k].name, cmp_configs[k].label);
+        printf("                        %-*s %s\n", nw, cmp_configs[k].name, cmp_configs[k].label);
     printf("  --no-oiio           leave out OpenImageIO's TextureSystem\n"
            "  --raw               also write float32 RGBA images (truth.f32, CONFIG.f32) and\n"
            "                      the metric mask (mask.u8) into each scene's folder\n\n"
@@ -252,18 +256,30 @@ out:
 
 static void print_table(const cmp_scene_result *s)
 {
-    int r;
+    /* The label column fits the longest label (labels are ASCII, so bytes
+     * are columns), capped so that a long one cannot push the numbers off
+     * any terminal. */
+    int r, lw = (int)strlen("filter");
+    for (r = 0; r < s->nrows; ++r) {
+        size_t n = strlen(s->rows[r].cfg->label);
+        if (n > (size_t)lw) lw = n > 60 ? 60 : (int)n;
+    }
     printf("%s (%d x %d, truth %d x %d, %zu pixels measured)\n", s->label, s->w, s->h,
            s->truth_samples, s->truth_samples, s->measured);
-    printf("  %-30s %9s %9s %10s %9s\n", "filter", "RMSE", "PSNR dB", "ns/sample", "texels");
+    printf("  %-*s %9s %9s %10s %9s\n", lw, "filter", "RMSE", "PSNR dB", "ns/sample", "texels");
     for (r = 0; r < s->nrows; ++r) {
         const cmp_row *w = &s->rows[r];
         if (!w->ok) {
-            printf("  %-30s not run: %s\n", w->cfg->label, w->note);
+            printf("  %-*s not run: %s\n", lw, w->cfg->label, w->note);
             continue;
         }
-        printf("  %-30s %9.5f %9.2f %10.1f %9.1f\n", w->cfg->label, w->m.rmse, w->m.psnr,
-               w->ns_per_sample, w->texels);
+        printf("  %-*s %9.5f %9.2f %10.1f ", lw, w->cfg->label, w->m.rmse, w->m.psnr,
+               w->ns_per_sample);
+        /* OpenImageIO does not count the texels it reads. */
+        if (w->texels < 0)
+            printf("%9s\n", "-");
+        else
+            printf("%9.1f\n", w->texels);
     }
 }
 

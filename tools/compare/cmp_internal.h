@@ -8,12 +8,11 @@
  *   oiio.c        the same through OpenImageIO's TextureSystem
  *   truth.c       the ground truth of DESIGN §8 and the metric mask
  *   metrics.c     RMSE, PSNR, per-pixel error, the worst crop
- *   picture.c     8-bit pictures: tone, heat map + legend, crops, contact sheet
+ *   picture.c     8-bit pictures: tone, heat map + legend, crops, contact sheet;
+ *                 written through libsample_io
  *   font.c        a 5 × 7 bitmap font for labels in the pictures
- *   png.c         PNG writer (zlib)
  *   sheet.c       a scene's pictures and its contact sheet
  *   report.c      results.csv, results.json, index.html
- *   parallel.c    rows over pthreads
  *   cmd_compare.c the subcommand
  */
 #ifndef TEXSAMPLE_CMP_INTERNAL_H
@@ -168,8 +167,10 @@ int cmp_text_width(const char *text, int scale);
 /* One glyph: 7 rows of 5 bits (bit 4 = leftmost), NULL for unknown characters. */
 const unsigned char *cmp_font_glyph(char c);
 
-/* PNG (8-bit RGB) to path, atomically. Returns 0 on success. */
-int cmp_png_write(const char *path, const cmp_pic *p);
+/* The picture as an 8-bit RGB PNG (or any format sample_io writes, by the
+ * extension), codes unchanged; through a temporary file, so a failed write
+ * leaves nothing. Returns 0 on success, else 1 with a message in err. */
+int cmp_pic_write(const char *path, const cmp_pic *p, char *err, size_t errlen);
 
 /* ---- Results and the report (report.c) ------------------------------- */
 
@@ -214,12 +215,8 @@ int cmp_write_csv(const char *path, const cmp_scene_result *s, int n);
 int cmp_write_json(const char *path, const cmp_scene_result *s, int n, const char *command);
 int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const char *command);
 
-/* ---- Threads (parallel.c) -------------------------------------------- */
-
-/* fn(ctx, row) for rows 0..rows−1 on `threads` threads; progress under
- * label (NULL: none). Each row's result must not depend on the thread. */
-void cmp_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void *ctx,
-                       const char *label);
-double cmp_now(void); /* monotonic seconds */
+/* Monotonic seconds, for the timings (run.c). Rows run in parallel through
+ * the renderer's render_parallel_rows (render.h). */
+double cmp_now(void);
 
 #endif

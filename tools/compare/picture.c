@@ -2,7 +2,7 @@
  * 8-bit pictures for the page: tone mapping is only the sRGB encoding of
  * the clamped linear value (the numbers live in the table, the pictures are
  * for the eye), heat maps with their colour scale, magnified crops, and the
- * drawing the contact sheet needs.
+ * drawing the contact sheet needs; PNG files through libsample_io.
  */
 #include "cmp_internal.h"
 
@@ -10,6 +10,45 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#ifdef TEXSAMPLE_HAVE_IO
+#include "sample/sample_io.h"
+
+int cmp_pic_write(const char *path, const cmp_pic *p, char *err, size_t errlen)
+{
+    size_t n = (size_t)p->w * (size_t)p->h, px;
+    float *rgba = malloc(n * 4 * sizeof *rgba);
+    sample_error e;
+    sample_status st;
+    int c;
+    if (!rgba) {
+        snprintf(err, errlen, "%s: out of memory for a %d x %d picture", path, p->w, p->h);
+        return 1;
+    }
+    /* The bytes are display-referred sRGB codes already (the encoded image,
+     * heat-map colours, label text). sample_io converts from linear to the
+     * colour space it is given, so "raw" (data: never converted) writes each
+     * code back exactly (code / 255 rounds to the code) and the PNG carries
+     * no gAMA/sRGB chunk; viewers show such a file as sRGB. Asking for
+     * "srgb" would encode the codes a second time and wash them out. */
+    for (px = 0; px < n; ++px) {
+        for (c = 0; c < 3; ++c) rgba[4 * px + (size_t)c] = (float)p->rgb[3 * px + (size_t)c] / 255.0f;
+        rgba[4 * px + 3] = 1.0f;
+    }
+    st = sample_io_write_image(path, rgba, p->w, p->h, 3, "raw", &e);
+    free(rgba);
+    if (st == SAMPLE_OK) return 0;
+    snprintf(err, errlen, "%s", e.message);
+    return 1;
+}
+#else
+int cmp_pic_write(const char *path, const cmp_pic *p, char *err, size_t errlen)
+{
+    (void)p;
+    snprintf(err, errlen, "cannot write '%s': this build has no image output (libsample_io)", path);
+    return 1;
+}
+#endif
 
 int cmp_pic_alloc(cmp_pic *p, int w, int h)
 {

@@ -6,11 +6,20 @@
  * time spent inside the engine's calls is summed per row so ns/sample does
  * not depend on the thread count.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include "cmp_internal.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+
+double cmp_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
 
 typedef struct run_job {
     const cmp_view *v;
@@ -131,7 +140,7 @@ int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stat
     } else {
         cmp_fill_untextured(v, r->rgba);
         t0 = cmp_now();
-        cmp_parallel_rows(v->h, threads, run_row, &jb, NULL);
+        render_parallel_rows(v->h, threads, run_row, &jb, NULL, NULL);
         r->seconds = cmp_now() - t0;
         for (j = 0; j < v->h; ++j) {
             secs += jb.row_seconds[j];

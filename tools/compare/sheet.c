@@ -17,11 +17,11 @@ enum { SHEET_TILE = 256, SHEET_LABEL = 18, SHEET_GAP = 4 };
 static int write_pic(const char *dir, const cmp_scene_result *s, const char *what,
                      const char *suffix, const cmp_pic *p)
 {
-    char rel[512], path[1024];
+    char rel[512], path[1024], err[512];
     cmp_pic_path(rel, sizeof rel, s, what, suffix);
     snprintf(path, sizeof path, "%s/%s", dir, rel);
-    if (cmp_png_write(path, p) == 0) return 0;
-    fprintf(stderr, "texsample compare: cannot write %s\n", path);
+    if (cmp_pic_write(path, p, err, sizeof err) == 0) return 0;
+    fprintf(stderr, "texsample compare: cannot write %s: %s\n", path, err);
     return 1;
 }
 

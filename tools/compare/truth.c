@@ -20,6 +20,7 @@
  * on the textured object seen at its centre (the mask).
  */
 #include "cmp_internal.h"
+#include "cli.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -155,9 +156,9 @@ int cmp_truth_build(const cmp_view *v, int n, int threads, cmp_truth *t, char *e
     } else {
         /* Stratum k's centre is at offset (k + ½)/per − 1 from the pixel centre. */
         for (k = 0; k < n; ++k) jb.w[k] = 1.0 - fabs((k + 0.5) / jb.per - 1.0);
-        cmp_parallel_rows(jb.rows, threads, truth_sample_row, &jb, "truth");
+        render_parallel_rows(jb.rows, threads, truth_sample_row, &jb, cli_progress, "truth");
         for (k = 0; k < jb.rows; ++k) failed |= jb.failed[k];
-        if (!failed) cmp_parallel_rows(v->h, threads, truth_pixel_row, &jb, NULL);
+        if (!failed) render_parallel_rows(v->h, threads, truth_pixel_row, &jb, NULL, NULL);
     }
     free(jb.w);
     free(jb.hrow);

@@ -60,7 +60,7 @@ int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, 
         snprintf(err, errlen, "out of memory for a %d x %d view", v->w, v->h);
         return 1;
     }
-    cmp_parallel_rows(v->h, threads, view_row, v, NULL);
+    render_parallel_rows(v->h, threads, view_row, v, NULL, NULL);
     return 0;
 }
 

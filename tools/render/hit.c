@@ -196,7 +196,7 @@ render_cache *render_cache_build(const render_scene *sc, int threads)
         render_cache_destroy(c);
         return NULL;
     }
-    rn_parallel_rows(c->h, threads < 1 ? 1 : threads, cache_row, c, NULL);
+    render_parallel_rows(c->h, threads, cache_row, c, NULL, NULL);
     /* A pixel is uniform when its 3 × 3 neighbourhood (inside the image)
      * sees one primitive, all converged: then that primitive is taken as the
      * visible one everywhere in the pixel's 2 × 2 footprint. */

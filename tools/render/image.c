@@ -102,8 +102,7 @@ int render_image_run(const render_scene *sc, const render_options *o, render_ima
         rn_seterr(err, errlen, "out of memory for a %d x %d image", sc->cam.width, sc->cam.height);
         return -1;
     }
-    rn_parallel_rows(out->height, o->threads < 1 ? 1 : o->threads, image_row, &jb,
-                     o->progress);
+    render_parallel_rows(out->height, o->threads, image_row, &jb, o->progress, "render");
     return 0;
 }
 

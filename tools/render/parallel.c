@@ -1,8 +1,10 @@
 /*
- * A tiny row-parallel loop over pthreads. Rows are handed out one at a time
- * from a shared counter (load balance on scenes where some rows are sky and
- * some teapot); since each row's result depends only on the row, the output
- * is identical at any thread count.
+ * A tiny row-parallel loop over pthreads, shared by the renderer and
+ * texsample compare (render.h). Rows are handed out one at a time from a
+ * shared counter (load balance on scenes where some rows are sky and some
+ * teapot, or the plane's horizon rows that cost far more than the rest);
+ * since each row's result depends only on the row, the output is identical
+ * at any thread count.
  */
 #include "rn_internal.h"
 
@@ -14,7 +16,8 @@ typedef struct rows_job {
     int next, done, rows;
     void (*fn)(void *ctx, int row);
     void *ctx;
-    rn_progress_fn progress;
+    render_progress_fn progress;
+    const char *what;
 } rows_job;
 
 static void *rows_worker(void *arg)
@@ -30,14 +33,14 @@ static void *rows_worker(void *arg)
         pthread_mutex_lock(&j->lock);
         ++j->done;
         if (j->progress && (j->done % 8 == 0 || j->done == j->rows))
-            j->progress("render", (size_t)j->done, (size_t)j->rows);
+            j->progress(j->what, (size_t)j->done, (size_t)j->rows);
         pthread_mutex_unlock(&j->lock);
     }
     return NULL;
 }
 
-int rn_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void *ctx,
-                     rn_progress_fn progress)
+int render_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void *ctx,
+                         render_progress_fn progress, const char *what)
 {
     rows_job j;
     pthread_t *tid = NULL;
@@ -48,6 +51,7 @@ int rn_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void
     j.fn = fn;
     j.ctx = ctx;
     j.progress = progress;
+    j.what = what ? what : "rows";
     if (pthread_mutex_init(&j.lock, NULL) != 0) {
         for (k = 0; k < rows; ++k) fn(ctx, k);
         return 0;
@@ -61,7 +65,7 @@ int rn_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void
             }
             ++started;
         }
-    rows_worker(&j); /* the calling thread works too */
+    rows_worker(&j); /* the calling thread works too; fewer threads only cost time */
     for (k = 0; k < started; ++k) pthread_join(tid[k], NULL);
     free(tid);
     pthread_mutex_destroy(&j.lock);

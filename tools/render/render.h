@@ -167,6 +167,10 @@ void render_scene_texture_truth(const render_scene *sc, int texture, double s, d
 
 /* ---- Rendering ------------------------------------------------------ */
 
+/* Progress report: `what` is being done, done of total units. Called from
+ * worker threads under a lock (e.g. cli_progress). */
+typedef void (*render_progress_fn)(const char *what, size_t done, size_t total);
+
 /* Per-pixel buffers on request (render_options.buffers). */
 enum {
     RENDER_BUF_ST = 1u << 0,      /* s, t */
@@ -187,9 +191,7 @@ typedef struct render_options {
     sample_sampler sampler; /* used for every texture lookup */
     int use_scene_sampler;  /* 1 (default): take the scene's sampler instead */
     int threads;            /* ≥ 1; default 1 */
-    /* Progress report, called from worker threads under a lock (e.g.
-     * cli_progress); NULL: silent. */
-    void (*progress)(const char *what, size_t done, size_t total);
+    render_progress_fn progress; /* NULL: silent */
     int corners;            /* 1: pass exact corners (sample_quad) where valid */
     render_shade shade;
     unsigned buffers;       /* RENDER_BUF_* */
@@ -211,6 +213,17 @@ typedef struct render_image {
 int render_image_run(const render_scene *sc, const render_options *o, render_image *out,
                      char *err, size_t errlen);
 void render_image_free(render_image *img);
+
+/* ---- Threads -------------------------------------------------------- */
+
+/* fn(ctx, row) for rows 0..rows−1 on `threads` threads (< 1 counts as 1),
+ * the calling thread among them; rows are handed out one at a time, so
+ * costly rows do not leave threads idle. Each row's work must not depend on
+ * which thread runs it. progress (NULL: none) is called every few rows
+ * under `what` (NULL: "rows"). Returns 1, or 0 if not every thread could
+ * be started (the rows still all ran, on fewer threads). */
+int render_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void *ctx,
+                         render_progress_fn progress, const char *what);
 
 /* ---- Output (libsample_io; without it these fail with a message) ------ */
 

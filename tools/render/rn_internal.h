@@ -311,14 +311,6 @@ int scene_teapot_object(rn_object *o, double scale, const double offset[3]);
 int scene_finish(render_scene *sc, const char *base_dir, double texels_left, char *err,
                  size_t errlen);
 
-/* Run fn(ctx, row) for rows 0..rows−1 on `threads` threads (rows handed
- * out in order; each row's work must not depend on which thread runs it).
- * Reports progress when `progress` is not NULL. Returns 0 if threads could not
- * be started (then the rows ran on the calling thread). */
-typedef void (*rn_progress_fn)(const char *what, size_t done, size_t total);
-int rn_parallel_rows(int rows, int threads, void (*fn)(void *ctx, int row), void *ctx,
-                     rn_progress_fn progress);
-
 /* Fill a hit from (object, prim, u, v) (hit.c). Returns h->converged. */
 int hit_finish(const render_scene *sc, int object, int prim, double u, double v, int converged,
                render_hit *h);
