@@ -101,4 +101,9 @@ void io_extension(const char *path, char *ext, size_t ext_size);
 #ifdef __cplusplus
 }
 #endif
+/* exr_guard.c: reject OpenEXR headers whose attribute sizes exceed the data
+ * (before OpenEXR allocates them); other formats pass through untouched. */
+sample_status io_exr_guard_memory(const void *data, size_t size, sample_error *err);
+sample_status io_exr_guard_file(const char *path, sample_error *err);
+
 #endif

@@ -198,6 +198,7 @@ sample_status sample_io_read_texture(const char *path, const sample_io_options *
     if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: out is NULL");
     *out = NULL;
     if (!path || !*path) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
+    if ((st = io_exr_guard_file(path, err)) != SAMPLE_OK) return st;
     st = io_reader_open(path, NULL, 0, NULL, &r, err);
     if (st != SAMPLE_OK) return st;
     st = read_texture(r, o, mip, out, err);
@@ -215,6 +216,7 @@ sample_status sample_io_read_memory(const void *data, size_t size, const char *f
     *out = NULL;
     if (!data && size) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
     if (size == 0) return io_fail(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
+    if ((st = io_exr_guard_memory(data, size, err)) != SAMPLE_OK) return st;
     st = io_reader_open(NULL, data, size, format_hint, &r, err);
     if (st != SAMPLE_OK) return st;
     st = read_texture(r, o, mip, out, err);
