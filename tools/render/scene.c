@@ -94,10 +94,10 @@ static const char scene_teapot_image[] =
  * its near part: minification grows, and grows anisotropic, towards the far
  * edge. t = 0 (the picture's top row) is the far edge, so it stands upright;
  * CLAMP_TO_EDGE, as a photograph does not tile. The camera is that of the
- * comparison's procedural stand-in (tools/compare/scenes.c), but the near
- * edge is at y = −1.2, below the view, so that the bottom rows show the
- * photograph and not the background (the bottom ray meets z = 0 at
- * y ≈ −0.71). */
+ * stand-in texsample compare had before this scene (compare now uses this
+ * one), but the near edge is at y = −1.2, below the view, so that the
+ * bottom rows show the photograph and not the background (the bottom ray
+ * meets z = 0 at y ≈ −0.71). */
 static const char scene_photo_plane[] =
     "{\"camera\":{\"eye\":[0,-1.6,0.75],\"look\":[0,1.2,0],\"up\":[0,0,1],\"fov\":50},"
     "\"background\":[0.5,0.6,0.8,1],"
