@@ -91,7 +91,7 @@ static int parse_args(int argc, char **argv, const bench_engine *eng, int neng, 
 {
     const char *names[MAX_ENGINES], *v;
     int i, nours = 0;
-    long x;
+    long x = 0; /* set by parse_size before every use; GCC cannot see it */
     for (i = 0; i < neng && !eng[i].oiio; ++i) names[nours++] = eng[i].name;
     for (i = 1; i < argc; ++i) {
         if (cli_opt(argc, argv, &i, "--quick", NULL)) {
