@@ -4,7 +4,8 @@
  *
  * The 2 × 2-pixel region around the pixel, screen offsets (x, y) ∈ [−1, 1]²,
  * maps into texture space by the Jacobian (a parallelogram) or by the four
- * exact corners (a bilinear quadrilateral). A texel centre c is weighted by
+ * exact corners (the homography through them: the exact screen → texture
+ * map of a plane under a pinhole camera). A texel centre c is weighted by
  * the screen-space pyramid (1 − |x|)(1 − |y|) at its inverse-mapped position,
  * "a pyramid distorted to fit the quadrilateral" (Blinn & Newell, CACM 19(10)).
  *
@@ -24,7 +25,10 @@
 typedef struct bn_geom {
     float s, t;      /* centre of the footprint (normalized) */
     double J[2][2];  /* rows (s, t), columns (x, y); one pixel, normalized */
-    double P[4][2];  /* corners minus the centre (normalized), quad mode */
+    /* Quad mode: the homography (x, y, 1) ↦ w·(s − s_c, t − t_c, 1) through
+     * the corners (normalized, relative to the centre; w = 1 at (0, 0)),
+     * and the range [wlo, whi] of w on the square (its corner values). */
+    double H[3][3], wlo, whi;
 } bn_geom;
 
 /* w = (1 − |x|)(1 − |y|) on the open square and its gradient; at a crease
@@ -121,62 +125,9 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     return total;
 }
 
-/* ---- General quadrilateral (exact corners) ------------------------------ */
-
-/* P(x, y) = bilinear interpolation of the corners d[0..3] at screen offsets
- * (−1,−1), (+1,−1), (+1,+1), (−1,+1); a = (x + 1)/2, b = (y + 1)/2. */
-static void bil(double d[4][2], double a, double b, double p[2])
-{
-    int k;
-    for (k = 0; k < 2; ++k)
-        p[k] = d[0][k] + (d[1][k] - d[0][k]) * a + (d[3][k] - d[0][k]) * b +
-               (d[0][k] - d[1][k] + d[2][k] - d[3][k]) * a * b;
-}
+/* ---- General quadrilateral (exact corners): the projective map --------- */
 
 static double cross2(const double a[2], const double b[2]) { return a[0] * b[1] - a[1] * b[0]; }
-
-/* Inverse of the bilinear map, extended beyond the quad: h − d0 = e·a + f·b
- * + g·a·b gives, crossing with (e + g·b), the quadratic
- * (g × f)·b² + (h × g + e × f)·b + h × e = 0. Of its (up to) two roots the
- * one nearer the quad is the preimage. Returns 0 if there is none (a point
- * beyond a fold of the extended map, which the filter weights 0). */
-static int bil_inverse(double d[4][2], const double q[2], double *x, double *y,
-                       double D[2][2])
-{
-    double e[2] = {d[1][0] - d[0][0], d[1][1] - d[0][1]};
-    double f[2] = {d[3][0] - d[0][0], d[3][1] - d[0][1]};
-    double g[2] = {d[0][0] - d[1][0] + d[2][0] - d[3][0], d[0][1] - d[1][1] + d[2][1] - d[3][1]};
-    double h[2] = {q[0] - d[0][0], q[1] - d[0][1]};
-    double k2 = cross2(g, f), k1 = cross2(h, g) + cross2(e, f), k0 = cross2(h, e);
-    double disc = k1 * k1 - 4.0 * k2 * k0, qq, cand[2], best = INFINITY;
-    int n = 0, m, found = 0;
-    if (disc < 0.0) return 0;
-    /* Numerically stable roots (no cancellation in −k1 ± √disc). */
-    qq = -0.5 * (k1 + (k1 < 0.0 ? -sqrt(disc) : sqrt(disc)));
-    if (qq != 0.0) cand[n++] = k0 / qq;
-    if (k2 != 0.0) cand[n++] = qq / k2;
-    for (m = 0; m < n; ++m) {
-        double b = cand[m], eb[2] = {e[0] + g[0] * b, e[1] + g[1] * b};
-        double den = eb[0] * eb[0] + eb[1] * eb[1], a, xx, yy, dist;
-        if (!(den > 0.0)) continue;
-        a = ((h[0] - f[0] * b) * eb[0] + (h[1] - f[1] * b) * eb[1]) / den;
-        xx = 2.0 * a - 1.0;
-        yy = 2.0 * b - 1.0;
-        dist = fmax(fabs(xx), fabs(yy));
-        if (dist < best) {
-            best = dist;
-            *x = xx;
-            *y = yy;
-            /* ∂P/∂x = ½(e + g·b), ∂P/∂y = ½(f + g·a): columns of D. */
-            D[0][0] = 0.5 * eb[0];
-            D[1][0] = 0.5 * eb[1];
-            D[0][1] = 0.5 * (f[0] + g[0] * a);
-            D[1][1] = 0.5 * (f[1] + g[1] * a);
-            found = 1;
-        }
-    }
-    return found;
-}
 
 /* Row interval of the convex hull of four points (all six segments: the
  * hull's boundary is among them and each lies inside it). */
@@ -205,78 +156,88 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     const bn_geom *g = (const bn_geom *)gp;
     const struct sample_level *L = &c->tex->level[lv];
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
-    double u0, v0, ku, kv, d[4][2], H[4][2], Si[2][2], S[2][2], mx, my, vmin, vmax, jlo, nrows;
-    double total = 0.0, dlo = 0.0, dhi = 0.0, dref = 0.0, dgx = 0.0, dgy = 0.0, dsg = 1.0;
-    int fs, ft, r, k, i, area = 0;
+    double u0, v0, ku, kv, H[3][3], Gh[3][3], G[3][3], det, T[2][2], Ti[2][2], V[4][2], vmin, vmax, jlo, nrows;
+    double total = 0.0;
+    int fs, ft, r, k, i, area;
     fp_svd sv;
 
     fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     ku = fs ? -(double)L->w : (double)L->w;
     kv = ft ? -(double)L->h : (double)L->h;
-    for (k = 0; k < 4; ++k) {
-        d[k][0] = g->P[k][0] * ku;
-        d[k][1] = g->P[k][1] * kv;
+    /* The homography in texels of this level: rows (u, v) scaled, w kept. */
+    for (k = 0; k < 3; ++k) {
+        H[0][k] = g->H[0][k] * ku;
+        H[1][k] = g->H[1][k] * kv;
+        H[2][k] = g->H[2][k];
     }
-    /* Widening in screen space: at the centre P ≈ J·(x, y), and J′ = J·S
-     * with S = V·diag(√(σ² + 1)/σ)·Vᵀ, so the weight is pyr(S⁻¹·(x, y)); for
-     * a parallelogram this is exactly the Jacobian mode. σ > 0: the caller
-     * sends only strictly convex, not too eccentric quads here. */
-    fp_svd2((d[1][0] + d[2][0] - d[0][0] - d[3][0]) * 0.25, (d[2][0] + d[3][0] - d[0][0] - d[1][0]) * 0.25,
-            (d[1][1] + d[2][1] - d[0][1] - d[3][1]) * 0.25, (d[2][1] + d[3][1] - d[0][1] - d[1][1]) * 0.25, &sv);
+    /* Widening, in texture space about the centre c0 = H(0, 0): with the
+     * centre Jacobian J = U·diag(σ)·Vᵀ, a texel c is weighted at the
+     * preimage of c0 + T·(c − c0), T = U·diag(σ/√(σ² + 1))·Uᵀ = J·S⁻¹·J⁻¹.
+     * For a parallelogram that is pyr(S⁻¹·J⁻¹·(c − c0)), exactly the
+     * Jacobian mode (file comment). Done in texture space rather than on
+     * the screen side of H, the widened support is the quad itself grown
+     * about c0 by T⁻¹ — a convex quad, far from the horizon whatever σ —
+     * and the pulled-back point lies in the quad wherever the weight is
+     * nonzero, so w stays within its range on the square. σ > 0: the
+     * caller sends only projective, not too eccentric quads here. */
+    fp_svd2(g->J[0][0] * ku, g->J[0][1] * ku, g->J[1][0] * kv, g->J[1][1] * kv, &sv);
     if (!(sv.s[1] > 0.0)) return INFINITY;
     for (i = 0; i < 2; ++i)
         for (k = 0; k < 2; ++k) {
             double f0 = sqrt(sv.s[0] * sv.s[0] + 1.0) / sv.s[0], f1 = sqrt(sv.s[1] * sv.s[1] + 1.0) / sv.s[1];
-            S[i][k] = sv.V[i][0] * f0 * sv.V[k][0] + sv.V[i][1] * f1 * sv.V[k][1];
-            Si[i][k] = sv.V[i][0] / f0 * sv.V[k][0] + sv.V[i][1] / f1 * sv.V[k][1];
+            T[i][k] = sv.U[i][0] / f0 * sv.U[k][0] + sv.U[i][1] / f1 * sv.U[k][1];
+            Ti[i][k] = sv.U[i][0] * f0 * sv.U[k][0] + sv.U[i][1] * f1 * sv.U[k][1];
         }
-    /* The widened support S·[−1, 1]² lies in [−mx, mx] × [−my, my], whose
-     * bilinear image lies in the convex hull of its four corner images. */
-    mx = fabs(S[0][0]) + fabs(S[0][1]);
-    my = fabs(S[1][0]) + fabs(S[1][1]);
-    bil(d, 0.5 * (1.0 - mx), 0.5 * (1.0 - my), H[0]);
-    bil(d, 0.5 * (1.0 + mx), 0.5 * (1.0 - my), H[1]);
-    bil(d, 0.5 * (1.0 + mx), 0.5 * (1.0 + my), H[2]);
-    bil(d, 0.5 * (1.0 - mx), 0.5 * (1.0 + my), H[3]);
-    vmin = fmin(fmin(H[0][1], H[1][1]), fmin(H[2][1], H[3][1]));
-    vmax = fmax(fmax(H[0][1], H[1][1]), fmax(H[2][1], H[3][1]));
+    /* Gh = H⁻¹ (adjugate / determinant): Gh·(u, v, 1) = (x, y, 1)/w. */
+    Gh[0][0] = H[1][1] * H[2][2] - H[1][2] * H[2][1];
+    Gh[0][1] = H[0][2] * H[2][1] - H[0][1] * H[2][2];
+    Gh[0][2] = H[0][1] * H[1][2] - H[0][2] * H[1][1];
+    Gh[1][0] = H[1][2] * H[2][0] - H[1][0] * H[2][2];
+    Gh[1][1] = H[0][0] * H[2][2] - H[0][2] * H[2][0];
+    Gh[1][2] = H[0][2] * H[1][0] - H[0][0] * H[1][2];
+    Gh[2][0] = H[1][0] * H[2][1] - H[1][1] * H[2][0];
+    Gh[2][1] = H[0][1] * H[2][0] - H[0][0] * H[2][1];
+    Gh[2][2] = H[0][0] * H[1][1] - H[0][1] * H[1][0];
+    det = H[0][0] * Gh[0][0] + H[0][1] * Gh[1][0] + H[0][2] * Gh[2][0];
+    if (!(det != 0.0) || !isfinite(det)) return INFINITY;
+    /* G = H⁻¹·[T, c0 − T·c0; 0 0 1]: one 3 × 3 product per texel. */
+    for (i = 0; i < 3; ++i) {
+        double a0 = Gh[i][0] / det, a1 = Gh[i][1] / det, a2 = Gh[i][2] / det;
+        G[i][0] = a0 * T[0][0] + a1 * T[1][0];
+        G[i][1] = a0 * T[0][1] + a1 * T[1][1];
+        G[i][2] = a0 * (H[0][2] - T[0][0] * H[0][2] - T[0][1] * H[1][2]) +
+                  a1 * (H[1][2] - T[1][0] * H[0][2] - T[1][1] * H[1][2]) + a2;
+    }
+    /* Support: c0 + T⁻¹·(P_k − c0), P_k = H(corner k) (w = λ_k > 0). */
+    vmin = INFINITY;
+    vmax = -INFINITY;
+    for (k = 0; k < 4; ++k) {
+        double x = (k == 1 || k == 2) ? 1.0 : -1.0, y = k >= 2 ? 1.0 : -1.0;
+        double w = H[2][0] * x + H[2][1] * y + H[2][2];
+        double pu = (H[0][0] * x + H[0][1] * y + H[0][2]) / w - H[0][2];
+        double pv = (H[1][0] * x + H[1][1] * y + H[1][2]) / w - H[1][2];
+        V[k][0] = H[0][2] + Ti[0][0] * pu + Ti[0][1] * pv;
+        V[k][1] = H[1][2] + Ti[1][0] * pu + Ti[1][1] * pv;
+        vmin = fmin(vmin, V[k][1]);
+        vmax = fmax(vmax, V[k][1]);
+    }
     jlo = ceil(v0 + vmin);
     nrows = floor(v0 + vmax) - jlo + 1.0;
     if (!(nrows <= cap)) return INFINITY;
-    if (!count_only && (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT)) {
-        /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
-         * ∫ pyr(x, y)·T(P(x, y)) dx dy = ∫ pyr(P⁻¹(u))·T(u) / |det DP| du,
-         * so each texel's weight is divided by |det DP| at its preimage.
-         * With e = d1 − d0, f = d3 − d0, g = d0 − d1 + d2 − d3 and
-         * DP = ½[e + g·b | f + g·a], det DP = ¼(e×f + a·e×g + b·g×f) (the
-         * g×g term vanishes): affine in (x, y), so over the quad its
-         * extremes are at the corners, where it is ¼ of the corner's edge
-         * cross product — one sign for a strictly convex quad. Beyond the
-         * quad (the widened support) the extension may approach 0 or change
-         * sign, so |det| is clamped to the range it takes on the quad, and
-         * that range's floor to 2⁻²⁰ of its top (rounding cannot then make
-         * a weight infinite). dref (|det| at the centre) only scales. */
-        double e[2] = {d[1][0] - d[0][0], d[1][1] - d[0][1]}, f[2] = {d[3][0] - d[0][0], d[3][1] - d[0][1]};
-        double gg[2] = {d[0][0] - d[1][0] + d[2][0] - d[3][0], d[0][1] - d[1][1] + d[2][1] - d[3][1]};
-        double A0 = 0.25 * cross2(e, f), Aa = 0.25 * cross2(e, gg), Ab = 0.25 * cross2(gg, f);
-        double dc[4];
-        dsg = A0 + 0.5 * (Aa + Ab) < 0.0 ? -1.0 : 1.0;
-        dc[0] = dsg * A0;
-        dc[1] = dsg * (A0 + Aa);
-        dc[2] = dsg * (A0 + Aa + Ab);
-        dc[3] = dsg * (A0 + Ab);
-        dlo = fmin(fmin(dc[0], dc[1]), fmin(dc[2], dc[3]));
-        dhi = fmax(fmax(dc[0], dc[1]), fmax(dc[2], dc[3]));
-        dlo = fmax(dlo, dhi * 0x1p-20);
-        dref = dsg * (A0 + 0.5 * (Aa + Ab));
-        /* ∂(dsg·det)/∂x = dsg·Aa/2 (a = (x + 1)/2), likewise y. */
-        dgx = 0.5 * dsg * Aa;
-        dgy = 0.5 * dsg * Ab;
-        area = dhi > 0.0 && dref > 0.0; /* else (no area at all) unweighted */
-    }
+    /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
+     * ∫ pyr(x, y)·T(H(x, y)) dx dy = ∫ pyr(H⁻¹(u))·T(u) / |det DH| du, so
+     * each texel's weight is divided by |det DH| at its preimage. For a
+     * homography det DH(x, y) = det(H)/w³ (w the homogeneous coordinate),
+     * so with w = 1 at the centre the factor |det DH(0, 0)|/|det DH| is w³:
+     * no division, and the constant det(H) cancels. w is affine, so on the
+     * square it lies between its corner values [wlo, whi]; the pulled-back
+     * points with nonzero weight lie in the quad, so the clamp to that
+     * range (|det DH| to its range on the quad) only guards rounding. The
+     * entry keeps (whi/wlo)³ ≤ 2²⁰, so weights span at most 2²⁰. */
+    area = !count_only && (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT);
     for (r = 0; r < (int)nrows; ++r) {
         double j = jlo + r, dv = j - v0, lo, hi, ilo = 0.0, ncol;
-        hull_row(H, dv, &lo, &hi);
+        hull_row(V, dv, &lo, &hi);
         ncol = row_span(u0, lo, hi, &ilo);
         if (count_only) {
             total += ncol;
@@ -285,32 +246,42 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
         }
         if (ncol > cap) return total; /* unreachable after a successful count */
         for (k = 0; k < (int)ncol; ++k) {
-            double ii = ilo + k, q[2] = {ii - u0, dv}, x, y, D[2][2], gx = 0.0, gy = 0.0, w, det, ax, ay;
-            float T[4];
-            if (!bil_inverse(d, q, &x, &y, D)) continue;
-            w = pyramid(Si[0][0] * x + Si[0][1] * y, Si[1][0] * x + Si[1][1] * y, &gx, &gy);
+            double du = ilo + k - u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
+            float tx[4];
+            /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
+             * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
+             * quad, where the pyramid is 0 anyway. */
+            W = G[2][0] * du + G[2][1] * dv + G[2][2];
+            if (!(W > 0.0)) continue;
+            iw = 1.0 / W;
+            x = (G[0][0] * du + G[0][1] * dv + G[0][2]) * iw;
+            y = (G[1][0] * du + G[1][1] * dv + G[1][2]) * iw;
+            w = pyramid(x, y, &gx, &gy);
             if (w <= 0.0) continue;
-            det = D[0][0] * D[1][1] - D[0][1] * D[1][0];
-            if (det == 0.0) continue;
-            ctx_texel(c, lv, ii, j, 1, T);
-            /* ∂w/∂q = ∇pyr·S⁻¹·D⁻¹; the centre moves opposite to q. */
-            ax = gx * Si[0][0] + gy * Si[1][0];
-            ay = gx * Si[0][1] + gy * Si[1][1];
+            ctx_texel(c, lv, ilo + k, j, 1, tx);
+            /* ∂w/∂(x, y) = ∇pyr; ∂x/∂u = (G₀₀ − x·G₂₀)/W etc. (quotient
+             * rule on X/W); the centre moves opposite to (du, dv). */
+            ax = gx;
+            ay = gy;
+            wu = (ax * (G[0][0] - x * G[2][0]) + ay * (G[1][0] - y * G[2][0])) * iw;
+            wv = (ax * (G[0][1] - x * G[2][1]) + ay * (G[1][1] - y * G[2][1])) * iw;
             if (area) {
-                /* w ← w·m, m = dref/|det|: ∇(w·m) = m·(∇w − w·∇|det|/|det|),
-                 * the last term 0 where the clamp holds |det| fixed; past
-                 * a fold (sign opposite to the centre's) the floor holds. */
-                double dd = dsg * det, m, hx = 0.0, hy = 0.0;
-                if (dd < dlo) dd = dlo;
-                else if (dd > dhi) dd = dhi;
-                else hx = dgx, hy = dgy;
-                m = dref / dd;
-                ax = m * (ax - w * hx / dd);
-                ay = m * (ay - w * hy / dd);
+                /* w ← w·m, m = w_h³ (w_h = 1/W clamped): ∇m = 3w_h²·∇w_h,
+                 * ∇w_h = −(G₂₀, G₂₁)·w_h², 0 where the clamp holds. */
+                double wh = iw, m, mu = 0.0, mv = 0.0;
+                if (wh < g->wlo) wh = g->wlo;
+                else if (wh > g->whi) wh = g->whi;
+                else {
+                    double k4 = -3.0 * wh * wh * wh * wh;
+                    mu = k4 * G[2][0];
+                    mv = k4 * G[2][1];
+                }
+                m = wh * wh * wh;
+                wu = m * wu + w * mu;
+                wv = m * wv + w * mv;
                 w *= m;
             }
-            fp_accum_add(acc, w, -((ax * D[1][1] - ay * D[1][0]) / det) * ku,
-                         -((-ax * D[0][1] + ay * D[0][0]) / det) * kv, T);
+            fp_accum_add(acc, w, -wu * ku, -wv * kv, tx);
             total += 1.0;
         }
     }
@@ -319,22 +290,72 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
 
 /* ---- Entry --------------------------------------------------------------- */
 
-/* A quad is filtered as a quad only when strictly convex (the four turns of
- * its boundary share one sign: mirrored, "inside-out" quads are fine) and
- * its centre Jacobian is within the eccentricity clamp. Anything else —
- * zero area, a bow-tie, a dart, a sliver — is filtered as the parallelogram
- * of its centre Jacobian, which has a defined, bounded result. */
-static int quad_convex(double P[4][2])
+/* The projective map through the corners. A homography taking the screen
+ * square's corners c_k to the corners P_k maps c_k to λ_k·(P_k, 1), and the
+ * square's c0 + c2 = c1 + c3 (homogeneous, weight 1) forces
+ * λ0·P̃0 + λ2·P̃2 = λ1·P̃1 + λ3·P̃3: the point where the diagonals meet.
+ * Solving by Cramer's rule, λ_k ∝ the signed area of the triangle of the
+ * other three corners, i.e. of the turn at the opposite corner k + 2. The
+ * λ_k are w at the corners, so w > 0 on the whole square (w is affine) iff
+ * all four turns share a sign: iff the quad is strictly convex (either
+ * orientation; mirrored quads are fine). Bow-ties, darts and zero-area
+ * quads — not the image of a square seen from one side of the horizon —
+ * return 0. With Σλ = 4 (w = 1 at the centre), H's columns are
+ *   h_x = (λ1P̃1 + λ2P̃2 − λ0P̃0 − λ3P̃3)/4, h_y = (λ2P̃2 + λ3P̃3 − λ0P̃0 − λ1P̃1)/4,
+ *   h_1 = Σ λ_k·P̃_k / 4,
+ * which for a parallelogram (all λ = 1) is the Jacobian's affine map. */
+static int projective(const sample_quad *q, bn_geom *g)
 {
+    double ms = 0.0, mt = 0.0, P[4][2], turn[4], lam[4], sum = 0.0, cs = 0.0, ct = 0.0;
     int k, pos = 0, neg = 0;
     for (k = 0; k < 4; ++k) {
-        const double *a = P[k], *b = P[(k + 1) & 3], *cc = P[(k + 2) & 3];
-        double e1[2] = {b[0] - a[0], b[1] - a[1]}, e2[2] = {cc[0] - b[0], cc[1] - b[1]};
-        double z = cross2(e1, e2);
-        pos += z > 0.0;
-        neg += z < 0.0;
+        ms += 0.25 * q->st[k][0];
+        mt += 0.25 * q->st[k][1];
     }
-    return pos == 4 || neg == 4;
+    /* Relative to the corner mean first (rounding), re-centred below. */
+    for (k = 0; k < 4; ++k) {
+        P[k][0] = (double)q->st[k][0] - ms;
+        P[k][1] = (double)q->st[k][1] - mt;
+    }
+    for (k = 0; k < 4; ++k) {
+        const double *a = P[(k + 3) & 3], *b = P[k], *cc = P[(k + 1) & 3];
+        double e1[2] = {b[0] - a[0], b[1] - a[1]}, e2[2] = {cc[0] - b[0], cc[1] - b[1]};
+        turn[k] = cross2(e1, e2);
+        pos += turn[k] > 0.0;
+        neg += turn[k] < 0.0;
+        sum += turn[k];
+    }
+    if (pos != 4 && neg != 4) return 0;
+    for (k = 0; k < 4; ++k) {
+        lam[k] = 4.0 * turn[(k + 2) & 3] / sum;
+        if (!(lam[k] > 0.0 && lam[k] < INFINITY)) return 0; /* underflow, overflow */
+        cs += 0.25 * lam[k] * P[k][0];
+        ct += 0.25 * lam[k] * P[k][1];
+    }
+    /* Centre: H(0, 0), the meeting point of the diagonals — for a plane
+     * seen by a pinhole camera, the exact image of the pixel centre. */
+    g->s = (float)(ms + cs);
+    g->t = (float)(mt + ct);
+    for (k = 0; k < 4; ++k) {
+        P[k][0] = (double)q->st[k][0] - g->s;
+        P[k][1] = (double)q->st[k][1] - g->t;
+    }
+    for (k = 0; k < 2; ++k) {
+        g->H[k][0] = 0.25 * (lam[1] * P[1][k] + lam[2] * P[2][k] - lam[0] * P[0][k] - lam[3] * P[3][k]);
+        g->H[k][1] = 0.25 * (lam[2] * P[2][k] + lam[3] * P[3][k] - lam[0] * P[0][k] - lam[1] * P[1][k]);
+        g->H[k][2] = 0.25 * (lam[0] * P[0][k] + lam[1] * P[1][k] + lam[2] * P[2][k] + lam[3] * P[3][k]);
+    }
+    g->H[2][0] = 0.25 * (lam[1] + lam[2] - lam[0] - lam[3]);
+    g->H[2][1] = 0.25 * (lam[2] + lam[3] - lam[0] - lam[1]);
+    g->H[2][2] = 1.0;
+    /* Centre Jacobian ∂(U/w)/∂(x, y) at (0, 0), where w = 1. */
+    for (k = 0; k < 2; ++k) {
+        g->J[k][0] = g->H[k][0] - g->H[k][2] * g->H[2][0];
+        g->J[k][1] = g->H[k][1] - g->H[k][2] * g->H[2][1];
+    }
+    g->wlo = fmin(fmin(lam[0], lam[1]), fmin(lam[2], lam[3]));
+    g->whi = fmax(fmax(lam[0], lam[1]), fmax(lam[2], lam[3]));
+    return 1;
 }
 
 uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
@@ -352,8 +373,18 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
     g.J[1][0] = q->dtdx;
     g.J[1][1] = q->dtdy;
     if (corners) {
-        /* The quad's own centre and centre Jacobian replace the query's. */
-        double ms = 0.0, mt = 0.0;
+        quad = projective(corners, &g);
+        /* |det DH| ∝ 1/w³ varies over the quad by (whi/wlo)³; beyond 2²⁰
+         * (a corner within about a pixel of the horizon) the quad is
+         * filtered as its centre parallelogram, which stays exact in centre
+         * and centre Jacobian. */
+        if (quad && !(g.whi * g.whi * g.whi <= 0x1p20 * (g.wlo * g.wlo * g.wlo))) quad = -1;
+    }
+    if (corners && !quad) {
+        /* Not a projective image of the square (bow-tie, dart, zero area,
+         * non-finite): the parallelogram of the bilinear centre Jacobian
+         * about the corner mean, a defined, bounded result. */
+        double ms = 0.0, mt = 0.0, P[4][2];
         for (k = 0; k < 4; ++k) {
             ms += 0.25 * corners->st[k][0];
             mt += 0.25 * corners->st[k][1];
@@ -361,20 +392,19 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
         g.s = (float)ms;
         g.t = (float)mt;
         for (k = 0; k < 4; ++k) {
-            g.P[k][0] = (double)corners->st[k][0] - g.s;
-            g.P[k][1] = (double)corners->st[k][1] - g.t;
+            P[k][0] = (double)corners->st[k][0] - g.s;
+            P[k][1] = (double)corners->st[k][1] - g.t;
         }
-        g.J[0][0] = 0.25 * (g.P[1][0] + g.P[2][0] - g.P[0][0] - g.P[3][0]);
-        g.J[0][1] = 0.25 * (g.P[2][0] + g.P[3][0] - g.P[0][0] - g.P[1][0]);
-        g.J[1][0] = 0.25 * (g.P[1][1] + g.P[2][1] - g.P[0][1] - g.P[3][1]);
-        g.J[1][1] = 0.25 * (g.P[2][1] + g.P[3][1] - g.P[0][1] - g.P[1][1]);
-        quad = quad_convex(g.P);
+        g.J[0][0] = 0.25 * (P[1][0] + P[2][0] - P[0][0] - P[3][0]);
+        g.J[0][1] = 0.25 * (P[2][0] + P[3][0] - P[0][0] - P[1][0]);
+        g.J[1][0] = 0.25 * (P[1][1] + P[2][1] - P[0][1] - P[3][1]);
+        g.J[1][1] = 0.25 * (P[2][1] + P[3][1] - P[0][1] - P[1][1]);
     }
     /* Level choice from the minor semi-axis in base texels (after the
      * eccentricity clamp, which also decides whether a quad stays a quad). */
     fp_svd2(g.J[0][0] * B->w, g.J[0][1] * B->w, g.J[1][0] * B->h, g.J[1][1] * B->h, &d);
-    if (quad && !(d.s[1] * FP_MAX_ECCENTRICITY >= d.s[0] && d.s[1] > 0.0)) quad = 0;
+    if (quad == 1 && !(d.s[1] * FP_MAX_ECCENTRICITY >= d.s[0] && d.s[1] > 0.0)) quad = 0;
     fp_clamp_eccentricity(&d);
-    return fp_run(c, &g, quad ? bn_quad_level : bn_affine_level, d.s[1], g.s, g.t, call_bias, out,
+    return fp_run(c, &g, quad == 1 ? bn_quad_level : bn_affine_level, d.s[1], g.s, g.t, call_bias, out,
                   dds, ddt, st);
 }
