@@ -22,15 +22,10 @@
 #include <stdint.h>
 #include <string.h>
 
-/* Record an error with a formatted message when the caller asked for one. */
-sample_status sample_fail(sample_error *err, sample_status status, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
+/* Return early with a status and a formatted message (sample_error_set). */
 #define RETURN_ERROR_IF(cond, err, status, ...)                                \
     do {                                                                       \
-        if (cond) return sample_fail((err), (status), __VA_ARGS__);            \
+        if (cond) return sample_error_set((err), (status), __VA_ARGS__);       \
     } while (0)
 
 /* ---- Storage ------------------------------------------------------------ */

@@ -254,7 +254,7 @@ static sample_status build_level(sample_texture *tex, int k, const sample_mip_pa
         !axis_make(&ay, S->h, tex->level[k].h, p->filter, p->wrap_t)) {
         axis_free(&ax);
         axis_free(&ay);
-        return sample_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate filter taps for level %d", k);
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate filter taps for level %d", k);
     }
     resample(tex, k, &ax, &ay, row, tmp);
     axis_free(&ax);
@@ -278,7 +278,7 @@ sample_status mip_build(sample_texture *tex, const sample_mip_params *p, sample_
     if (!row || !tmp) {
         free(row);
         free(tmp);
-        return sample_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate mip scratch for a %d x %d texture",
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate mip scratch for a %d x %d texture",
                            tex->width, tex->height);
     }
     for (k = 1; k < full && st == SAMPLE_OK; ++k) st = build_level(tex, k, p, row, tmp, err);

@@ -117,16 +117,22 @@ int sample_footprint_parse(const char *s)
 }
 int sample_mipgen_parse(const char *s) { return parse_in(mipgen_names, COUNT_OF(mipgen_names), s); }
 
-sample_status sample_fail(sample_error *err, sample_status status, const char *fmt, ...)
+sample_status sample_error_vset(sample_error *err, sample_status status, const char *fmt, va_list ap)
 {
     if (err) {
-        va_list ap;
         int n;
         err->status = status;
-        va_start(ap, fmt);
         n = vsnprintf(err->message, sizeof err->message, fmt, ap);
-        va_end(ap);
         if (n < 0) snprintf(err->message, sizeof err->message, "%s", sample_strerror(status));
     }
+    return status;
+}
+
+sample_status sample_error_set(sample_error *err, sample_status status, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    sample_error_vset(err, status, fmt, ap);
+    va_end(ap);
     return status;
 }

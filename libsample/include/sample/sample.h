@@ -53,6 +53,7 @@
 #ifndef SAMPLE_SAMPLE_H
 #define SAMPLE_SAMPLE_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -96,6 +97,16 @@ typedef struct sample_error {
     sample_status status;
     char message[256]; /* what was wrong, with the offending values */
 } sample_error;
+
+/* Fill `err` (if not NULL) with a status and a printf-style message, and
+ * return the status: how libsample and libraries built on it (libsample_io)
+ * report errors in one way. */
+sample_status sample_error_set(sample_error *err, sample_status status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+sample_status sample_error_vset(sample_error *err, sample_status status, const char *fmt, va_list ap);
 
 /* ---- Textures ---------------------------------------------------------- */
 

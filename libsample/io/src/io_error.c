@@ -8,15 +8,10 @@
 
 sample_status io_fail(sample_error *err, sample_status status, const char *fmt, ...)
 {
-    if (err) {
-        va_list ap;
-        int n;
-        err->status = status;
-        va_start(ap, fmt);
-        n = vsnprintf(err->message, sizeof err->message, fmt, ap);
-        va_end(ap);
-        if (n < 0) snprintf(err->message, sizeof err->message, "%s", sample_strerror(status));
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    sample_error_vset(err, status, fmt, ap);
+    va_end(ap);
     return status;
 }
 
