@@ -10,6 +10,7 @@
  *   oiio_write.cpp  OpenImageIO: write one picture / named channels
  *   ocio.cpp        OpenColorIO: config, name resolution, conversions
  *   exr_mip.cpp     OpenEXR: tiled mip-mapped writer
+ *   exr_read.cpp    OpenEXR: direct reader of tiled mip-mapped files
  */
 #ifndef SAMPLE_IO_INTERNAL_H
 #define SAMPLE_IO_INTERNAL_H
@@ -55,6 +56,27 @@ sample_status io_reader_level_size(io_reader *r, int k, int *w, int *h, sample_e
 sample_status io_reader_read(io_reader *r, int k, io_ptype type, int nchan, void *dst,
                              sample_error *err);
 void io_reader_close(io_reader *r); /* accepts NULL */
+
+/* ---- Direct OpenEXR reader (exr_read.cpp) -------------------------------- */
+
+/* The same interface as io_reader, for tiled MIPMAP_LEVELS ROUND_DOWN
+ * single-part files with half or float channels R[, G[, B[, A]]]. */
+typedef struct io_exr_tiled io_exr_tiled;
+
+/* Exactly one of path or (data, size). *out stays NULL (status SAMPLE_OK)
+ * when the file is not such a file or Imf cannot parse its header: the
+ * caller then uses io_reader. data must outlive the reader. */
+sample_status io_exr_tiled_open(const char *path, const void *data, size_t size, io_exr_tiled **out,
+                                sample_error *err);
+void io_exr_tiled_info_get(const io_exr_tiled *x, io_reader_info *info);
+sample_status io_exr_tiled_level_size(io_exr_tiled *x, int k, int *w, int *h, sample_error *err);
+/* type must be info.native (linear data is stored as read). */
+sample_status io_exr_tiled_read(io_exr_tiled *x, int k, io_ptype type, int nchan, void *dst, sample_error *err);
+void io_exr_tiled_close(io_exr_tiled *x); /* accepts NULL */
+/* Textures built through the direct reader since load (tests use it to
+ * see which path a read took); io_exr_direct_count adds one. */
+void io_exr_direct_count(void);
+unsigned long io_exr_direct_reads(void);
 
 /* ---- Colour (ocio.cpp) --------------------------------------------------- */
 

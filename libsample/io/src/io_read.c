@@ -15,6 +15,31 @@ typedef struct read_plan {
     const char *colorspace;  /* resolved source space */
 } read_plan;
 
+/* Where the levels come from: the direct OpenEXR reader (tiled mip-mapped
+ * EXR, exr_read.cpp) when exr is set, else OpenImageIO. Both have the same
+ * interface, so the plan, the budget and the level loop are shared. */
+typedef struct io_source {
+    io_exr_tiled *exr;
+    io_reader *oiio;
+} io_source;
+
+static void src_info(const io_source *s, io_reader_info *inf)
+{
+    if (s->exr) io_exr_tiled_info_get(s->exr, inf);
+    else io_reader_info_get(s->oiio, inf);
+}
+
+static sample_status src_level_size(io_source *s, int k, int *w, int *h, sample_error *err)
+{
+    return s->exr ? io_exr_tiled_level_size(s->exr, k, w, h, err) : io_reader_level_size(s->oiio, k, w, h, err);
+}
+
+static sample_status src_read(io_source *s, int k, io_ptype type, int nchan, void *dst, sample_error *err)
+{
+    return s->exr ? io_exr_tiled_read(s->exr, k, type, nchan, dst, err)
+                  : io_reader_read(s->oiio, k, type, nchan, dst, err);
+}
+
 /* Names of sRGB spaces in common configs, tried in order when the rule says
  * "sRGB" (our shipped config has the first; ACES configs have the others). */
 static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture",
@@ -90,7 +115,7 @@ static void rule_size(int w, int h, int k, int *lw, int *lh)
 /* How many of the file's levels follow libsample's ROUND_DOWN chain (a file
  * written with ROUND_UP sizes matches only at level 0; then the pyramid is
  * rebuilt). Also enforces the byte budget. */
-static sample_status count_levels(io_reader *r, const io_reader_info *inf, const read_plan *p, int wanted,
+static sample_status count_levels(io_source *r, const io_reader_info *inf, const read_plan *p, int wanted,
                                   size_t max_bytes, int *count, sample_error *err)
 {
     size_t total = 0;
@@ -98,7 +123,7 @@ static sample_status count_levels(io_reader *r, const io_reader_info *inf, const
     *count = 0;
     for (k = 0; k < wanted; ++k) {
         int w, h, rw, rh;
-        sample_status st = io_reader_level_size(r, k, &w, &h, err);
+        sample_status st = src_level_size(r, k, &w, &h, err);
         if (st != SAMPLE_OK) return st;
         rule_size(inf->width, inf->height, k, &rw, &rh);
         if (w != rw || h != rh) break;
@@ -113,7 +138,7 @@ static sample_status count_levels(io_reader *r, const io_reader_info *inf, const
 }
 
 /* Read level k into a fresh buffer in the texture's storage format. */
-static sample_status read_level(io_reader *r, const io_colour *col, const read_plan *p, int k, int w, int h,
+static sample_status read_level(io_source *r, const io_colour *col, const read_plan *p, int k, int w, int h,
                                 void **out, sample_error *err)
 {
     size_t n = (size_t)w * (size_t)h, values = n * (size_t)p->nchan, i;
@@ -122,7 +147,7 @@ static sample_status read_level(io_reader *r, const io_colour *col, const read_p
     sample_status st;
     *out = NULL;
     if (!buf) return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
-    st = io_reader_read(r, k, p->read_as, p->nchan, buf, err);
+    st = src_read(r, k, p->read_as, p->nchan, buf, err);
     if (st == SAMPLE_OK && p->convert)
         st = io_colour_apply(col, p->colorspace, 1, (float *)(void *)buf, n, p->nchan, err);
     if (st == SAMPLE_OK && p->read_as == IO_FLOAT && p->format == SAMPLE_FORMAT_F16) {
@@ -144,8 +169,10 @@ static sample_status read_level(io_reader *r, const io_colour *col, const read_p
     return SAMPLE_OK;
 }
 
-static sample_status read_texture(io_reader *r, const sample_io_options *o, const sample_mip_params *mip,
-                                  sample_texture **out, sample_error *err)
+/* *fallback is set (and nothing read) when the direct reader was given a
+ * file whose colour space needs an OCIO conversion: OIIO's path does that. */
+static sample_status read_texture(io_source *r, const sample_io_options *o, const sample_mip_params *mip,
+                                  sample_texture **out, int *fallback, sample_error *err)
 {
     sample_io_options defaults;
     io_reader_info inf;
@@ -159,7 +186,8 @@ static sample_status read_texture(io_reader *r, const sample_io_options *o, cons
         sample_io_options_init(&defaults);
         o = &defaults;
     }
-    io_reader_info_get(r, &inf);
+    *fallback = 0;
+    src_info(r, &inf);
     if (inf.width > SAMPLE_MAX_SIZE || inf.height > SAMPLE_MAX_SIZE)
         return io_fail(err, SAMPLE_E_TOO_LARGE, "image is %d x %d; the largest texture side is %d", inf.width,
                        inf.height, SAMPLE_MAX_SIZE);
@@ -170,6 +198,11 @@ static sample_status read_texture(io_reader *r, const sample_io_options *o, cons
     p.nchan = inf.channels < 4 ? inf.channels : 4;
     st = io_colour_open(o->ocio_config, &col, err);
     if (st == SAMPLE_OK) st = choose_colorspace(col, o, &inf, &p.colorspace, err);
+    if (st == SAMPLE_OK && r->exr && !io_colour_is_linear(col, p.colorspace)) {
+        *fallback = 1;
+        io_colour_close(col);
+        return SAMPLE_OK;
+    }
     if (st == SAMPLE_OK) {
         plan_storage(col, &inf, &p);
         st = count_levels(r, &inf, &p, o->use_file_levels ? inf.nlevels : 1,
@@ -190,36 +223,51 @@ static sample_status read_texture(io_reader *r, const sample_io_options *o, cons
     return st;
 }
 
+/* Direct OpenEXR first (tiled mip-mapped files), else OpenImageIO. */
+static sample_status read_source(const char *path, const void *data, size_t size, const char *hint,
+                                 const sample_io_options *o, const sample_mip_params *mip, sample_texture **out,
+                                 sample_error *err)
+{
+    io_source s = {NULL, NULL};
+    int fallback = 0;
+    sample_status st = io_exr_tiled_open(path, data, size, &s.exr, err);
+    if (st != SAMPLE_OK) return st;
+    if (s.exr) {
+        st = read_texture(&s, o, mip, out, &fallback, err);
+        io_exr_tiled_close(s.exr);
+        s.exr = NULL;
+        if (st != SAMPLE_OK || !fallback) {
+            if (st == SAMPLE_OK) io_exr_direct_count();
+            return st;
+        }
+    }
+    st = io_reader_open(path, data, size, hint, &s.oiio, err);
+    if (st != SAMPLE_OK) return st;
+    st = read_texture(&s, o, mip, out, &fallback, err);
+    io_reader_close(s.oiio);
+    return st;
+}
+
 sample_status sample_io_read_texture(const char *path, const sample_io_options *o, const sample_mip_params *mip,
                                      sample_texture **out, sample_error *err)
 {
-    io_reader *r;
     sample_status st;
     if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: out is NULL");
     *out = NULL;
     if (!path || !*path) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
     if ((st = io_exr_guard_file(path, err)) != SAMPLE_OK) return st;
-    st = io_reader_open(path, NULL, 0, NULL, &r, err);
-    if (st != SAMPLE_OK) return st;
-    st = read_texture(r, o, mip, out, err);
-    io_reader_close(r);
-    return st;
+    return read_source(path, NULL, 0, NULL, o, mip, out, err);
 }
 
 sample_status sample_io_read_memory(const void *data, size_t size, const char *format_hint,
                                     const sample_io_options *o, const sample_mip_params *mip,
                                     sample_texture **out, sample_error *err)
 {
-    io_reader *r;
     sample_status st;
     if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: out is NULL");
     *out = NULL;
     if (!data && size) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
     if (size == 0) return io_fail(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
     if ((st = io_exr_guard_memory(data, size, err)) != SAMPLE_OK) return st;
-    st = io_reader_open(NULL, data, size, format_hint, &r, err);
-    if (st != SAMPLE_OK) return st;
-    st = read_texture(r, o, mip, out, err);
-    io_reader_close(r);
-    return st;
+    return read_source(NULL, data, size, format_hint, o, mip, out, err);
 }
