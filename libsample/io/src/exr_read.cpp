@@ -95,6 +95,13 @@ static bool eligible(const Imf::MultiPartInputFile &file, int *nchan, Imf::Pixel
     if (h.hasType() && h.type() != Imf::TILEDIMAGE) return false; // deep tiles
     const Imf::TileDescription &td = h.tileDescription();
     if (td.mode != Imf::MIPMAP_LEVELS || td.roundingMode != Imf::ROUND_DOWN) return false;
+    // Opening the part sizes its tile buffers and level tables from these
+    // numbers; absurd ones are left to OIIO's reader, which reports them
+    // as before, rather than allocated here first.
+    const Imath::Box2i &dw = h.dataWindow();
+    int64_t w = (int64_t)dw.max.x - dw.min.x + 1, hh = (int64_t)dw.max.y - dw.min.y + 1;
+    if (w < 1 || hh < 1 || w > SAMPLE_MAX_SIZE || hh > SAMPLE_MAX_SIZE) return false;
+    if (td.xSize < 1 || td.ySize < 1 || td.xSize > SAMPLE_MAX_SIZE || td.ySize > SAMPLE_MAX_SIZE) return false;
     return plain_rgba(h.channels(), nchan, type);
 }
 
