@@ -278,6 +278,35 @@ static void test_threads(void)
     sample_texture_destroy(tex);
 }
 
+static void test_footprint_samplers(void)
+{
+    /* Footprint filters: the fast path takes their λ ≤ 0 queries (the mag
+     * filter) and hands the others to the filter; both paths must agree. */
+    static const int sizes[2][2] = {{13, 7}, {16, 8}};
+    int f, nc, z, wrap, fp, fails = 0;
+    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
+        for (nc = 1; nc <= 4; ++nc)
+            for (z = 0; z < 2; ++z) {
+                sample_texture *tex = make_texture((sample_format)f, nc, sizes[z][0], sizes[z][1]);
+                if (!tex) continue;
+                for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
+                    for (fp = 1; fp < SAMPLE_FOOTPRINT_COUNT; ++fp) {
+                        sample_sampler s;
+                        unsigned what = rnd() & 31;
+                        random_sampler(&s, wrap, SAMPLE_LINEAR_MIPMAP_LINEAR);
+                        s.footprint = (sample_footprint)fp;
+                        s.max_anisotropy = 16.0f;
+                        fill_queries(qs, biases, quads);
+                        run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
+                        run(tex, s, 0, qs, biases, quads, what, NQ, &got);
+                        if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) break;
+                    }
+                CHECK(fails == 0, "%d footprint configurations differ (format %d, %d channels)", fails,
+                      f, nc);
+                sample_texture_destroy(tex);
+            }
+}
+
 static void test_scalar_option_value(void)
 {
     /* Additive: the next free bit after the existing options. */
@@ -287,6 +316,7 @@ static void test_scalar_option_value(void)
 int main(void)
 {
     RUN(test_identical_all_combinations);
+    RUN(test_footprint_samplers);
     RUN(test_batch_sizes);
     RUN(test_threads);
     RUN(test_scalar_option_value);

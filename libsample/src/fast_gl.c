@@ -1,6 +1,9 @@
 /*
- * The fast path of sample_batch for the OpenGL filters (footprint NONE):
- * NEAREST, LINEAR and CUBIC per level, with or without mipmaps.
+ * The fast path of sample_batch for the OpenGL filters: NEAREST, LINEAR and
+ * CUBIC per level, with or without mipmaps; with a footprint filter, the
+ * magnified queries (λ ≤ 0, the mag filter), the others being handed to
+ * the filter (sample_run_footprint). Also the per-format readers the
+ * footprint filters use (tex_readers, at the end).
  *
  * It computes exactly what the general path (sampler.c's loop over
  * recon_level / ctx_texel) computes, with the same operations in the same
@@ -46,11 +49,18 @@ typedef struct fast_taps {
 } fast_taps;
 
 typedef struct fast_plan {
-    int border; /* non-finite input: the border colour */
+    int border;    /* non-finite input: the border colour */
+    int footprint; /* λ > 0 with a footprint filter: sample_run_footprint */
     float lam;
     lod_choice ch;
     fast_taps tp[2]; /* ch.level0, ch.level1 */
 } fast_plan;
+
+/* Bytes per texel, a constant in each instantiation. */
+SAMPLE_FORCE_INLINE size_t texel_bytes(sample_format fmt, int nc)
+{
+    return (size_t)nc * (fmt == SAMPLE_FORMAT_F32 ? 4u : (fmt == SAMPLE_FORMAT_F16 ? 2u : 1u));
+}
 
 static int kind_taps(sample_filter kind)
 {
@@ -178,12 +188,19 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
 {
     const sample_query *q = &a->queries[i];
     pl->border = !batch_query_finite(a, i);
+    pl->footprint = 0;
     if (pl->border) return;
     if (fixed) {
         pl->ch = *fixed;
         pl->lam = 0.0f;
     } else {
         pl->lam = lod_lambda(c, lod_lambda_base(c, q), a->lod_bias ? a->lod_bias[i] : 0.0f);
+        /* sampler.c's rule: a footprint filter minifies, the mag filter
+         * magnifies. */
+        if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && pl->lam > 0.0f) {
+            pl->footprint = 1;
+            return;
+        }
         pl->ch = lod_select(c, pl->lam);
     }
     plan_level(c, pl->ch.level0, pl->ch.kind, q->s, q->t, tb, &pl->tp[0]);
@@ -210,6 +227,10 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         }
         return;
     }
+    if (pl->footprint) {
+        sample_run_footprint(c, a, i);
+        return;
+    }
     n = run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level0, &pl->tp[0], out, dds, ddt);
     if (pl->ch.level1 >= 0) {
         float o1[4], ds1[4], dt1[4];
@@ -233,14 +254,14 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
 SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
                                  int nc)
 {
-    const size_t tb = (size_t)nc * (fmt == SAMPLE_FORMAT_F32 ? 4u : (fmt == SAMPLE_FORMAT_F16 ? 2u : 1u));
+    const size_t tb = texel_bytes(fmt, nc);
     const sample_sampler *smp = c->smp;
     lod_choice mn = lod_select(c, 1.0f), mg = lod_select(c, -1.0f);
     /* λ only picks between two identical choices: a non-mipmapped min filter
      * whose per-level filter is the mag filter's (lod_select then returns
      * level_base and that filter for every λ). Stats report λ, so they need
-     * it computed. */
-    int fixed = !a->stats &&
+     * it computed, and a footprint filter needs it for every query. */
+    int fixed = !a->stats && smp->footprint == SAMPLE_FOOTPRINT_NONE &&
                 (smp->min_filter == SAMPLE_NEAREST || smp->min_filter == SAMPLE_LINEAR ||
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
@@ -275,6 +296,49 @@ _Static_assert(SAMPLE_FORMAT_COUNT == 4, "one row of fast_gl_table per format");
 fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a)
 {
     (void)a;
-    if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE) return NULL;
     return fast_gl_table[c->tex->format][c->tex->channels - 1];
 }
+
+/* ---- Readers for the footprint filters (tex_readers) --------------------- */
+
+SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, int n,
+                                    float (*out)[4])
+{
+    const size_t tb = texel_bytes(fmt, nc);
+    int k;
+    for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * tb));
+}
+
+SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format fmt, int nc, int lv,
+                                            float s, float t, float out[4], float dds[4],
+                                            float ddt[4])
+{
+    const size_t tb = texel_bytes(fmt, nc);
+    fast_taps tp;
+    plan_level(c, lv, SAMPLE_LINEAR, s, t, tb, &tp);
+    return run_level(c, fmt, nc, tb, SAMPLE_LINEAR, lv, &tp, out, dds, ddt);
+}
+
+#define TEX_READERS(fmt, nc)                                                   \
+    static void row_##fmt##_##nc(const unsigned char *p, int n, float (*out)[4]) \
+    {                                                                          \
+        decode_row(SAMPLE_FORMAT_##fmt, nc, p, n, out);                        \
+    }                                                                          \
+    static uint32_t bilinear_##fmt##_##nc(const sample_ctx *c, int lv, float s, float t, \
+                                          float out[4], float dds[4], float ddt[4]) \
+    {                                                                          \
+        return bilinear_level(c, SAMPLE_FORMAT_##fmt, nc, lv, s, t, out, dds, ddt); \
+    }
+#define TEX_READERS_FMT(fmt)                                                   \
+    TEX_READERS(fmt, 1) TEX_READERS(fmt, 2) TEX_READERS(fmt, 3) TEX_READERS(fmt, 4)
+TEX_READERS_FMT(F32)
+TEX_READERS_FMT(F16)
+TEX_READERS_FMT(UNORM8)
+TEX_READERS_FMT(SRGB8)
+
+#define TEX_READERS_ROW(fmt)                                                   \
+    [SAMPLE_FORMAT_##fmt] = {{row_##fmt##_1, bilinear_##fmt##_1}, {row_##fmt##_2, bilinear_##fmt##_2}, \
+                             {row_##fmt##_3, bilinear_##fmt##_3}, {row_##fmt##_4, bilinear_##fmt##_4}}
+const tex_readers tex_readers_table[SAMPLE_FORMAT_COUNT][4] = {
+    TEX_READERS_ROW(F32), TEX_READERS_ROW(F16), TEX_READERS_ROW(UNORM8), TEX_READERS_ROW(SRGB8),
+};

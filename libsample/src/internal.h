@@ -202,6 +202,28 @@ static inline int batch_query_finite(const sample_batch_args *a, size_t k)
 typedef void (*fast_gl_fn)(const sample_ctx *c, const sample_batch_args *a);
 fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a);
 
+/* The fast path's readers for the other filters, one set per (format ×
+ * channel count), chosen per query by tex_readers_of (a table look-up, so
+ * that a sample_ctx needs no extra field):
+ *   row       decodes n consecutive in-range texels at p (tex_decode_v4);
+ *   bilinear  recon_level(c, lv, SAMPLE_LINEAR, s, t, …) bit for bit (the
+ *             fast path's addressing; tests/test_fastpath.c). */
+typedef struct tex_readers {
+    void (*row)(const unsigned char *p, int n, float (*out)[4]);
+    uint32_t (*bilinear)(const sample_ctx *c, int lv, float s, float t, float out[4],
+                         float dds[4], float ddt[4]);
+} tex_readers;
+extern const tex_readers tex_readers_table[SAMPLE_FORMAT_COUNT][4];
+static inline const tex_readers *tex_readers_of(const sample_texture *t)
+{
+    return &tex_readers_table[t->format][t->channels - 1];
+}
+
+/* The footprint queries of a batch (sampler.c): query i (finite, λ > 0)
+ * through the sampler's footprint filter, with its stats. The fast path
+ * hands these back; its λ ≤ 0 queries are the mag filter's. */
+void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i);
+
 /* ---- Reconstruction on one level (reconstruct.c) ------------------------ */
 
 /* kind is SAMPLE_NEAREST, SAMPLE_LINEAR or SAMPLE_CUBIC. (s, t) normalized.

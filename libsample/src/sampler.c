@@ -110,7 +110,7 @@ static void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i
     if (pl->ch.level1 >= 0) ctx_prefetch_bilinear(c, pl->ch.level1, q->s, q->t);
 }
 
-static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const query_plan *pl)
+void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i)
 {
     const sample_query *q = &a->queries[i];
     float *out = a->rgba + 4 * i;
@@ -119,8 +119,39 @@ static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
     sample_stats local, *st = a->stats ? &a->stats[i] : &local;
     float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
     const sample_quad *corners = a->corners ? &a->corners[i] : NULL;
+    uint32_t n;
+
+    st->level0 = st->level1 = -1;
+    st->level_frac = 0.0f;
+    st->lod = 0.0f;
+    switch (c->smp->footprint) {
+    case SAMPLE_FOOTPRINT_ANISOTROPIC:
+        n = fp_anisotropic(c, q, bias, out, dds, ddt, st);
+        break;
+    case SAMPLE_FOOTPRINT_BLINN_NEWELL:
+        n = fp_blinn_newell(c, q, corners, bias, out, dds, ddt, st);
+        break;
+    case SAMPLE_FOOTPRINT_EWA:
+    default:
+        n = fp_ewa(c, q, bias, out, dds, ddt, st);
+        break;
+    }
+    st->texels = n;
+}
+
+static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const query_plan *pl)
+{
+    const sample_query *q = &a->queries[i];
+    float *out = a->rgba + 4 * i;
+    float *dds = a->drgba_ds ? a->drgba_ds + 4 * i : NULL;
+    float *ddt = a->drgba_dt ? a->drgba_dt + 4 * i : NULL;
+    sample_stats local, *st = a->stats ? &a->stats[i] : &local;
     uint32_t n = 0;
 
+    if (pl->kind == PLAN_FOOTPRINT) {
+        sample_run_footprint(c, a, i);
+        return;
+    }
     st->level0 = st->level1 = -1;
     st->level_frac = 0.0f;
     st->lod = 0.0f;
@@ -133,19 +164,7 @@ static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
     case PLAN_GL:
         n = gl_apply(c, q, pl->lam, &pl->ch, out, dds, ddt, st);
         break;
-    case PLAN_FOOTPRINT:
-        switch (c->smp->footprint) {
-        case SAMPLE_FOOTPRINT_ANISOTROPIC:
-            n = fp_anisotropic(c, q, bias, out, dds, ddt, st);
-            break;
-        case SAMPLE_FOOTPRINT_BLINN_NEWELL:
-            n = fp_blinn_newell(c, q, corners, bias, out, dds, ddt, st);
-            break;
-        case SAMPLE_FOOTPRINT_EWA:
-        default:
-            n = fp_ewa(c, q, bias, out, dds, ddt, st);
-            break;
-        }
+    case PLAN_FOOTPRINT: /* above */
         break;
     }
     st->texels = n;
