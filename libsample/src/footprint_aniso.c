@@ -51,6 +51,8 @@ uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_b
     double lb = log2(pmax / n);
     float lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias), f;
     uint32_t texels = 0;
+    /* recon_level's bilinear, the fast path's way (same bits). */
+    const tex_readers *rd = tex_readers_of(c->tex);
 
     /* Each probe is trilinear (LINEAR_MIPMAP_LINEAR, eqs. 8.17–8.18) at λ;
      * λ ≤ 0 reads the base level bilinearly. */
@@ -67,9 +69,9 @@ uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_b
         double off = (double)i / (n + 1) - 0.5;
         float s = (float)(q->s + off * ms), t = (float)(q->t + off * mt);
         float o0[4], s0[4], t0[4], o1[4], s1[4], t1[4];
-        texels += recon_level(c, l0, SAMPLE_LINEAR, s, t, o0, s0, t0);
+        texels += rd->bilinear(c, l0, s, t, o0, s0, t0);
         if (l1 != l0) {
-            texels += recon_level(c, l1, SAMPLE_LINEAR, s, t, o1, s1, t1);
+            texels += rd->bilinear(c, l1, s, t, o1, s1, t1);
         } else {
             memcpy(o1, o0, sizeof o1);
             memcpy(s1, s0, sizeof s1);

@@ -100,6 +100,18 @@ void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double
     *v0 = reduce_period(mt, (double)wrap_coord(mt, t, L->h) * L->h, L->h) - 0.5;
 }
 
+void fp_read_row(const sample_ctx *c, int lv, double j, double ilo, int n, float (*T)[4])
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    int k;
+    if (j >= 0.0 && j < (double)L->h && ilo >= 0.0 && ilo + n <= (double)L->w) {
+        tex_readers_of(c->tex)->row(L->data + (size_t)j * L->stride + (size_t)ilo * c->tex->texel_bytes,
+                                    n, T);
+        return;
+    }
+    for (k = 0; k < n; ++k) ctx_texel(c, lv, ilo + k, j, 1, T[k]);
+}
+
 static void store(float *dst, const double *v)
 {
     int k;

@@ -68,6 +68,7 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     double u0, v0, J[2][2], A, B, C, F, jlo, nrows, total = 0.0, ku, kv;
     int fs, ft, r, k;
     fp_svd d;
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
     fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     fp_level_jacobian(c, lv, g->J, fs, ft, J);
@@ -109,10 +110,10 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
             continue;
         }
         if (ncol > cap) return total; /* unreachable after a successful count */
+        fp_read_row(c, lv, j, ilo, (int)ncol, T);
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, r2, x, w, dw;
             int e;
-            float T[4];
             r2 = A * du * du + B * du * dv + C * dv * dv;
             if (!(r2 < 1.0)) continue;
             if (r2 < 0.0) r2 = 0.0;
@@ -122,9 +123,8 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
             dw = (ewa_lut[e + 1] - ewa_lut[e]) * 128.0; /* dw/dr² */
             w = ewa_lut[e] + (x - e) * (ewa_lut[e + 1] - ewa_lut[e]);
             if (w <= 0.0) continue;
-            ctx_texel(c, lv, ii, j, 1, T);
             /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */
-            fp_accum_add(acc, w, -dw * (2.0 * A * du + B * dv) * ku, -dw * (B * du + 2.0 * C * dv) * kv, T);
+            fp_accum_add(acc, w, -dw * (2.0 * A * du + B * dv) * ku, -dw * (B * du + 2.0 * C * dv) * kv, T[k]);
             total += 1.0;
         }
     }

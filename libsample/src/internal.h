@@ -376,6 +376,12 @@ static inline void fp_accum_add(fp_accum *a, double w, double dwdu, double dwdv,
     a->texels++;
 }
 
+/* Texels ilo … ilo + n − 1 (n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS) of row j of
+ * level lv into T, exactly as ctx_texel reads them (linear rule): a span
+ * inside the level is decoded in one go by the format's reader
+ * (tex_readers), anything else texel by texel through ctx_texel. */
+void fp_read_row(const sample_ctx *c, int lv, double j, double ilo, int n, float (*T)[4]);
+
 /* Prefetch the lines of texels ilo … ilo + ncol − 1 of row j of level lv
  * (the part inside the level; wrapped parts are left to the hardware). The
  * footprint filters call it from their counting pass, which finds every
