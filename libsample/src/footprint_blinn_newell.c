@@ -80,6 +80,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     double u0, v0, J[2][2], Jw[2][2], M[2][2], s0, s1, ext, jlo, nrows, total = 0.0, ku, kv;
     int fs, ft, r, i, k;
     fp_svd d;
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
     fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     fp_level_jacobian(c, lv, g->J, fs, ft, J);
@@ -106,19 +107,19 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
         slab(M[1][0], M[1][1] * dv, &lo, &hi);
         ncol = row_span(u0, lo, hi, &ilo);
         if (count_only) {
+            fp_prefetch_span(c, lv, j, ilo, ncol);
             total += ncol;
             if (total > cap) return INFINITY;
             continue;
         }
         if (ncol > cap) return total; /* unreachable after a successful count */
+        fp_read_row(c, lv, j, ilo, (int)ncol, T);
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, gx = 0.0, gy = 0.0, w;
-            float T[4];
             w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
             if (w <= 0.0) continue;
-            ctx_texel(c, lv, ii, j, 1, T);
             /* w depends on c − u0: ∂w/∂u0 = −(gx·M₀₀ + gy·M₁₀). */
-            fp_accum_add(acc, w, -(gx * M[0][0] + gy * M[1][0]) * ku, -(gx * M[0][1] + gy * M[1][1]) * kv, T);
+            fp_accum_add(acc, w, -(gx * M[0][0] + gy * M[1][0]) * ku, -(gx * M[0][1] + gy * M[1][1]) * kv, T[k]);
             total += 1.0;
         }
     }
@@ -160,6 +161,7 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     double total = 0.0;
     int fs, ft, r, k, i, area;
     fp_svd sv;
+    float tx[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
     fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     ku = fs ? -(double)L->w : (double)L->w;
@@ -240,14 +242,15 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
         hull_row(V, dv, &lo, &hi);
         ncol = row_span(u0, lo, hi, &ilo);
         if (count_only) {
+            fp_prefetch_span(c, lv, j, ilo, ncol);
             total += ncol;
             if (total > cap) return INFINITY;
             continue;
         }
         if (ncol > cap) return total; /* unreachable after a successful count */
+        fp_read_row(c, lv, j, ilo, (int)ncol, tx);
         for (k = 0; k < (int)ncol; ++k) {
             double du = ilo + k - u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
-            float tx[4];
             /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
              * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
              * quad, where the pyramid is 0 anyway. */
@@ -258,7 +261,6 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
             y = (G[1][0] * du + G[1][1] * dv + G[1][2]) * iw;
             w = pyramid(x, y, &gx, &gy);
             if (w <= 0.0) continue;
-            ctx_texel(c, lv, ilo + k, j, 1, tx);
             /* ∂w/∂(x, y) = ∇pyr; ∂x/∂u = (G₀₀ − x·G₂₀)/W etc. (quotient
              * rule on X/W); the centre moves opposite to (du, dv). */
             ax = gx;
@@ -281,7 +283,7 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
                 wv = m * wv + w * mv;
                 w *= m;
             }
-            fp_accum_add(acc, w, -wu * ku, -wv * kv, tx);
+            fp_accum_add(acc, w, -wu * ku, -wv * kv, tx[k]);
             total += 1.0;
         }
     }
