@@ -265,6 +265,17 @@ static void test_truncated(void)
     CHECK(sample_io_read_memory(buf, cut, "exr", NULL, NULL, &t, &e) == SAMPLE_E_CORRUPT && !t,
           "truncated memory accepted");
     printf("truncated memory: %s\n", e.message);
+    /* Every cut (header, offset tables, any level): refused, nothing leaks. */
+    {
+        int k;
+        for (k = 0; k < 23; ++k) {
+            size_t n = size * (size_t)k / 23;
+            sample_status st = sample_io_read_memory(buf, n, "exr", NULL, NULL, &t, &e);
+            CHECK(st != SAMPLE_OK && !t && e.message[0], "prefix of %zu bytes: status %d", n, (int)st);
+            sample_texture_destroy(t);
+            t = NULL;
+        }
+    }
     free(buf);
 }
 
