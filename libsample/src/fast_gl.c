@@ -199,6 +199,10 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
          * magnifies. */
         if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && pl->lam > 0.0f) {
             pl->footprint = 1;
+            /* The probes' rows, asked for a block ahead (the other
+             * filters find their spans only in their counting pass). */
+            if (c->smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC)
+                fp_anisotropic_prefetch(c, q, a->lod_bias ? a->lod_bias[i] : 0.0f);
             return;
         }
         pl->ch = lod_select(c, pl->lam);

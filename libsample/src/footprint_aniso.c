@@ -37,34 +37,71 @@ int fp_aniso_count(const sample_sampler *smp, double pmax, double pmin)
     return n;
 }
 
-uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
-                        float out[4], float dds[4], float ddt[4], sample_stats *st)
+/* Probe count, major column, λ and the two levels of a query. */
+typedef struct aniso_setup {
+    int n, l0, l1;
+    float lam, f;
+    double ms, mt;
+} aniso_setup;
+
+static void aniso_setup_of(const sample_ctx *c, const sample_query *q, float call_bias, aniso_setup *a)
 {
     const struct sample_level *B = &c->tex->level[c->base];
     /* In double: the squares of a 1e20 Jacobian overflow float. */
     double px = hypot((double)q->dsdx * B->w, (double)q->dtdx * B->h);
     double py = hypot((double)q->dsdy * B->w, (double)q->dtdy * B->h);
-    double pmax = px >= py ? px : py, pmin = px >= py ? py : px;
-    double ms = px >= py ? q->dsdx : q->dsdy, mt = px >= py ? q->dtdx : q->dtdy;
+    double pmax = px >= py ? px : py, pmin = px >= py ? py : px, lb;
+    a->ms = px >= py ? q->dsdx : q->dsdy;
+    a->mt = px >= py ? q->dtdx : q->dtdy;
+    a->n = fp_aniso_count(c->smp, pmax, pmin);
+    lb = log2(pmax / a->n);
+    a->lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias);
+    /* Each probe is trilinear (LINEAR_MIPMAP_LINEAR, eqs. 8.17–8.18) at λ;
+     * λ ≤ 0 reads the base level bilinearly. */
+    lod_split(c, a->lam, &a->l0, &a->l1, &a->f);
+    if (a->f == 0.0f) a->l1 = a->l0;
+}
+
+/* Ask for every probe's rows, so that their misses overlap. */
+SAMPLE_FORCE_INLINE void aniso_prefetch(const sample_ctx *c, const sample_query *q, const aniso_setup *a)
+{
+    int i;
+    for (i = 1; i <= a->n; ++i) {
+        double off = (double)i / (a->n + 1) - 0.5;
+        float s = (float)(q->s + off * a->ms), t = (float)(q->t + off * a->mt);
+        ctx_prefetch_bilinear(c, a->l0, s, t);
+        if (a->l1 != a->l0) ctx_prefetch_bilinear(c, a->l1, s, t);
+    }
+}
+
+void fp_anisotropic_prefetch(const sample_ctx *c, const sample_query *q, float call_bias)
+{
+    aniso_setup a;
+    aniso_setup_of(c, q, call_bias, &a);
+    aniso_prefetch(c, q, &a);
+}
+
+uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
+                        float out[4], float dds[4], float ddt[4], sample_stats *st)
+{
     double acc[4] = {0, 0, 0, 0}, as[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
-    int n = fp_aniso_count(c->smp, pmax, pmin), i, k, l0, l1;
-    double lb = log2(pmax / n);
-    float lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias), f;
+    aniso_setup a;
+    int n, i, k, l0, l1;
+    double ms, mt;
+    float lam, f;
     uint32_t texels = 0;
     /* recon_level's bilinear, the fast path's way (same bits). */
     const tex_readers *rd = tex_readers_of(c->tex);
 
-    /* Each probe is trilinear (LINEAR_MIPMAP_LINEAR, eqs. 8.17–8.18) at λ;
-     * λ ≤ 0 reads the base level bilinearly. */
-    lod_split(c, lam, &l0, &l1, &f);
-    if (f == 0.0f) l1 = l0;
-    /* Ask for every probe's rows first, so that their misses overlap. */
-    for (i = 1; i <= n; ++i) {
-        double off = (double)i / (n + 1) - 0.5;
-        float s = (float)(q->s + off * ms), t = (float)(q->t + off * mt);
-        ctx_prefetch_bilinear(c, l0, s, t);
-        if (l1 != l0) ctx_prefetch_bilinear(c, l1, s, t);
-    }
+    aniso_setup_of(c, q, call_bias, &a);
+    n = a.n;
+    l0 = a.l0;
+    l1 = a.l1;
+    lam = a.lam;
+    f = a.f;
+    ms = a.ms;
+    mt = a.mt;
+    aniso_prefetch(c, q, &a);
     for (i = 1; i <= n; ++i) {
         double off = (double)i / (n + 1) - 0.5;
         float s = (float)(q->s + off * ms), t = (float)(q->t + off * mt);

@@ -318,6 +318,9 @@ sample_status mip_build(sample_texture *tex, const sample_mip_params *p, sample_
  * reads at most SAMPLE_MAX_FOOTPRINT_TEXELS texels. */
 uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
                         float out[4], float dds[4], float ddt[4], sample_stats *st);
+/* fp_anisotropic's prefetch of every probe's rows, alone: the fast path
+ * issues it for a block of queries before running them. Only a hint. */
+void fp_anisotropic_prefetch(const sample_ctx *c, const sample_query *q, float call_bias);
 uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
                          float call_bias, float out[4], float dds[4], float ddt[4],
                          sample_stats *st);
