@@ -55,30 +55,37 @@ static const double ewa_lut[129] = {
     0.000000000e+00,
 };
 
+/* One level's ellipse. fp_run visits each level twice (count, then
+ * accumulate); the second visit reuses the first's arithmetic instead of
+ * repeating it (an SVD with its atan2, sincos and hypot calls). */
+typedef struct ewa_level_geom {
+    int lv; /* −1: empty */
+    int fs, ft;
+    double u0, v0, A, B, C, jlo, nrows, ku, kv;
+} ewa_level_geom;
+
 typedef struct ewa_geom {
     float s, t;
-    double J[2][2]; /* rows (s, t), columns (x, y); one pixel, normalized */
+    double J[2][2];       /* rows (s, t), columns (x, y); one pixel, normalized */
+    ewa_level_geom *memo; /* two entries, by the level's parity */
 } ewa_geom;
 
-static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
+static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_level_geom *e)
 {
-    const ewa_geom *g = (const ewa_geom *)gp;
     const struct sample_level *L = &c->tex->level[lv];
-    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
-    double u0, v0, J[2][2], A, B, C, F, jlo, nrows, total = 0.0, ku, kv;
-    int fs, ft, r, k;
+    double J[2][2], A, B, C, F;
     fp_svd d;
-    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
-    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
-    fp_level_jacobian(c, lv, g->J, fs, ft, J);
+    e->lv = lv;
+    fp_center(c, lv, g->s, g->t, &e->u0, &e->v0, &e->fs, &e->ft);
+    fp_level_jacobian(c, lv, g->J, e->fs, e->ft, J);
     /* Clamp ellipse eccentricity (on the singular values, so the clamp is
      * the same for every pair of columns spanning the same ellipse). */
     fp_svd2(J[0][0], J[0][1], J[1][0], J[1][1], &d);
     fp_clamp_eccentricity(&d);
     fp_svd_compose(&d, d.s[0], d.s[1], J);
-    ku = fs ? -(double)L->w : (double)L->w;
-    kv = ft ? -(double)L->h : (double)L->h;
+    e->ku = e->fs ? -(double)L->w : (double)L->w;
+    e->kv = e->ft ? -(double)L->h : (double)L->h;
 
     /* Ellipse coefficients with the unit-variance term, scaled to F = 1. */
     A = J[1][0] * J[1][0] + J[1][1] * J[1][1] + 1.0;
@@ -87,12 +94,33 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     F = A * C - 0.25 * B * B;
     /* Row extent: the inverse of the normalized quadratic form is
      * [[C, −B/2], [−B/2, A]] before scaling, so |dv| ≤ √A. */
-    jlo = ceil(v0 - sqrt(A));
-    nrows = floor(v0 + sqrt(A)) - jlo + 1.0;
+    e->jlo = ceil(e->v0 - sqrt(A));
+    e->nrows = floor(e->v0 + sqrt(A)) - e->jlo + 1.0;
+    e->A = A / F;
+    e->B = B / F;
+    e->C = C / F;
+}
+
+static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
+{
+    const ewa_geom *g = (const ewa_geom *)gp;
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
+    ewa_level_geom *m = &g->memo[lv & 1];
+    double u0, v0, A, B, C, jlo, nrows, total = 0.0, ku, kv;
+    int r, k;
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
+
+    if (m->lv != lv) ewa_level_setup(c, g, lv, m);
+    u0 = m->u0;
+    v0 = m->v0;
+    A = m->A;
+    B = m->B;
+    C = m->C;
+    jlo = m->jlo;
+    nrows = m->nrows;
+    ku = m->ku;
+    kv = m->kv;
     if (!(nrows <= cap)) return INFINITY;
-    A /= F;
-    B /= F;
-    C /= F;
     for (r = 0; r < (int)nrows; ++r) {
         double j = jlo + r, dv = j - v0, disc, sq, ilo = 0.0, ncol, a, b;
         /* Columns where A·du² + B·dv·du + C·dv² < 1. */
@@ -136,7 +164,10 @@ uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, flo
 {
     const struct sample_level *Bl = &c->tex->level[c->base];
     ewa_geom g;
+    ewa_level_geom memo[2];
     fp_svd d;
+    memo[0].lv = memo[1].lv = -1;
+    g.memo = memo;
     g.s = q->s;
     g.t = q->t;
     g.J[0][0] = q->dsdx;
