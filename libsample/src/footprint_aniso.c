@@ -106,21 +106,22 @@ uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_b
         double off = (double)i / (n + 1) - 0.5;
         float s = (float)(q->s + off * ms), t = (float)(q->t + off * mt);
         float o0[4], s0[4], t0[4], o1[4], s1[4], t1[4];
-        texels += rd->bilinear(c, l0, s, t, o0, s0, t0);
+        /* Derivatives only where asked for: they do not touch the value. */
+        texels += rd->bilinear(c, l0, s, t, o0, dds ? s0 : NULL, ddt ? t0 : NULL);
         if (l1 != l0) {
-            texels += rd->bilinear(c, l1, s, t, o1, s1, t1);
+            texels += rd->bilinear(c, l1, s, t, o1, dds ? s1 : NULL, ddt ? t1 : NULL);
         } else {
             memcpy(o1, o0, sizeof o1);
-            memcpy(s1, s0, sizeof s1);
-            memcpy(t1, t0, sizeof t1);
+            if (dds) memcpy(s1, s0, sizeof s1);
+            if (ddt) memcpy(t1, t0, sizeof t1);
         }
         /* Equal weights, summed in double so the mean of N equal probes is
          * that probe exactly. */
-        for (k = 0; k < 4; ++k) {
-            acc[k] += (1.0 - f) * o0[k] + (double)f * o1[k];
-            as[k] += (1.0 - f) * s0[k] + (double)f * s1[k];
-            at[k] += (1.0 - f) * t0[k] + (double)f * t1[k];
-        }
+        for (k = 0; k < 4; ++k) acc[k] += (1.0 - f) * o0[k] + (double)f * o1[k];
+        if (dds)
+            for (k = 0; k < 4; ++k) as[k] += (1.0 - f) * s0[k] + (double)f * s1[k];
+        if (ddt)
+            for (k = 0; k < 4; ++k) at[k] += (1.0 - f) * t0[k] + (double)f * t1[k];
     }
     for (k = 0; k < 4; ++k) {
         out[k] = (float)(acc[k] / n);
