@@ -155,10 +155,12 @@ uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double
     }
     if (ok) {
         fp_accum_init(&a0);
+        a0.deriv = dds || ddt;
         n = (uint32_t)level(c, geom, l0, &a0, 0);
         ok = accum_result(&a0, r0, s0, t0);
         if (ok && l1 != l0) {
             fp_accum_init(&a1);
+            a1.deriv = a0.deriv;
             n += (uint32_t)level(c, geom, l1, &a1, 0);
             ok = accum_result(&a1, r1, s1, t1);
             /* Blend in double: (1 − f)·T + f·T is then T exactly in float. */

@@ -361,6 +361,7 @@ typedef struct fp_accum {
     double sw, sdu, sdv;
     double sT[4], sTdu[4], sTdv[4];
     uint32_t texels;
+    int deriv; /* 0: the ∂ sums are not wanted (they stay 0) */
 } fp_accum;
 
 void fp_accum_init(fp_accum *a);
@@ -369,12 +370,14 @@ static inline void fp_accum_add(fp_accum *a, double w, double dwdu, double dwdv,
 {
     int k;
     a->sw += w;
-    a->sdu += dwdu;
-    a->sdv += dwdv;
-    for (k = 0; k < 4; ++k) {
-        a->sT[k] += w * T[k];
-        a->sTdu[k] += dwdu * T[k];
-        a->sTdv[k] += dwdv * T[k];
+    for (k = 0; k < 4; ++k) a->sT[k] += w * T[k];
+    if (a->deriv) {
+        a->sdu += dwdu;
+        a->sdv += dwdv;
+        for (k = 0; k < 4; ++k) {
+            a->sTdu[k] += dwdu * T[k];
+            a->sTdv[k] += dwdv * T[k];
+        }
     }
     a->texels++;
 }
