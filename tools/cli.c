@@ -107,7 +107,10 @@ const char cli_sampler_help[] =
     "  --filter none|aniso|blinn-newell|ewa     footprint filter for minification\n"
     "  --aniso N                                max anisotropy (default 1; 16 with --filter aniso)\n"
     "  --nearest-level-floor                    NEAREST_MIPMAP_*: floor(base+lambda+1/2)\n"
-    "  --legacy-switchover                      pre-GL-4.5 c = 0.5 rule\n";
+    "  --legacy-switchover                      pre-GL-4.5 c = 0.5 rule\n"
+    "  --aniso-pow2                             round the anisotropic probe count up to 2^k\n"
+    "  --bn-area-weight                         Blinn-Newell corners: screen-space (area) weights\n"
+    "  --scalar-path                            force the reference path (same results, slower)\n";
 
 #define ENUM_FLAG(opt, parse, field, what)                                          \
     if (cli_opt(argc, argv, i, opt, &v)) {                                          \
@@ -179,6 +182,9 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     if (cli_opt(argc, argv, i, "--cubic-clamp", NULL)) { s->options |= SAMPLE_OPT_CUBIC_CLAMP; return 1; }
     if (cli_opt(argc, argv, i, "--nearest-level-floor", NULL)) { s->options |= SAMPLE_OPT_NEAREST_LEVEL_FLOOR; return 1; }
     if (cli_opt(argc, argv, i, "--legacy-switchover", NULL)) { s->options |= SAMPLE_OPT_LEGACY_SWITCHOVER; return 1; }
+    if (cli_opt(argc, argv, i, "--aniso-pow2", NULL)) { s->options |= SAMPLE_OPT_ANISO_POW2; return 1; }
+    if (cli_opt(argc, argv, i, "--bn-area-weight", NULL)) { s->options |= SAMPLE_OPT_BN_AREA_WEIGHT; return 1; }
+    if (cli_opt(argc, argv, i, "--scalar-path", NULL)) { s->options |= SAMPLE_OPT_SCALAR_PATH; return 1; }
     return 0;
 }
 
