@@ -5,7 +5,8 @@
  *   color.c        sRGB EOTF table, half <-> float
  *   wrap.c         the single texel-addressing function (DESIGN §3)
  *   reconstruct.c  nearest / bilinear / bicubic on one level (DESIGN §4)
- *   lod.c          λ and level selection (DESIGN §5, GL 4.6 §8.14)
+ *   lod.c          λ and level selection (DESIGN §5, GL 4.6 §8.14); the
+ *                  per-query lod_lambda / lod_select are inline below
  *   mip.c          pyramid building (DESIGN §6)
  *   footprint_*.c  anisotropic, Blinn–Newell, EWA (DESIGN §7)
  *   sampler.c      validation and per-batch dispatch

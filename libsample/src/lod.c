@@ -1,6 +1,8 @@
 /*
  * Level of detail and level selection (DESIGN §5; OpenGL 4.6 core
  * §8.14.1 "Scale Factor and Level of Detail", §8.14.2, §8.14.3 "Mipmapping").
+ * lod_lambda and lod_select, called for every query of the fast path, are
+ * static inline in internal.h.
  */
 #include "internal.h"
 
