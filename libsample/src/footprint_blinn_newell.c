@@ -103,17 +103,13 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     if (!(nrows <= cap)) return INFINITY;
     for (r = 0; r < (int)nrows; ++r) {
         double j = jlo + r, dv = j - v0, lo = -INFINITY, hi = INFINITY, ilo = 0.0, ncol;
+        int pass;
         slab(M[0][0], M[0][1] * dv, &lo, &hi);
         slab(M[1][0], M[1][1] * dv, &lo, &hi);
         ncol = row_span(u0, lo, hi, &ilo);
-        if (count_only) {
-            fp_prefetch_span(c, lv, j, ilo, ncol);
-            total += ncol;
-            if (total > cap) return INFINITY;
-            continue;
-        }
-        if (ncol > cap) return total; /* unreachable after a successful count */
-        fp_read_row(c, lv, j, ilo, (int)ncol, T);
+        pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, T);
+        if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
+        if (pass == FP_ROW_COUNTED) continue;
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, gx = 0.0, gy = 0.0, w;
             w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
@@ -239,16 +235,12 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     area = !count_only && (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT);
     for (r = 0; r < (int)nrows; ++r) {
         double j = jlo + r, dv = j - v0, lo, hi, ilo = 0.0, ncol;
+        int pass;
         hull_row(V, dv, &lo, &hi);
         ncol = row_span(u0, lo, hi, &ilo);
-        if (count_only) {
-            fp_prefetch_span(c, lv, j, ilo, ncol);
-            total += ncol;
-            if (total > cap) return INFINITY;
-            continue;
-        }
-        if (ncol > cap) return total; /* unreachable after a successful count */
-        fp_read_row(c, lv, j, ilo, (int)ncol, tx);
+        pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, tx);
+        if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
+        if (pass == FP_ROW_COUNTED) continue;
         for (k = 0; k < (int)ncol; ++k) {
             double du = ilo + k - u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
             /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)

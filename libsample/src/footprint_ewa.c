@@ -123,6 +123,7 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     if (!(nrows <= cap)) return INFINITY;
     for (r = 0; r < (int)nrows; ++r) {
         double j = jlo + r, dv = j - v0, disc, sq, ilo = 0.0, ncol, a, b;
+        int pass;
         /* Columns where A·du² + B·dv·du + C·dv² < 1. */
         disc = B * B * dv * dv - 4.0 * A * (C * dv * dv - 1.0);
         if (!(disc > 0.0)) continue;
@@ -131,14 +132,9 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         b = floor(u0 + (-B * dv + sq) / (2.0 * A));
         ilo = a;
         ncol = b >= a ? b - a + 1.0 : 0.0;
-        if (count_only) {
-            fp_prefetch_span(c, lv, j, ilo, ncol);
-            total += ncol;
-            if (total > cap) return INFINITY;
-            continue;
-        }
-        if (ncol > cap) return total; /* unreachable after a successful count */
-        fp_read_row(c, lv, j, ilo, (int)ncol, T);
+        pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, T);
+        if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
+        if (pass == FP_ROW_COUNTED) continue;
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, r2, x, w, dw;
             int e;

@@ -502,6 +502,24 @@ SAMPLE_FORCE_INLINE void fp_prefetch_span(const sample_ctx *c, int lv, double j,
     SAMPLE_PREFETCH(row + last);
 }
 
+/* One row span in a footprint filter's two passes. The counting pass
+ * prefetches it and adds it to *total (FP_ROW_OVER once over the cap, the
+ * caller then moves to a coarser level); the accumulating pass reads its
+ * texels into T (FP_ROW_READ). Bounds every row by the cap in both passes. */
+enum { FP_ROW_OVER = -1, FP_ROW_COUNTED = 0, FP_ROW_READ = 1 };
+SAMPLE_FORCE_INLINE int fp_row_pass(const sample_ctx *c, int lv, double j, double ilo, double ncol, int count_only,
+                                    double cap, double *total, float (*T)[4])
+{
+    if (count_only) {
+        fp_prefetch_span(c, lv, j, ilo, ncol);
+        *total += ncol;
+        return *total > cap ? FP_ROW_OVER : FP_ROW_COUNTED;
+    }
+    if (ncol > cap) return FP_ROW_OVER; /* unreachable after a successful count */
+    fp_read_row(c, lv, j, ilo, (int)ncol, T);
+    return FP_ROW_READ;
+}
+
 /* Prefetch the two rows a bilinear read near (s, t) on level lv needs.
  * Wrapping is ignored (a hint), but the address is kept inside the level so
  * that no invalid pointer is ever formed. */
