@@ -8,31 +8,10 @@
 
 static const char *maketx;
 
-/* A w × h texture of `nchan` deterministic values in [−1, 3), full chain. */
+/* A w × h texture of `nchan` deterministic values, full box chain. */
 static sample_texture *make_tex(int w, int h, int nchan, sample_format fmt)
 {
-    size_t n = (size_t)w * (size_t)h * (size_t)nchan, i;
-    unsigned x = 777u;
-    void *px = malloc(n * 4);
-    sample_image img = {w, h, nchan, fmt, px, 0};
-    sample_mip_params mip;
-    sample_texture *t = NULL;
-    sample_error e;
-    for (i = 0; i < n; ++i) {
-        float v;
-        x = x * 1664525u + 1013904223u;
-        v = (float)(x >> 8) / 16777216.0f * 4.0f - 1.0f;
-        if (fmt == SAMPLE_FORMAT_F16) {
-            uint16_t hv = sample_float_to_half(v);
-            memcpy((char *)px + 2 * i, &hv, 2);
-        } else {
-            memcpy((char *)px + 4 * i, &v, 4);
-        }
-    }
-    sample_mip_params_init(&mip);
-    CHECK(sample_texture_create(&img, &mip, &t, &e) == SAMPLE_OK, "%s", e.message);
-    free(px);
-    return t;
+    return io_test_texture(w, h, nchan, fmt, 777u, SAMPLE_MIPGEN_BOX, 0);
 }
 
 static void *slurp(const char *path, size_t *size)

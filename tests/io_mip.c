@@ -4,33 +4,10 @@
 
 static const char *maketx, *oiiotool;
 
-/* A w × h RGBA texture of deterministic values in [−1, 3), pyramid `kernel`. */
+/* A w × h RGBA texture of deterministic values, pyramid `kernel`. */
 static sample_texture *make_tex(int w, int h, sample_format fmt, sample_mipgen kernel, int max_levels)
 {
-    size_t n = (size_t)w * (size_t)h * 4, i;
-    unsigned x = 12345u;
-    void *px = malloc(n * 4);
-    sample_image img = {w, h, 4, fmt, px, 0};
-    sample_mip_params mip;
-    sample_texture *t = NULL;
-    sample_error e;
-    for (i = 0; i < n; ++i) {
-        float v;
-        x = x * 1664525u + 1013904223u;
-        v = (float)(x >> 8) / 16777216.0f * 4.0f - 1.0f;
-        if (fmt == SAMPLE_FORMAT_F16) {
-            uint16_t hv = sample_float_to_half(v);
-            memcpy((char *)px + 2 * i, &hv, 2);
-        } else {
-            memcpy((char *)px + 4 * i, &v, 4);
-        }
-    }
-    sample_mip_params_init(&mip);
-    mip.filter = kernel;
-    mip.max_levels = max_levels;
-    CHECK(sample_texture_create(&img, &mip, &t, &e) == SAMPLE_OK, "%s", e.message);
-    free(px);
-    return t;
+    return io_test_texture(w, h, 4, fmt, 12345u, kernel, max_levels);
 }
 
 /* Write, read back, compare every level exactly. */

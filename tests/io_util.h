@@ -81,4 +81,35 @@ static inline sample_texture *io_read(const char *path, const char *colorspace, 
     return st == SAMPLE_OK ? t : NULL;
 }
 
+/* A w × h texture of `nchan` channels (F32 or F16) holding deterministic
+ * values in [−1, 3) from `seed`, with the pyramid `kernel` (max_levels 0: all). */
+static inline sample_texture *io_test_texture(int w, int h, int nchan, sample_format fmt, unsigned seed,
+                                              sample_mipgen kernel, int max_levels)
+{
+    size_t n = (size_t)w * (size_t)h * (size_t)nchan, i;
+    unsigned x = seed;
+    void *px = malloc(n * 4);
+    sample_image img = {w, h, nchan, fmt, px, 0};
+    sample_mip_params mip;
+    sample_texture *t = NULL;
+    sample_error e;
+    for (i = 0; px && i < n; ++i) {
+        float v;
+        x = x * 1664525u + 1013904223u;
+        v = (float)(x >> 8) / 16777216.0f * 4.0f - 1.0f;
+        if (fmt == SAMPLE_FORMAT_F16) {
+            uint16_t hv = sample_float_to_half(v);
+            memcpy((char *)px + 2 * i, &hv, 2);
+        } else {
+            memcpy((char *)px + 4 * i, &v, 4);
+        }
+    }
+    sample_mip_params_init(&mip);
+    mip.filter = kernel;
+    mip.max_levels = max_levels;
+    CHECK(sample_texture_create(&img, &mip, &t, &e) == SAMPLE_OK, "%s", e.message);
+    free(px);
+    return t;
+}
+
 #endif
