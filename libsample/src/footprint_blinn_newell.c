@@ -362,10 +362,7 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
     int quad = 0, k;
     g.s = q->s;
     g.t = q->t;
-    g.J[0][0] = q->dsdx;
-    g.J[0][1] = q->dsdy;
-    g.J[1][0] = q->dtdx;
-    g.J[1][1] = q->dtdy;
+    fp_query_jacobian(q, g.J);
     if (corners) {
         quad = projective(corners, &g);
         /* |det DH| ∝ 1/w³ varies over the quad by (whi/wlo)³; beyond 2²⁰

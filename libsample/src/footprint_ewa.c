@@ -166,10 +166,7 @@ uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, flo
     g.memo = memo;
     g.s = q->s;
     g.t = q->t;
-    g.J[0][0] = q->dsdx;
-    g.J[0][1] = q->dsdy;
-    g.J[1][0] = q->dtdx;
-    g.J[1][1] = q->dtdy;
+    fp_query_jacobian(q, g.J);
     /* Level from the ellipse's minor semi-axis in base texels (the same rule
      * as Blinn–Newell; pbrt uses the shorter Jacobian column instead). */
     fp_svd2(g.J[0][0] * Bl->w, g.J[0][1] * Bl->w, g.J[1][0] * Bl->h, g.J[1][1] * Bl->h, &d);

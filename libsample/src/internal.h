@@ -502,6 +502,16 @@ SAMPLE_FORCE_INLINE void fp_prefetch_span(const sample_ctx *c, int lv, double j,
     SAMPLE_PREFETCH(row + last);
 }
 
+/* A query's Jacobian as the footprint filters hold it: rows s, t; columns
+ * x, y (J[0] = (ds/dx, ds/dy), J[1] = (dt/dx, dt/dy)). */
+static inline void fp_query_jacobian(const sample_query *q, double J[2][2])
+{
+    J[0][0] = q->dsdx;
+    J[0][1] = q->dsdy;
+    J[1][0] = q->dtdx;
+    J[1][1] = q->dtdy;
+}
+
 /* One row span in a footprint filter's two passes. The counting pass
  * prefetches it and adds it to *total (FP_ROW_OVER once over the cap, the
  * caller then moves to a coarser level); the accumulating pass reads its
