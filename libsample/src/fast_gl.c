@@ -1,9 +1,11 @@
 /*
  * The fast path of sample_batch for the OpenGL filters: NEAREST, LINEAR and
  * CUBIC per level, with or without mipmaps; with a footprint filter, the
- * magnified queries (λ ≤ 0, the mag filter), the others being handed to
- * the filter (sample_run_footprint). Also the per-format readers the
- * footprint filters use (tex_readers, at the end).
+ * magnified queries (λ ≤ 0, the mag filter); the anisotropic filter's
+ * minified queries (planned with their probes a block ahead, the probes
+ * read with this format's bilinear inlined); the other filters' minified
+ * queries are handed to the filter (sample_run_footprint). Also the
+ * per-format readers the footprint filters use (tex_readers).
  *
  * It computes exactly what the general path (sampler.c's loop over
  * recon_level / ctx_texel) computes, with the same operations in the same
@@ -39,6 +41,11 @@
 #ifndef FAST_BLOCK
 #define FAST_BLOCK 32
 #endif
+/* An anisotropic query asks for up to 2N rows; a smaller block keeps its
+ * prefetches within what the miss queue and L1 hold. */
+#ifndef FAST_BLOCK_ANISO
+#define FAST_BLOCK_ANISO 8
+#endif
 
 /* Texel addresses and fractions of one query on one level: taps
  * (col[x], row[y]) for x, y < 1, 2 or 4 (NEAREST, LINEAR, CUBIC). */
@@ -48,12 +55,21 @@ typedef struct fast_taps {
     float fu, fv;                /* α, β: the fractional parts (eq. 8.13) */
 } fast_taps;
 
+enum { PLAN_GL, PLAN_BORDER, PLAN_ANISO, PLAN_FOOTPRINT };
+
+typedef uint32_t (*aniso_fn)(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an,
+                             float out[4], float dds[4], float ddt[4]);
+
 typedef struct fast_plan {
-    int border;    /* non-finite input: the border colour */
-    int footprint; /* λ > 0 with a footprint filter: sample_run_footprint */
+    int kind; /* PLAN_GL: the taps below; PLAN_BORDER: non-finite input;
+               * PLAN_ANISO: λ > 0, the probes of `an`; PLAN_FOOTPRINT: λ > 0
+               * with Blinn–Newell or EWA (sample_run_footprint) */
     float lam;
     lod_choice ch;
-    fast_taps tp[2]; /* ch.level0, ch.level1 */
+    union {
+        fast_taps tp[2];    /* ch.level0, ch.level1 */
+        fp_aniso_setup an;
+    } u;
 } fast_plan;
 
 /* Bytes per texel, a constant in each instantiation. */
@@ -104,11 +120,12 @@ SAMPLE_FORCE_INLINE void prefetch_run(const unsigned char *r, int c0, int c1, si
         SAMPLE_PREFETCH(r + (size_t)c1 * tb + (tb - 1));
 }
 
-/* Addresses of one query on level lv (recon_level's coordinate rules) and
- * prefetches of the lines they touch: the first and last byte of each
- * row's run cover it when the run is contiguous, as it almost always is. */
+/* Addresses of one query on level lv (recon_level's coordinate rules) and,
+ * if `prefetch`, prefetches of the lines they touch: the first and last
+ * byte of each row's run cover it when the run is contiguous, as it almost
+ * always is. */
 SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
-                              size_t tb, fast_taps *tp)
+                              size_t tb, int prefetch, fast_taps *tp)
 {
     const struct sample_level *L = &c->tex->level[lv];
     float u = recon_texel_coord(c->smp->wrap_s, s, L->w);
@@ -132,8 +149,7 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
     for (k = 0; k < n; ++k) {
         const unsigned char *r = y[k] < 0 ? NULL : L->data + (size_t)y[k] * L->stride;
         tp->row[k] = r;
-        if (!r) continue;
-        prefetch_run(r, tp->col[0], tp->col[n - 1], tb);
+        if (r && prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], tb);
     }
 }
 
@@ -183,43 +199,58 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
     return n;
 }
 
+/* plan_query for a footprint sampler: λ, and when λ > 0 (sampler.c's
+ * rule: a footprint filter minifies, the mag filter magnifies) the
+ * filter's plan; returns 1 then. Out of line: the GL filters' planning
+ * loop stays small. */
+static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_query *q, float bias, fast_plan *pl)
+{
+    double rho2[2], lr = lod_log2_rho(c, q, rho2);
+    pl->lam = lod_lambda(c, (float)lr, bias);
+    if (!(pl->lam > 0.0f)) return 0;
+    pl->kind = PLAN_FOOTPRINT;
+    if (c->smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC) {
+        /* The probes and their rows now, a block ahead of their reading
+         * (the other filters find their spans only in their counting
+         * pass). */
+        pl->kind = PLAN_ANISO;
+        fp_aniso_plan(c, q, rho2, lr, bias, &pl->u.an);
+    }
+    return 1;
+}
+
 SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
                               const lod_choice *fixed, size_t tb, fast_plan *pl)
 {
     const sample_query *q = &a->queries[i];
-    pl->border = !batch_query_finite(a, i);
-    pl->footprint = 0;
-    if (pl->border) return;
+    pl->kind = batch_query_finite(a, i) ? PLAN_GL : PLAN_BORDER;
+    if (pl->kind == PLAN_BORDER) return;
     if (fixed) {
         pl->ch = *fixed;
         pl->lam = 0.0f;
     } else {
-        pl->lam = lod_lambda(c, lod_lambda_base(c, q), a->lod_bias ? a->lod_bias[i] : 0.0f);
-        /* sampler.c's rule: a footprint filter minifies, the mag filter
-         * magnifies. */
-        if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && pl->lam > 0.0f) {
-            pl->footprint = 1;
-            /* The probes' rows, asked for a block ahead (the other
-             * filters find their spans only in their counting pass). */
-            if (c->smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC)
-                fp_anisotropic_prefetch(c, q, a->lod_bias ? a->lod_bias[i] : 0.0f);
+        float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
+        if (c->smp->footprint == SAMPLE_FOOTPRINT_NONE) {
+            pl->lam = lod_lambda(c, lod_lambda_base(c, q), bias);
+        } else if (plan_footprint(c, q, bias, pl)) {
             return;
         }
         pl->ch = lod_select(c, pl->lam);
     }
-    plan_level(c, pl->ch.level0, pl->ch.kind, q->s, q->t, tb, &pl->tp[0]);
-    if (pl->ch.level1 >= 0) plan_level(c, pl->ch.level1, pl->ch.kind, q->s, q->t, tb, &pl->tp[1]);
+    plan_level(c, pl->ch.level0, pl->ch.kind, q->s, q->t, tb, 1, &pl->u.tp[0]);
+    if (pl->ch.level1 >= 0) plan_level(c, pl->ch.level1, pl->ch.kind, q->s, q->t, tb, 1, &pl->u.tp[1]);
 }
 
 /* sampler.c's run_query + gl_apply for a planned query. */
 SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
-                             const fast_plan *pl, sample_format fmt, int nc, size_t tb)
+                             const fast_plan *pl, sample_format fmt, int nc, size_t tb,
+                             aniso_fn aniso)
 {
     float *out = a->rgba + 4 * i;
     float *dds = a->drgba_ds ? a->drgba_ds + 4 * i : NULL;
     float *ddt = a->drgba_dt ? a->drgba_dt + 4 * i : NULL;
     uint32_t n;
-    if (pl->border) {
+    if (pl->kind == PLAN_BORDER) {
         v4_store(out, v4_load(c->border));
         if (dds) v4_store(dds, v4_set1(0.0f));
         if (ddt) v4_store(ddt, v4_set1(0.0f));
@@ -231,14 +262,22 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         }
         return;
     }
-    if (pl->footprint) {
+    if (pl->kind == PLAN_FOOTPRINT) {
         sample_run_footprint(c, a, i);
         return;
     }
-    n = run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level0, &pl->tp[0], out, dds, ddt);
+    if (pl->kind == PLAN_ANISO) {
+        n = aniso(c, &a->queries[i], &pl->u.an, out, dds, ddt);
+        if (a->stats) {
+            fp_aniso_stats(&pl->u.an, &a->stats[i]);
+            a->stats[i].texels = n;
+        }
+        return;
+    }
+    n = run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level0, &pl->u.tp[0], out, dds, ddt);
     if (pl->ch.level1 >= 0) {
         float o1[4], ds1[4], dt1[4];
-        n += run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level1, &pl->tp[1], o1,
+        n += run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level1, &pl->u.tp[1], o1,
                        dds ? ds1 : NULL, ddt ? dt1 : NULL);
         recon_blend(out, o1, pl->ch.frac);
         if (dds) recon_blend(dds, ds1, pl->ch.frac);
@@ -253,10 +292,55 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
     }
 }
 
+/* ---- Readers for the footprint filters (tex_readers) --------------------- */
+
+SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, int n,
+                                    float (*out)[4])
+{
+    const size_t tb = texel_bytes(fmt, nc);
+    int k;
+    for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * tb));
+}
+
+SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format fmt, int nc, int lv,
+                                            float s, float t, float out[4], float dds[4],
+                                            float ddt[4])
+{
+    const size_t tb = texel_bytes(fmt, nc);
+    fast_taps tp;
+    /* No prefetch: the anisotropic filter asked for its probes' rows. */
+    plan_level(c, lv, SAMPLE_LINEAR, s, t, tb, 0, &tp);
+    return run_level(c, fmt, nc, tb, SAMPLE_LINEAR, lv, &tp, out, dds, ddt);
+}
+
+#define TEX_READERS(fmt, nc)                                                   \
+    static void row_##fmt##_##nc(const unsigned char *p, int n, float (*out)[4]) \
+    {                                                                          \
+        decode_row(SAMPLE_FORMAT_##fmt, nc, p, n, out);                        \
+    }                                                                          \
+    static uint32_t bilinear_##fmt##_##nc(const sample_ctx *c, int lv, float s, float t, \
+                                          float out[4], float dds[4], float ddt[4]) \
+    {                                                                          \
+        return bilinear_level(c, SAMPLE_FORMAT_##fmt, nc, lv, s, t, out, dds, ddt); \
+    }                                                                          \
+    /* fp_anisotropic's probes with this format's bilinear inlined. */         \
+    static SAMPLE_NOINLINE uint32_t aniso_##fmt##_##nc(const sample_ctx *c, const sample_query *q, \
+                                                       const fp_aniso_setup *an, float out[4], \
+                                                       float dds[4], float ddt[4]) \
+    {                                                                          \
+        return fp_aniso_probes(c, q, an, bilinear_##fmt##_##nc, out, dds, ddt); \
+    }
+#define TEX_READERS_FMT(fmt)                                                   \
+    TEX_READERS(fmt, 1) TEX_READERS(fmt, 2) TEX_READERS(fmt, 3) TEX_READERS(fmt, 4)
+TEX_READERS_FMT(F32)
+TEX_READERS_FMT(F16)
+TEX_READERS_FMT(UNORM8)
+TEX_READERS_FMT(SRGB8)
+
 /* The batch loop, generic over the texel format and channel count; each
  * instantiation below has them as constants. */
 SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
-                                 int nc)
+                                 int nc, aniso_fn aniso)
 {
     const size_t tb = texel_bytes(fmt, nc);
     const sample_sampler *smp = c->smp;
@@ -270,18 +354,19 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
     size_t i, k;
-    for (i = 0; i < a->count; i += FAST_BLOCK) {
+    size_t blk = smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC ? FAST_BLOCK_ANISO : FAST_BLOCK;
+    for (i = 0; i < a->count; i += blk) {
         fast_plan plan[FAST_BLOCK];
-        size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
+        size_t m = a->count - i < blk ? a->count - i : blk;
         for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed ? &mg : NULL, tb, &plan[k]);
-        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], fmt, nc, tb);
+        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], fmt, nc, tb, aniso);
     }
 }
 
 #define FAST_GL_KERNEL(fmt, nc)                                                \
     static void fast_gl_##fmt##_##nc(const sample_ctx *c, const sample_batch_args *a) \
     {                                                                          \
-        fast_gl_batch(c, a, SAMPLE_FORMAT_##fmt, nc);                          \
+        fast_gl_batch(c, a, SAMPLE_FORMAT_##fmt, nc, aniso_##fmt##_##nc);      \
     }
 #define FAST_GL_KERNELS(fmt)                                                   \
     FAST_GL_KERNEL(fmt, 1) FAST_GL_KERNEL(fmt, 2) FAST_GL_KERNEL(fmt, 3) FAST_GL_KERNEL(fmt, 4)
@@ -302,43 +387,6 @@ fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a)
     (void)a;
     return fast_gl_table[c->tex->format][c->tex->channels - 1];
 }
-
-/* ---- Readers for the footprint filters (tex_readers) --------------------- */
-
-SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, int n,
-                                    float (*out)[4])
-{
-    const size_t tb = texel_bytes(fmt, nc);
-    int k;
-    for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * tb));
-}
-
-SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format fmt, int nc, int lv,
-                                            float s, float t, float out[4], float dds[4],
-                                            float ddt[4])
-{
-    const size_t tb = texel_bytes(fmt, nc);
-    fast_taps tp;
-    plan_level(c, lv, SAMPLE_LINEAR, s, t, tb, &tp);
-    return run_level(c, fmt, nc, tb, SAMPLE_LINEAR, lv, &tp, out, dds, ddt);
-}
-
-#define TEX_READERS(fmt, nc)                                                   \
-    static void row_##fmt##_##nc(const unsigned char *p, int n, float (*out)[4]) \
-    {                                                                          \
-        decode_row(SAMPLE_FORMAT_##fmt, nc, p, n, out);                        \
-    }                                                                          \
-    static uint32_t bilinear_##fmt##_##nc(const sample_ctx *c, int lv, float s, float t, \
-                                          float out[4], float dds[4], float ddt[4]) \
-    {                                                                          \
-        return bilinear_level(c, SAMPLE_FORMAT_##fmt, nc, lv, s, t, out, dds, ddt); \
-    }
-#define TEX_READERS_FMT(fmt)                                                   \
-    TEX_READERS(fmt, 1) TEX_READERS(fmt, 2) TEX_READERS(fmt, 3) TEX_READERS(fmt, 4)
-TEX_READERS_FMT(F32)
-TEX_READERS_FMT(F16)
-TEX_READERS_FMT(UNORM8)
-TEX_READERS_FMT(SRGB8)
 
 #define TEX_READERS_ROW(fmt)                                                   \
     [SAMPLE_FORMAT_##fmt] = {{row_##fmt##_1, bilinear_##fmt##_1}, {row_##fmt##_2, bilinear_##fmt##_2}, \

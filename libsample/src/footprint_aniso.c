@@ -37,102 +37,78 @@ int fp_aniso_count(const sample_sampler *smp, double pmax, double pmin)
     return n;
 }
 
-/* Probe count, major column, λ and the two levels of a query. */
-typedef struct aniso_setup {
-    int n, l0, l1;
-    float lam, f;
-    double ms, mt;
-} aniso_setup;
+/* log2 k for k = 1 … ANISO_MAX_PROBES, to 17 significant digits (the
+ * nearest doubles): λ' = log2(Pmax / N) = log2 ρ − log2 N reuses the log2 ρ
+ * that decided minification, so a query costs one logarithm, not two. */
+static const double log2_probes[ANISO_MAX_PROBES] = {
+    0, 1, 1.5849625007211561, 2,
+    2.3219280948873622, 2.5849625007211561, 2.8073549220576042, 3,
+    3.1699250014423122, 3.3219280948873622, 3.4594316186372973, 3.5849625007211561,
+    3.7004397181410922, 3.8073549220576042, 3.9068905956085187, 4,
+    4.0874628412503391, 4.1699250014423122, 4.2479275134435852, 4.3219280948873626,
+    4.3923174227787607, 4.4594316186372973, 4.5235619560570131, 4.5849625007211561,
+    4.6438561897747244, 4.7004397181410917, 4.7548875021634682, 4.8073549220576037,
+    4.8579809951275719, 4.9068905956085187, 4.9541963103868749, 5,
+    5.0443941193584534, 5.0874628412503391, 5.1292830169449664, 5.1699250014423122,
+    5.2094533656289501, 5.2479275134435852, 5.2854022188622487, 5.3219280948873626,
+    5.3575520046180838, 5.3923174227787607, 5.4262647547020979, 5.4594316186372973,
+    5.4918530963296748, 5.5235619560570131, 5.5545888516776376, 5.5849625007211561,
+    5.6147098441152083, 5.6438561897747244, 5.6724253419714952, 5.7004397181410917,
+    5.7279204545631988, 5.7548875021634682, 5.7813597135246599, 5.8073549220576037,
+    5.8328900141647413, 5.8579809951275719, 5.8826430493618416, 5.9068905956085187,
+    5.9307373375628867, 5.9541963103868749, 5.9772799234999168, 6,
+    6.0223678130284544, 6.0443941193584534, 6.0660891904577721, 6.0874628412503391,
+    6.1085244567781691, 6.1292830169449664, 6.1497471195046822, 6.1699250014423122,
+    6.1898245588800176, 6.2094533656289501, 6.2288186904958804, 6.2479275134435852,
+    6.266786540694901, 6.2854022188622487, 6.3037807481771031, 6.3219280948873626,
+    6.3398500028846243, 6.3575520046180838, 6.3750394313469245, 6.3923174227787607,
+    6.4093909361377017, 6.4262647547020979, 6.4429434958487279, 6.4594316186372973,
+    6.4757334309663976, 6.4918530963296748, 6.5077946401986964, 6.5235619560570131,
+    6.539158811108031, 6.5545888516776376, 6.5698556083309478, 6.5849625007211561,
+    6.5999128421871278, 6.6147098441152083, 6.6293566200796095, 6.6438561897747244,
+    6.6582114827517946, 6.6724253419714952, 6.6865005271832185, 6.7004397181410917,
+    6.7142455176661224, 6.7279204545631988, 6.7414669864011474, 6.7548875021634682,
+    6.768184324776926, 6.7813597135246599, 6.7944158663501062, 6.8073549220576037,
+    6.8201789624151878, 6.8328900141647413, 6.8454900509443748, 6.8579809951275719,
+    6.8703647195834048, 6.8826430493618416, 6.8948177633079437, 6.9068905956085187,
+    6.9188632372745946, 6.9307373375628867, 6.9425145053392399, 6.9541963103868749,
+    6.965784284662087, 6.9772799234999168, 6.9886846867721655, 7,
+};
+_Static_assert(ANISO_MAX_PROBES == 128, "log2_probes has one entry per probe count");
 
-static void aniso_setup_of(const sample_ctx *c, const sample_query *q, float call_bias, aniso_setup *a)
+void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double rho2[2],
+                       double log2_rho, float call_bias, fp_aniso_setup *a)
 {
-    const struct sample_level *B = &c->tex->level[c->base];
-    /* In double: the squares of a 1e20 Jacobian overflow float. */
-    double px = hypot((double)q->dsdx * B->w, (double)q->dtdx * B->h);
-    double py = hypot((double)q->dsdy * B->w, (double)q->dtdy * B->h);
-    double pmax = px >= py ? px : py, pmin = px >= py ? py : px, lb;
-    a->ms = px >= py ? q->dsdx : q->dsdy;
-    a->mt = px >= py ? q->dtdx : q->dtdy;
+    /* Px, Py: the column lengths in base texels (lod_log2_rho). */
+    int xmajor = rho2[0] >= rho2[1];
+    double pmax = sqrt(xmajor ? rho2[0] : rho2[1]), pmin = sqrt(xmajor ? rho2[1] : rho2[0]), lb;
+    a->ms = xmajor ? q->dsdx : q->dsdy;
+    a->mt = xmajor ? q->dtdx : q->dtdy;
     a->n = fp_aniso_count(c->smp, pmax, pmin);
-    lb = log2(pmax / a->n);
+    lb = log2_rho - log2_probes[a->n - 1];
     a->lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias);
-    /* Each probe is trilinear (LINEAR_MIPMAP_LINEAR, eqs. 8.17–8.18) at λ;
-     * λ ≤ 0 reads the base level bilinearly. */
+    /* Each probe is trilinear (LINEAR_MIPMAP_LINEAR, eqs. 8.17–8.18) at λ';
+     * λ' ≤ 0 reads the base level bilinearly. */
     lod_split(c, a->lam, &a->l0, &a->l1, &a->f);
     if (a->f == 0.0f) a->l1 = a->l0;
 }
 
-/* Ask for every probe's rows, so that their misses overlap. */
-SAMPLE_FORCE_INLINE void aniso_prefetch(const sample_ctx *c, const sample_query *q, const aniso_setup *a)
+void fp_aniso_plan(const sample_ctx *c, const sample_query *q, const double rho2[2], double log2_rho,
+                   float call_bias, fp_aniso_setup *a)
 {
-    int i;
-    for (i = 1; i <= a->n; ++i) {
-        double off = (double)i / (a->n + 1) - 0.5;
-        float s = (float)(q->s + off * a->ms), t = (float)(q->t + off * a->mt);
-        ctx_prefetch_bilinear(c, a->l0, s, t);
-        if (a->l1 != a->l0) ctx_prefetch_bilinear(c, a->l1, s, t);
-    }
-}
-
-void fp_anisotropic_prefetch(const sample_ctx *c, const sample_query *q, float call_bias)
-{
-    aniso_setup a;
-    aniso_setup_of(c, q, call_bias, &a);
-    aniso_prefetch(c, q, &a);
+    fp_aniso_setup_of(c, q, rho2, log2_rho, call_bias, a);
+    fp_aniso_prefetch(c, q, a);
 }
 
 uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
                         float out[4], float dds[4], float ddt[4], sample_stats *st)
 {
-    double acc[4] = {0, 0, 0, 0}, as[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
-    aniso_setup a;
-    int n, i, k, l0, l1;
-    double ms, mt;
-    float lam, f;
-    uint32_t texels = 0;
+    double rho2[2], lr = lod_log2_rho(c, q, rho2);
+    fp_aniso_setup a;
+    uint32_t texels;
+    fp_aniso_plan(c, q, rho2, lr, call_bias, &a);
     /* recon_level's bilinear, the fast path's way (same bits). */
-    const tex_readers *rd = tex_readers_of(c->tex);
-
-    aniso_setup_of(c, q, call_bias, &a);
-    n = a.n;
-    l0 = a.l0;
-    l1 = a.l1;
-    lam = a.lam;
-    f = a.f;
-    ms = a.ms;
-    mt = a.mt;
-    aniso_prefetch(c, q, &a);
-    for (i = 1; i <= n; ++i) {
-        double off = (double)i / (n + 1) - 0.5;
-        float s = (float)(q->s + off * ms), t = (float)(q->t + off * mt);
-        float o0[4], s0[4], t0[4], o1[4], s1[4], t1[4];
-        /* Derivatives only where asked for: they do not touch the value. */
-        texels += rd->bilinear(c, l0, s, t, o0, dds ? s0 : NULL, ddt ? t0 : NULL);
-        if (l1 != l0) {
-            texels += rd->bilinear(c, l1, s, t, o1, dds ? s1 : NULL, ddt ? t1 : NULL);
-        } else {
-            memcpy(o1, o0, sizeof o1);
-            if (dds) memcpy(s1, s0, sizeof s1);
-            if (ddt) memcpy(t1, t0, sizeof t1);
-        }
-        /* Equal weights, summed in double so the mean of N equal probes is
-         * that probe exactly. */
-        for (k = 0; k < 4; ++k) acc[k] += (1.0 - f) * o0[k] + (double)f * o1[k];
-        if (dds)
-            for (k = 0; k < 4; ++k) as[k] += (1.0 - f) * s0[k] + (double)f * s1[k];
-        if (ddt)
-            for (k = 0; k < 4; ++k) at[k] += (1.0 - f) * t0[k] + (double)f * t1[k];
-    }
-    for (k = 0; k < 4; ++k) {
-        out[k] = (float)(acc[k] / n);
-        if (dds) dds[k] = (float)(as[k] / n);
-        if (ddt) ddt[k] = (float)(at[k] / n);
-    }
-    if (st) {
-        st->level0 = (int16_t)l0;
-        st->level1 = (int16_t)(l1 != l0 ? l1 : -1);
-        st->level_frac = l1 != l0 ? f : 0.0f;
-        st->lod = lam;
-    }
+    texels = fp_aniso_probes(c, q, &a, tex_readers_of(c->tex)->bilinear, out, dds, ddt);
+    if (st) fp_aniso_stats(&a, st);
     return texels;
 }

@@ -53,9 +53,14 @@ extern const float sample_srgb_table[256];
  * remove the per-texel switches never reach them. */
 #if defined(__GNUC__)
 #define SAMPLE_FORCE_INLINE static inline __attribute__((always_inline))
+#define SAMPLE_NOINLINE __attribute__((noinline))
 #else
 #define SAMPLE_FORCE_INLINE static inline
+#define SAMPLE_NOINLINE
 #endif
+/* SAMPLE_NOINLINE keeps rarely taken, bulky branches (another filter's
+ * planning) out of a hot loop, whose registers and code size they would
+ * otherwise cost on every iteration. */
 
 /* Decode one texel at p to linear RGBA with the OpenGL channel expansion
  * (missing G, B → 0, missing A → 1). With `format` and `nc` constants (the
@@ -282,9 +287,25 @@ void cubic_weights(sample_cubic kind, float f, double w[4], double dw[4]);
 
 /* ---- Level of detail (lod.c) --------------------------------------------- */
 
-/* λ_base = log2 ρ for a Jacobian in normalized coordinates, on level `base`
- * (GL 4.6 §8.14.1 eq. 8.7, ρ = max of the two column lengths). Returns
- * −inf for a zero Jacobian. */
+/* log2 ρ in double for a Jacobian in normalized coordinates, on level
+ * `base` (GL 4.6 §8.14.1 eq. 8.9, ρ = max of the two column lengths), and
+ * the squared column lengths ρx², ρy² in base texels (the anisotropic
+ * filter's Px², Py²). In double: a 1e20 Jacobian squared overflows float,
+ * and λ must still be right; float inputs times a level size squared stay
+ * far inside double's range, so no hypot is needed. −inf for a zero
+ * Jacobian. */
+static inline double lod_log2_rho(const sample_ctx *c, const sample_query *q, double rho2[2])
+{
+    const struct sample_level *L = &c->tex->level[c->base];
+    double ux = (double)q->dsdx * L->w, vx = (double)q->dtdx * L->h;
+    double uy = (double)q->dsdy * L->w, vy = (double)q->dtdy * L->h;
+    rho2[0] = ux * ux + vx * vx;
+    rho2[1] = uy * uy + vy * vy;
+    /* log2 ρ = ½ log2 ρ². */
+    return 0.5 * log2(rho2[0] > rho2[1] ? rho2[0] : rho2[1]);
+}
+
+/* λ_base = log2 ρ (eq. 8.7 before bias and clamps), as a float. */
 float lod_lambda_base(const sample_ctx *c, const sample_query *q);
 
 typedef struct lod_choice {
@@ -412,9 +433,87 @@ sample_status mip_build(sample_texture *tex, const sample_mip_params *p, sample_
  * reads at most SAMPLE_MAX_FOOTPRINT_TEXELS texels. */
 uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
                         float out[4], float dds[4], float ddt[4], sample_stats *st);
-/* fp_anisotropic's prefetch of every probe's rows, alone: the fast path
- * issues it for a block of queries before running them. Only a hint. */
-void fp_anisotropic_prefetch(const sample_ctx *c, const sample_query *q, float call_bias);
+
+/* What the anisotropic filter decides per query before reading a texel
+ * (footprint_aniso.c): N probes along the major column, λ' and its two
+ * levels. The fast path computes it when it plans a query and runs the
+ * probes later with its own bilinear; fp_anisotropic does both at once. */
+typedef struct fp_aniso_setup {
+    int n, l0, l1;  /* probe count; levels (l1 == l0: a single level) */
+    float lam, f;   /* λ' after biases and clamps; the weight of level l1 */
+    double ms, mt;  /* the major column (normalized): the probes' axis */
+} fp_aniso_setup;
+
+/* From lod_log2_rho's ρx², ρy² and log2 ρ of the query. */
+void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double rho2[2],
+                       double log2_rho, float call_bias, fp_aniso_setup *a);
+/* fp_aniso_setup_of, then a prefetch of every probe's rows (a hint): the
+ * fast path's planning step. Out of line, so that the planning loop of the
+ * other filters stays small. */
+void fp_aniso_plan(const sample_ctx *c, const sample_query *q, const double rho2[2], double log2_rho,
+                   float call_bias, fp_aniso_setup *a);
+
+/* Probe i (1 … N) of a query: offsets i/(N + 1) − ½ of the major column. */
+SAMPLE_FORCE_INLINE void fp_aniso_probe(const sample_query *q, const fp_aniso_setup *a, int i, float *s,
+                                        float *t)
+{
+    double off = (double)i / (a->n + 1) - 0.5;
+    *s = (float)(q->s + off * a->ms);
+    *t = (float)(q->t + off * a->mt);
+}
+
+/* One level's bilinear value at (s, t), as recon_level computes it; the
+ * per-format tex_readers.bilinear, or the fast path's inline copy of it. */
+typedef uint32_t (*fp_bilinear_fn)(const sample_ctx *c, int lv, float s, float t, float out[4],
+                                   float dds[4], float ddt[4]);
+
+/* The N trilinear probes and their mean. Generic over the bilinear reader
+ * so that the fast path's instantiation inlines it (zstd style) while
+ * fp_anisotropic calls the reader table: one loop, the same bits. */
+SAMPLE_FORCE_INLINE uint32_t fp_aniso_probes(const sample_ctx *c, const sample_query *q,
+                                             const fp_aniso_setup *a, fp_bilinear_fn bilinear,
+                                             float out[4], float dds[4], float ddt[4])
+{
+    double acc[4] = {0, 0, 0, 0}, as[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
+    double f = (double)a->f;
+    uint32_t texels = 0;
+    int i, k;
+    for (i = 1; i <= a->n; ++i) {
+        float s, t, o0[4], s0[4], t0[4], o1[4], s1[4], t1[4];
+        fp_aniso_probe(q, a, i, &s, &t);
+        /* Derivatives only where asked for: they do not touch the value. */
+        texels += bilinear(c, a->l0, s, t, o0, dds ? s0 : NULL, ddt ? t0 : NULL);
+        if (a->l1 != a->l0) {
+            texels += bilinear(c, a->l1, s, t, o1, dds ? s1 : NULL, ddt ? t1 : NULL);
+        } else {
+            memcpy(o1, o0, sizeof o1);
+            if (dds) memcpy(s1, s0, sizeof s1);
+            if (ddt) memcpy(t1, t0, sizeof t1);
+        }
+        /* Equal weights, summed in double so the mean of N equal probes is
+         * that probe exactly. */
+        for (k = 0; k < 4; ++k) acc[k] += (1.0 - f) * o0[k] + f * o1[k];
+        if (dds)
+            for (k = 0; k < 4; ++k) as[k] += (1.0 - f) * s0[k] + f * s1[k];
+        if (ddt)
+            for (k = 0; k < 4; ++k) at[k] += (1.0 - f) * t0[k] + f * t1[k];
+    }
+    for (k = 0; k < 4; ++k) {
+        out[k] = (float)(acc[k] / a->n);
+        if (dds) dds[k] = (float)(as[k] / a->n);
+        if (ddt) ddt[k] = (float)(at[k] / a->n);
+    }
+    return texels;
+}
+
+/* The levels and λ' of an anisotropic query, as sample_stats reports them. */
+static inline void fp_aniso_stats(const fp_aniso_setup *a, sample_stats *st)
+{
+    st->level0 = (int16_t)a->l0;
+    st->level1 = (int16_t)(a->l1 != a->l0 ? a->l1 : -1);
+    st->level_frac = a->l1 != a->l0 ? a->f : 0.0f;
+    st->lod = a->lam;
+}
 uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
                          float call_bias, float out[4], float dds[4], float ddt[4],
                          sample_stats *st);
@@ -542,6 +641,18 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, floa
     const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * c->tex->texel_bytes;
     SAMPLE_PREFETCH(p);
     if (j + 1 < L->h) SAMPLE_PREFETCH(p + L->stride);
+}
+
+/* Ask for every anisotropic probe's rows, so that their misses overlap. */
+SAMPLE_FORCE_INLINE void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a)
+{
+    int i;
+    for (i = 1; i <= a->n; ++i) {
+        float s, t;
+        fp_aniso_probe(q, a, i, &s, &t);
+        ctx_prefetch_bilinear(c, a->l0, s, t);
+        if (a->l1 != a->l0) ctx_prefetch_bilinear(c, a->l1, s, t);
+    }
 }
 
 /* One level of a footprint filter: when `count_only`, returns (as a double,
