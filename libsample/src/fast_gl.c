@@ -41,10 +41,10 @@
 #ifndef FAST_BLOCK
 #define FAST_BLOCK 32
 #endif
-/* An anisotropic query asks for up to 2N rows; a smaller block keeps its
- * prefetches within what the miss queue and L1 hold. */
-#ifndef FAST_BLOCK_ANISO
-#define FAST_BLOCK_ANISO 8
+/* How many anisotropic queries ahead of their reading their probes' lines
+ * are asked for (fast_gl_batch). */
+#ifndef FAST_AHEAD_ANISO
+#define FAST_AHEAD_ANISO 4
 #endif
 
 /* Texel addresses and fractions of one query on one level: taps
@@ -354,10 +354,26 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
     size_t i, k;
-    size_t blk = smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC ? FAST_BLOCK_ANISO : FAST_BLOCK;
-    for (i = 0; i < a->count; i += blk) {
+    if (smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC) {
+        /* A software pipeline FAST_AHEAD_ANISO queries deep: query i + D is
+         * planned (its probes' lines asked for) right after query i ran, so
+         * the misses of the next queries are in flight while this one
+         * computes. A block of them planned at once would issue more
+         * prefetches than the miss queue holds and then leave memory idle
+         * while the block computes. */
+        fast_plan ring[FAST_AHEAD_ANISO];
+        size_t ahead = a->count < FAST_AHEAD_ANISO ? a->count : FAST_AHEAD_ANISO;
+        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, &ring[i]);
+        for (i = 0; i < a->count; ++i) {
+            fast_plan *pl = &ring[i % FAST_AHEAD_ANISO];
+            run_query(c, a, i, pl, fmt, nc, tb, aniso);
+            if (i + FAST_AHEAD_ANISO < a->count) plan_query(c, a, i + FAST_AHEAD_ANISO, NULL, tb, pl);
+        }
+        return;
+    }
+    for (i = 0; i < a->count; i += FAST_BLOCK) {
         fast_plan plan[FAST_BLOCK];
-        size_t m = a->count - i < blk ? a->count - i : blk;
+        size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
         for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed ? &mg : NULL, tb, &plan[k]);
         for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], fmt, nc, tb, aniso);
     }

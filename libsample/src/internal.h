@@ -638,9 +638,17 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, floa
     float u = s * (float)L->w - 0.5f, v = t * (float)L->h - 0.5f;
     int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
     int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
-    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * c->tex->texel_bytes;
+    size_t tb = c->tex->texel_bytes;
+    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
+    /* The pair of texels may straddle a line: then ask for both. */
+    size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
+    int two = ((uintptr_t)p >> 6) != ((uintptr_t)(p + e) >> 6);
     SAMPLE_PREFETCH(p);
-    if (j + 1 < L->h) SAMPLE_PREFETCH(p + L->stride);
+    if (two) SAMPLE_PREFETCH(p + e);
+    if (j + 1 < L->h) {
+        SAMPLE_PREFETCH(p + L->stride);
+        if (two) SAMPLE_PREFETCH(p + L->stride + e);
+    }
 }
 
 /* Ask for every anisotropic probe's rows, so that their misses overlap. */
