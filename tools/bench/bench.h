@@ -6,7 +6,12 @@
  *   engines.c    the filters measured: libsample's and OIIO's, one table
  *   timing.c     runs over pthreads, medians
  *   report.c     the text table and the JSON
+ *   save.c       --save: the queries and a manifest, for re-timing elsewhere
  *   cmd_bench.c  the subcommand
+ *
+ * oiio_replay.cpp, beside them, is a separate program (doc/benchmarks.md,
+ * "Re-timing the same queries independently"): it reads what save.c
+ * writes and shares no code with bench.
  */
 #ifndef TEXSAMPLE_BENCH_H
 #define TEXSAMPLE_BENCH_H
@@ -16,6 +21,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 /* ---- Query sets (queries.c) ------------------------------------------- */
 
@@ -29,6 +35,9 @@ typedef enum bench_set {
 } bench_set;
 
 extern const char *const bench_set_names[BENCH_SET_COUNT];
+/* The splitmix64 seed each set starts from (the shuffle's, for
+ * plane-shuffled); 0: the set draws no random numbers (plane). */
+extern const unsigned bench_set_seeds[BENCH_SET_COUNT];
 
 /* Fill q[0 … n) with set `set` for a size × size base level. The plane set
  * is a ⌈√n⌉-wide image, so n need not be a square. Deterministic. */
@@ -44,6 +53,8 @@ typedef enum bench_format {
 } bench_format;
 
 extern const char *const bench_format_names[BENCH_FMT_COUNT];
+/* OIIO's file for each format, inside bench's directory ("bench_float.tx"). */
+extern const char *const bench_oiio_file_names[BENCH_FMT_COUNT];
 
 /* One format of the synthetic texture, as libsample sees it and as OIIO's
  * file (NULL when OIIO is not measured). */
@@ -55,8 +66,9 @@ typedef struct bench_texture {
 /* The synthetic size × size RGBA content (linear, in [0, 1]); caller frees. */
 float *bench_content(int size);
 /* Build format `fmt` from `content`: libsample's texture with a box pyramid
- * (REPEAT), and when ts is non-NULL an OIIO texture file in `dir`. Returns
- * 0, or reports on stderr and returns −1. */
+ * (REPEAT); when dir is non-NULL, OIIO's texture file in it; when ts is
+ * non-NULL too, that file opened in ts. Returns 0, or reports on stderr and
+ * returns −1. */
 int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts *ts,
                        const char *dir, bench_texture *out);
 void bench_texture_free(bench_texture *t);
@@ -120,5 +132,24 @@ typedef struct bench_report {
 void bench_print_table(const bench_report *r);
 /* Returns 0, or −1 if the file could not be written (reported). */
 int bench_write_json(const bench_report *r, const char *path);
+/* s as a JSON string literal, quotes included. */
+void bench_json_string(FILE *f, const char *s);
+
+/* ---- Saving a run (save.c) -------------------------------------------- */
+
+/* What `--save DIR` records beyond the report: the selection, as the bit
+ * masks of cmd_bench (filters: bits over libsample's engines). */
+typedef struct bench_save {
+    const char *dir;
+    unsigned sets, formats, filters;
+} bench_save;
+
+/* One set's queries as DIR/queries_<set>.bin: n records of 6 little-endian
+ * float32 in sample_query's field order. Returns 0, or nonzero (reported). */
+int bench_save_queries(const char *dir, bench_set set, const sample_query *q, size_t n);
+/* DIR/manifest.json: the query files, OIIO's texture files, every selected
+ * filter's settings on both sides, and the 1-thread timings of the report.
+ * Returns 0, or nonzero (reported). */
+int bench_save_manifest(const bench_save *s, const bench_report *r);
 
 #endif

@@ -9,13 +9,15 @@
 #include "cli.h"
 #include "commands.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static const char help[] =
-    "usage: texsample bench [--quick] [--json FILE] [options]\n\n"
+    "usage: texsample bench [--quick] [--json FILE] [--save DIR] [options]\n\n"
     "Measures samples per second of each libsample filter and of OpenImageIO's\n"
     "TextureSystem at matching settings, on 1 thread and on all cores, and the\n"
     "texels each filter reads per sample. Prints a table; --json writes the same\n"
@@ -41,8 +43,15 @@ static const char help[] =
     "  --scalar           libsample through its general per-query path\n"
     "                     (SAMPLE_OPT_SCALAR_PATH), to measure the fast path\n"
     "  --tmpdir DIR       where OIIO's texture files are written (default $TMPDIR\n"
-    "                     or /tmp); they are removed at the end\n"
-    "  --json FILE        also write the results as JSON ('-': stdout, no table)\n\n"
+    "                     or /tmp); they are removed at the end (--save keeps\n"
+    "                     them in its directory instead)\n"
+    "  --json FILE        also write the results as JSON ('-': stdout, no table)\n"
+    "  --save DIR         keep what was timed in DIR (created if missing): each\n"
+    "                     set's queries (queries_SET.bin, little-endian float32\n"
+    "                     s, t, dsdx, dtdx, dsdy, dtdy per query), OIIO's texture\n"
+    "                     files (written even with --no-oiio) and manifest.json\n"
+    "                     (layout, settings of both sides, 1-thread samples/s),\n"
+    "                     for re-timing by tools/bench/oiio_replay\n\n"
     "Exit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
 enum { MAX_ENGINES = 32 };
@@ -51,7 +60,7 @@ typedef struct bench_opts {
     int size, runs, threads, oiio, scalar;
     size_t queries, batch;
     unsigned sets, formats, filters; /* bit masks */
-    const char *json, *tmpdir;
+    const char *json, *tmpdir, *save;
 } bench_opts;
 
 /* "a,b,c" over `names` into a bit mask; returns 0, or EXIT_USAGE after
@@ -127,6 +136,11 @@ static int parse_args(int argc, char **argv, const bench_engine *eng, int neng, 
         } else if (cli_opt(argc, argv, &i, "--json", &v)) {
             if (!v) return cli_usage_error("bench", "--json needs a file name");
             o->json = v;
+        } else if (cli_opt(argc, argv, &i, "--save", &v)) {
+            if (!v || !*v) return cli_usage_error("bench", "--save needs a directory");
+            /* Paths inside it are built in fixed buffers. */
+            if (strlen(v) > 900) return cli_usage_error("bench", "--save: directory name too long");
+            o->save = v;
         } else if (cli_opt(argc, argv, &i, "--tmpdir", &v)) {
             if (!v) return cli_usage_error("bench", "--tmpdir needs a directory");
             o->tmpdir = v;
@@ -232,12 +246,13 @@ static int count_bits(unsigned m)
     return n;
 }
 
-static int run_all(bench_run *b, const char *dir)
+/* OIIO's files go to `files` (NULL: none are written). */
+static int run_all(bench_run *b, const char *files)
 {
     float *content = bench_content(b->o.size);
     sample_query *q = malloc(b->o.queries * sizeof *q);
     size_t done = 0, total;
-    int fmt, set, e, nsel = 0, rc = 0;
+    int fmt, set, e, nsel = 0, rc = 0, saved_any_format = 0;
     for (e = 0; e < b->neng; ++e)
         nsel += engine_selected(b->eng, b->neng, e, b->o.filters) && (!b->eng[e].oiio || b->ts);
     total = (size_t)(count_bits(b->o.sets) * count_bits(b->o.formats) * nsel *
@@ -250,17 +265,25 @@ static int run_all(bench_run *b, const char *dir)
     for (fmt = 0; fmt < BENCH_FMT_COUNT && rc == 0; ++fmt) {
         bench_texture tex;
         if (!((b->o.formats >> fmt) & 1u)) continue;
-        if (bench_texture_make(content, b->o.size, (bench_format)fmt, b->ts, dir, &tex) != 0) {
+        if (bench_texture_make(content, b->o.size, (bench_format)fmt, b->ts, files, &tex) != 0) {
             rc = EXIT_RUNTIME;
             break;
         }
         for (set = 0; set < BENCH_SET_COUNT && rc == 0; ++set) {
             if (!((b->o.sets >> set) & 1u)) continue;
             bench_queries((bench_set)set, b->o.size, q, b->o.queries);
+            /* The buffer about to be timed, once per set (every format
+             * gets the same queries). */
+            if (b->o.save && !saved_any_format &&
+                bench_save_queries(b->o.save, (bench_set)set, q, b->o.queries) != 0) {
+                rc = EXIT_RUNTIME;
+                break;
+            }
             if (measure(b, &tex, (bench_format)fmt, (bench_set)set, q, &done, total) != 0)
                 rc = EXIT_RUNTIME;
         }
         bench_texture_free(&tex);
+        saved_any_format = 1;
     }
 done:
     free(content);
@@ -271,14 +294,25 @@ done:
 /* OIIO's files, by the names textures.c gives them. */
 static void remove_files(const char *dir)
 {
-    static const char *const names[] = {"bench_float.tx", "bench_half.exr", "bench_srgb8.tx"};
     char path[1100];
-    size_t k;
-    for (k = 0; k < sizeof names / sizeof names[0]; ++k) {
-        snprintf(path, sizeof path, "%s/%s", dir, names[k]);
+    int k;
+    for (k = 0; k < BENCH_FMT_COUNT; ++k) {
+        snprintf(path, sizeof path, "%s/%s", dir, bench_oiio_file_names[k]);
         remove(path);
     }
     rmdir(dir);
+}
+
+/* --save's directory: made if missing (one level, as mkdir), else it must
+ * be a directory. Returns 0, or EXIT_RUNTIME after reporting. */
+static int make_save_dir(const char *dir)
+{
+    struct stat st;
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+        return cli_runtime_error("bench", "--save: cannot create %s: %s", dir, strerror(errno));
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+        return cli_runtime_error("bench", "--save: %s is not a directory", dir);
+    return 0;
 }
 
 int cmd_bench(int argc, char **argv)
@@ -313,16 +347,20 @@ int cmd_bench(int argc, char **argv)
 
     tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
     snprintf(dir, sizeof dir, "%s/texsample-bench-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (b.o.oiio) {
-        if (!mkdtemp(dir)) return cli_runtime_error("bench", "cannot create a directory in %s",
-                                                    tmp && *tmp ? tmp : "/tmp");
-        if (!(b.ts = oiio_ts_create(0))) {
-            rmdir(dir);
-            return cli_runtime_error("bench", "cannot create an OpenImageIO TextureSystem");
-        }
+    if (b.o.save) {
+        if (make_save_dir(b.o.save) != 0) return EXIT_RUNTIME;
+        /* The files are the record: they stay where --save put them. */
+        snprintf(dir, sizeof dir, "%s", b.o.save);
+    } else if (b.o.oiio && !mkdtemp(dir)) {
+        return cli_runtime_error("bench", "cannot create a directory in %s",
+                                 tmp && *tmp ? tmp : "/tmp");
+    }
+    if (b.o.oiio && !(b.ts = oiio_ts_create(0))) {
+        if (!b.o.save) rmdir(dir);
+        return cli_runtime_error("bench", "cannot create an OpenImageIO TextureSystem");
     }
     if (getloadavg(&load[0], 1) != 1) load[0] = -1.0;
-    rc = run_all(&b, dir);
+    rc = run_all(&b, b.o.oiio || b.o.save ? dir : NULL);
     if (getloadavg(&load[1], 1) != 1) load[1] = -1.0;
     if (rc == 0) {
         bench_report r;
@@ -342,9 +380,13 @@ int cmd_bench(int argc, char **argv)
         r.command = command ? command : "texsample bench";
         if (!b.o.json || strcmp(b.o.json, "-") != 0) bench_print_table(&r);
         if (b.o.json && bench_write_json(&r, b.o.json) != 0) rc = EXIT_RUNTIME;
+        if (b.o.save) {
+            bench_save sv = {b.o.save, b.o.sets, b.o.formats, b.o.filters};
+            if (bench_save_manifest(&sv, &r) != 0) rc = EXIT_RUNTIME;
+        }
     }
     oiio_ts_destroy(b.ts);
-    if (b.o.oiio) remove_files(dir);
+    if (b.o.oiio && !b.o.save) remove_files(dir);
     free(b.res);
     free(command);
     return rc;

@@ -97,7 +97,7 @@ void bench_print_table(const bench_report *r)
     printf("\n(ratio1: 1 thread, ratio*: %d threads)\n", r->threads_max);
 }
 
-static void json_string(FILE *f, const char *s)
+void bench_json_string(FILE *f, const char *s)
 {
     fputc('"', f);
     for (; s && *s; ++s) {
@@ -145,7 +145,7 @@ int bench_write_json(const bench_report *r, const char *path)
     if (!f) return cli_runtime_error("bench", "out of memory");
     fprintf(f, "{\n  \"tool\": \"texsample bench\", \"version\": \"%s\",\n  \"command\": ",
             SAMPLE_VERSION_STRING);
-    json_string(f, r->command);
+    bench_json_string(f, r->command);
     fprintf(f, ",\n  \"size\": %d, \"queries\": %zu, \"batch\": %zu, \"runs\": %d, "
                "\"threads_max\": %d, \"scalar_path\": %s,\n"
                "  \"load_before\": %.3g, \"load_after\": %.3g,\n  \"results\": [",

@@ -15,6 +15,13 @@ const char *const bench_format_names[BENCH_FMT_COUNT] = {
     [BENCH_FMT_SRGB8] = "srgb8",
 };
 
+/* OIIO 2.4's TIFF writer cannot hold half (oiio_ts.h): .exr for it. */
+const char *const bench_oiio_file_names[BENCH_FMT_COUNT] = {
+    [BENCH_FMT_F32] = "bench_float.tx",
+    [BENCH_FMT_F16] = "bench_half.exr",
+    [BENCH_FMT_SRGB8] = "bench_srgb8.tx",
+};
+
 /* A 32-bit integer hash (Wang-style mixing): noise without a generator. */
 static uint32_t hash2(uint32_t i, uint32_t j)
 {
@@ -58,10 +65,10 @@ static unsigned char *to_srgb8(const float *c, size_t n)
     return p;
 }
 
-/* Make OIIO's file of the same texels. OIIO reads 8-bit data as code/255
- * and never decodes sRGB, so its srgb8 texture holds the same codes and
- * reads them as if linear: the same memory traffic and work, not the
- * same values (doc/benchmarks.md). */
+/* Make OIIO's file of the same texels (and open it when ts is given). OIIO
+ * reads 8-bit data as code/255 and never decodes sRGB, so its srgb8 texture
+ * holds the same codes and reads them as if linear: the same memory traffic
+ * and work, not the same values (doc/benchmarks.md). */
 static int make_oiio(const float *content, const void *stored, int size, bench_format fmt,
                      oiio_ts *ts, const char *dir, bench_texture *out)
 {
@@ -72,8 +79,7 @@ static int make_oiio(const float *content, const void *stored, int size, bench_f
     const float *src = content;
     char path[1024], err[512];
     int rc;
-    snprintf(path, sizeof path, "%s/bench_%s.%s", dir, bench_format_names[fmt],
-             fmt == BENCH_FMT_F16 ? "exr" : "tx");
+    snprintf(path, sizeof path, "%s/%s", dir, bench_oiio_file_names[fmt]);
     if (fmt == BENCH_FMT_SRGB8) {
         const unsigned char *c8 = stored;
         if (!(codes = malloc(n * sizeof *codes))) {
@@ -86,7 +92,7 @@ static int make_oiio(const float *content, const void *stored, int size, bench_f
     rc = oiio_ts_make_texture(src, size, size, ofmt[fmt], SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT,
                               path, err, sizeof err);
     free(codes);
-    if (rc != 0 || !(out->theirs = oiio_ts_open(ts, path, err, sizeof err))) {
+    if (rc != 0 || (ts && !(out->theirs = oiio_ts_open(ts, path, err, sizeof err)))) {
         fprintf(stderr, "texsample bench: %s\n", err);
         return -1;
     }
@@ -126,7 +132,7 @@ int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts
     mip.wrap_s = mip.wrap_t = SAMPLE_WRAP_REPEAT;
     if (sample_texture_create(&img, &mip, &out->ours, &err) != SAMPLE_OK) {
         fprintf(stderr, "texsample bench: %s texture: %s\n", bench_format_names[fmt], err.message);
-    } else if (!ts || make_oiio(content, stored, size, fmt, ts, dir, out) == 0) {
+    } else if (!dir || make_oiio(content, stored, size, fmt, ts, dir, out) == 0) {
         rc = 0;
     }
     free(stored);

@@ -62,6 +62,34 @@ static const char *const mode_names[OIIO_TS_MODE_COUNT] = {
     "closest", "bilinear", "bicubic", "trilinear", "aniso",
 };
 
+// Each mode's (interpmode, mipmode), with the names oiio_ts_describe gives
+// them: one table, so the description cannot drift from what is sampled.
+static const struct {
+    TextureOpt::InterpMode interp;
+    TextureOpt::MipMode mip;
+    const char *interp_name, *mip_name;
+} mode_opts[OIIO_TS_MODE_COUNT] = {
+    {TextureOpt::InterpClosest, TextureOpt::MipModeNoMIP, "InterpClosest", "MipModeNoMIP"},
+    {TextureOpt::InterpBilinear, TextureOpt::MipModeNoMIP, "InterpBilinear", "MipModeNoMIP"},
+    {TextureOpt::InterpBicubic, TextureOpt::MipModeNoMIP, "InterpBicubic", "MipModeNoMIP"},
+    {TextureOpt::InterpBilinear, TextureOpt::MipModeTrilinear, "InterpBilinear",
+     "MipModeTrilinear"},
+    {TextureOpt::InterpBilinear, TextureOpt::MipModeAniso, "InterpBilinear", "MipModeAniso"},
+};
+
+extern "C" int oiio_ts_describe(const oiio_ts_opts *o, oiio_ts_textureopt *out)
+{
+    if (!o || !out || (unsigned)o->mode >= OIIO_TS_MODE_COUNT) return -1;
+    out->swrap = wrap_oiio_name(o->wrap_s);
+    out->twrap = wrap_oiio_name(o->wrap_t);
+    if (!out->swrap || !out->twrap) return -1;
+    out->interpmode = mode_opts[o->mode].interp_name;
+    out->mipmode = mode_opts[o->mode].mip_name;
+    out->anisotropic = o->max_aniso > 0 ? o->max_aniso : 1;
+    out->conservative_filter = o->conservative != 0;
+    return 0;
+}
+
 extern "C" const char *oiio_ts_mode_name(oiio_ts_mode mode)
 {
     return (unsigned)mode < OIIO_TS_MODE_COUNT ? mode_names[mode] : "?";
@@ -191,33 +219,17 @@ extern "C" int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *tex, const oiio_ts_opts 
                                  sample_wrap_name(ws ? o->wrap_t : o->wrap_s));
         return -1;
     }
+    // Built from the description, so that what bench --save records is
+    // what OIIO gets.
+    oiio_ts_textureopt d;
+    oiio_ts_describe(o, &d); // cannot fail: mode and wraps checked above
     TextureOpt opt;
-    opt.swrap = TextureOpt::decode_wrapmode(ws);
-    opt.twrap = TextureOpt::decode_wrapmode(wt);
-    opt.anisotropic = o->max_aniso > 0 ? o->max_aniso : 1;
-    opt.conservative_filter = o->conservative != 0;
-    switch (o->mode) {
-    case OIIO_TS_CLOSEST:
-        opt.interpmode = TextureOpt::InterpClosest;
-        opt.mipmode = TextureOpt::MipModeNoMIP;
-        break;
-    case OIIO_TS_BILINEAR:
-        opt.interpmode = TextureOpt::InterpBilinear;
-        opt.mipmode = TextureOpt::MipModeNoMIP;
-        break;
-    case OIIO_TS_BICUBIC:
-        opt.interpmode = TextureOpt::InterpBicubic;
-        opt.mipmode = TextureOpt::MipModeNoMIP;
-        break;
-    case OIIO_TS_TRILINEAR:
-        opt.interpmode = TextureOpt::InterpBilinear;
-        opt.mipmode = TextureOpt::MipModeTrilinear;
-        break;
-    default:
-        opt.interpmode = TextureOpt::InterpBilinear;
-        opt.mipmode = TextureOpt::MipModeAniso;
-        break;
-    }
+    opt.swrap = TextureOpt::decode_wrapmode(d.swrap);
+    opt.twrap = TextureOpt::decode_wrapmode(d.twrap);
+    opt.anisotropic = d.anisotropic;
+    opt.conservative_filter = d.conservative_filter != 0;
+    opt.interpmode = mode_opts[o->mode].interp;
+    opt.mipmode = mode_opts[o->mode].mip;
     // The calling thread's record (OIIO keeps one per thread), fetched once
     // per call rather than once per lookup.
     TextureSystem::Perthread *pt = ts->sys->get_perthread_info();

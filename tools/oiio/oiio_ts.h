@@ -75,6 +75,20 @@ int oiio_ts_wrap_supported(sample_wrap wrap);
 const char *oiio_ts_mode_name(oiio_ts_mode mode);
 int oiio_ts_mode_parse(const char *name);
 
+/* The TextureOpt that oiio_ts_sample builds from `o`, spelled as OIIO
+ * spells it (enum names "InterpBilinear", "MipModeTrilinear"; wrap names
+ * as TextureOpt::decode_wrapmode reads them), so that a record of a run
+ * (bench --save) states what OIIO was given, not what we meant. */
+typedef struct oiio_ts_textureopt {
+    const char *interpmode, *mipmode;
+    const char *swrap, *twrap;
+    int anisotropic;
+    int conservative_filter;
+} oiio_ts_textureopt;
+
+/* Returns 0, or −1 (bad mode, or a wrap mode OIIO has no equivalent of). */
+int oiio_ts_describe(const oiio_ts_opts *o, oiio_ts_textureopt *out);
+
 /* Write `rgba` (w × h float RGBA, row 0 = first stored row) as a tiled
  * (64 × 64), uncompressed, mip-mapped texture file, as maketx does
  * (ImageBufAlgo::make_texture with its default 2 × 2 box down-sampling),
