@@ -94,7 +94,10 @@ void bench_print_table(const bench_report *r)
                 printf("\n");
             }
         }
-    printf("\n(ratio1: 1 thread, ratio*: %d threads)\n", r->threads_max);
+    if (r->threads_max > 1)
+        printf("\n(ratio1: 1 thread, ratio*: %d threads)\n", r->threads_max);
+    else
+        printf("\n(ratio1: 1 thread)\n");
 }
 
 void bench_json_string(FILE *f, const char *s)
