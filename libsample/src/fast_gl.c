@@ -183,12 +183,12 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
         n = 4;
     } else {
         double wx[4], wy[4], dwx[4], dwy[4];
-        v4f T[16];
+        float T[16][4];
         int x, y;
         cubic_weights(c->smp->cubic, tp->fu, wx, dwx);
         cubic_weights(c->smp->cubic, tp->fv, wy, dwy);
         for (y = 0; y < 4; ++y)
-            for (x = 0; x < 4; ++x) T[4 * y + x] = fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]);
+            for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]));
         recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0,
                             out, dds, ddt);
         n = 16;

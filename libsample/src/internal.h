@@ -276,8 +276,11 @@ static inline float recon_texel_coord(sample_wrap mode, float s, int n)
  * around (i0, j0)) with weights wx, wy and their derivatives, accumulated
  * in double (16 float products would lose the exact reproduction of
  * constants and ramps); `clamp` is SAMPLE_OPT_CUBIC_CLAMP. Shared by the
- * general and the fast path. */
-void recon_cubic_combine(const v4f T[16], const double wx[4], const double wy[4],
+ * general and the fast path. Texels as plain floats, not v4f: v4f is a
+ * different type in each instruction-set build of the fast path (isa.c),
+ * and this function is compiled once. T is only read (not const-qualified
+ * because C before C23 does not convert float (*)[4] to that implicitly). */
+void recon_cubic_combine(float T[16][4], const double wx[4], const double wy[4],
                          const double dwx[4], const double dwy[4], int clamp, float out[4],
                          float ddu[4], float ddv[4]);
 

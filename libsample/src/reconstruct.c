@@ -84,7 +84,7 @@ static uint32_t recon_linear(const sample_ctx *c, int lv, float u, float v, floa
     return 4;
 }
 
-void recon_cubic_combine(const v4f T[16], const double wx[4], const double wy[4],
+void recon_cubic_combine(float tx[16][4], const double wx[4], const double wy[4],
                          const double dwx[4], const double dwy[4], int clamp, float out[4],
                          float ddu[4], float ddv[4])
 {
@@ -93,9 +93,7 @@ void recon_cubic_combine(const v4f T[16], const double wx[4], const double wy[4]
      * and the derivative sums only when asked for. In double, so that the
      * kernels' exact reproduction of constants and ramps survives. */
     double row[4][4], drow[4][4], acc[4] = {0, 0, 0, 0}, au[4] = {0, 0, 0, 0}, av[4] = {0, 0, 0, 0};
-    float tx[16][4];
     int x, y, k, deriv = ddu || ddv;
-    for (y = 0; y < 16; ++y) v4_store(tx[y], T[y]);
     for (y = 0; y < 4; ++y) {
         for (k = 0; k < 4; ++k) {
             double r = 0.0, dr = 0.0;
@@ -139,17 +137,13 @@ static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float
     float a = u - 0.5f, b = v - 0.5f;
     float i0 = floorf(a), j0 = floorf(b);
     double wx[4], wy[4], dwx[4], dwy[4];
-    v4f T[16];
+    float T[16][4];
     int x, y;
     cubic_weights(c->smp->cubic, a - i0, wx, dwx);
     cubic_weights(c->smp->cubic, b - j0, wy, dwy);
-    for (y = 0; y < 4; ++y) {
-        for (x = 0; x < 4; ++x) {
-            float tx[4];
-            ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, tx);
-            T[4 * y + x] = v4_load(tx);
-        }
-    }
+    for (y = 0; y < 4; ++y)
+        for (x = 0; x < 4; ++x)
+            ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, T[4 * y + x]);
     recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, out,
                         ddu, ddv);
     return 16;
