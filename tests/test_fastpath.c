@@ -5,15 +5,26 @@
  * range, out of range, huge, negative and non-finite, with and without
  * derivatives, per-query bias, corners and stats, the results must be
  * memcmp-identical — and stay so for any batch size and thread count.
+ *
+ * All of it runs once per instruction set the fast path was built for and
+ * this CPU runs (isa.c: scalar, SSE2, AVX2, AVX-512), on the same query
+ * sets, against one reference: the general path with the portable scalar
+ * readers. So every build is checked against the same bits, not only
+ * against itself.
  */
 #include "check.h"
 #include "internal.h"
+#include "isa_util.h"
 
 #include <pthread.h>
 #include <stdint.h>
 #include <stdlib.h>
 
-static uint64_t rng_state = 0x243F6A8885A308D3ull;
+#define RNG_SEED 0x243F6A8885A308D3ull
+static uint64_t rng_state = RNG_SEED;
+
+/* The instruction set under test; the reference always runs "scalar". */
+static const char *test_isa = "scalar";
 
 static uint32_t rnd(void)
 {
@@ -139,15 +150,19 @@ static void fill_queries(sample_query *q, float *bias, sample_quad *quad)
     }
 }
 
-/* Run `count` queries in batches of `chunk`, through the general path when
- * `scalar`; extras (derivatives, stats, bias, corners) by the bits of
- * `what`. */
+/* Run `count` queries in batches of `chunk`, through the general path and
+ * the scalar build's readers when `scalar` (the reference), through the
+ * fast path of test_isa otherwise; extras (derivatives, stats, bias,
+ * corners) by the bits of `what`. Leaves test_isa running. */
 static void run(const sample_texture *tex, sample_sampler s, int scalar, const sample_query *q,
                 const float *bias, const sample_quad *quad, unsigned what, size_t chunk, outputs *o)
 {
     size_t i;
     memset(o, 0xA5, sizeof *o);
-    if (scalar) s.options |= SAMPLE_OPT_SCALAR_PATH;
+    if (scalar) {
+        s.options |= SAMPLE_OPT_SCALAR_PATH;
+        CHECK(sample_isa_force("scalar") == 0, "scalar kernels");
+    }
     for (i = 0; i < NQ; i += chunk) {
         sample_batch_args a;
         memset(&a, 0, sizeof a);
@@ -161,6 +176,7 @@ static void run(const sample_texture *tex, sample_sampler s, int scalar, const s
         if (what & 16) a.corners = quad + i;
         CHECK(sample_batch(tex, &s, &a) == SAMPLE_OK, "sample_batch");
     }
+    CHECK(sample_isa_force(test_isa) == 0, "%s kernels", test_isa);
 }
 
 static int same(const outputs *x, const outputs *y, const sample_texture *tex, const sample_sampler *s,
@@ -172,10 +188,11 @@ static int same(const outputs *x, const outputs *y, const sample_texture *tex, c
         if (memcmp(x->rgba + 4 * i, y->rgba + 4 * i, 16) || memcmp(x->ds + 4 * i, y->ds + 4 * i, 16) ||
             memcmp(x->dt + 4 * i, y->dt + 4 * i, 16) || memcmp(&x->st[i], &y->st[i], sizeof x->st[i])) {
             fprintf(stderr,
-                    "query %d (s %.9g t %.9g J %g %g %g %g) format %d ch %d wrap %d/%d min %d mag %d: "
-                    "%.9g %.9g vs %.9g %.9g\n",
-                    i, q[i].s, q[i].t, q[i].dsdx, q[i].dtdx, q[i].dsdy, q[i].dtdy, (int)tex->format,
-                    tex->channels, s->wrap_s, s->wrap_t, s->min_filter, s->mag_filter, x->rgba[4 * i],
+                    "%s: query %d (s %.9g t %.9g J %g %g %g %g) format %d ch %d wrap %d/%d min %d mag %d "
+                    "footprint %d: %.9g %.9g vs %.9g %.9g\n",
+                    test_isa, i, q[i].s, q[i].t, q[i].dsdx, q[i].dtdx, q[i].dsdy, q[i].dtdy,
+                    (int)tex->format, tex->channels, s->wrap_s, s->wrap_t, s->min_filter, s->mag_filter,
+                    (int)s->footprint, x->rgba[4 * i],
                     x->rgba[4 * i + 3], y->rgba[4 * i], y->rgba[4 * i + 3]);
             break;
         }
@@ -315,10 +332,17 @@ static void test_scalar_option_value(void)
 
 int main(void)
 {
-    RUN(test_identical_all_combinations);
-    RUN(test_footprint_samplers);
-    RUN(test_batch_sizes);
-    RUN(test_threads);
+    int k;
+    for (k = 0; k < SAMPLE_ISA_COUNT; ++k) {
+        if (!test_isa_enter(test_isa_names[k])) continue;
+        test_isa = test_isa_names[k];
+        rng_state = RNG_SEED; /* the same textures and queries for every build */
+        RUN(test_identical_all_combinations);
+        RUN(test_footprint_samplers);
+        RUN(test_batch_sizes);
+        RUN(test_threads);
+    }
+    CHECK(sample_isa_force(NULL) == 0, "automatic choice");
     RUN(test_scalar_option_value);
     return check_finish();
 }

@@ -391,22 +391,23 @@ FAST_GL_KERNELS(F16)
 FAST_GL_KERNELS(UNORM8)
 FAST_GL_KERNELS(SRGB8)
 
-#define FAST_GL_ROW(fmt)                                                       \
+/* ---- This build's table (isa.c) -----------------------------------------
+ * The build compiles this file once per instruction set (scalar, SSE2,
+ * AVX2, AVX-512; isa.c picks one at run time): the code is the same, only
+ * simd.h's vector type and the compiler's target differ, and each object
+ * exports its own table, named by SAMPLE_ISA_NAME. */
+
+#ifndef SAMPLE_ISA
+#error "fast_gl.c is built once per instruction set with SAMPLE_ISA set (libsample/CMakeLists.txt)"
+#endif
+
+#define ISA_KERNELS_ROW(fmt)                                                   \
     [SAMPLE_FORMAT_##fmt] = {fast_gl_##fmt##_1, fast_gl_##fmt##_2, fast_gl_##fmt##_3, fast_gl_##fmt##_4}
-static const fast_gl_fn fast_gl_table[SAMPLE_FORMAT_COUNT][4] = {
-    FAST_GL_ROW(F32), FAST_GL_ROW(F16), FAST_GL_ROW(UNORM8), FAST_GL_ROW(SRGB8),
-};
-_Static_assert(SAMPLE_FORMAT_COUNT == 4, "one row of fast_gl_table per format");
-
-fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a)
-{
-    (void)a;
-    return fast_gl_table[c->tex->format][c->tex->channels - 1];
-}
-
-#define TEX_READERS_ROW(fmt)                                                   \
+#define ISA_READERS_ROW(fmt)                                                   \
     [SAMPLE_FORMAT_##fmt] = {{row_##fmt##_1, bilinear_##fmt##_1}, {row_##fmt##_2, bilinear_##fmt##_2}, \
                              {row_##fmt##_3, bilinear_##fmt##_3}, {row_##fmt##_4, bilinear_##fmt##_4}}
-const tex_readers tex_readers_table[SAMPLE_FORMAT_COUNT][4] = {
-    TEX_READERS_ROW(F32), TEX_READERS_ROW(F16), TEX_READERS_ROW(UNORM8), TEX_READERS_ROW(SRGB8),
+const isa_kernels SAMPLE_ISA_NAME(isa_kernels) = {
+    .fast_gl = {ISA_KERNELS_ROW(F32), ISA_KERNELS_ROW(F16), ISA_KERNELS_ROW(UNORM8), ISA_KERNELS_ROW(SRGB8)},
+    .readers = {ISA_READERS_ROW(F32), ISA_READERS_ROW(F16), ISA_READERS_ROW(UNORM8), ISA_READERS_ROW(SRGB8)},
 };
+_Static_assert(SAMPLE_FORMAT_COUNT == 4, "one row of isa_kernels per format");

@@ -201,12 +201,10 @@ static inline int batch_query_finite(const sample_batch_args *a, size_t k)
 #define SAMPLE_PREFETCH(p) ((void)(p))
 #endif
 
-/* The specialized batch loop for the OpenGL filters (fast_gl.c): a kernel
- * for this batch's format and channel count, or NULL where the general
- * path must run (footprint filters). Bit-for-bit the general path's
+/* The specialized batch loop for the OpenGL filters (fast_gl.c): one
+ * kernel per format and channel count. Bit-for-bit the general path's
  * results (tests/test_fastpath.c). */
 typedef void (*fast_gl_fn)(const sample_ctx *c, const sample_batch_args *a);
-fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a);
 
 /* The fast path's readers for the other filters, one set per (format ×
  * channel count), chosen per query by tex_readers_of (a table look-up, so
@@ -219,10 +217,63 @@ typedef struct tex_readers {
     uint32_t (*bilinear)(const sample_ctx *c, int lv, float s, float t, float out[4],
                          float dds[4], float ddt[4]);
 } tex_readers;
-extern const tex_readers tex_readers_table[SAMPLE_FORMAT_COUNT][4];
+
+/* ---- Run-time instruction-set dispatch (isa.c) --------------------------- */
+
+/* fast_gl.c is compiled once per instruction set (libsample/CMakeLists.txt):
+ * plain C structs (SAMPLE_NO_SIMD, the portable kernels every build has),
+ * SSE2 (the x86-64 baseline), AVX2 + F16C and AVX-512, never with FMA and
+ * always with -ffp-contract=off, so that all give the same bits. Each object
+ * defines one isa_kernels table, named by SAMPLE_ISA_NAME (SAMPLE_ISA is
+ * set by the build: scalar, sse2, avx2, avx512); isa.c picks one table per
+ * process from the CPU and LIBSAMPLE_ISA. Levels are ordered: each one's
+ * CPU requirements include the previous one's. */
+typedef enum sample_isa {
+    SAMPLE_ISA_SCALAR,
+    SAMPLE_ISA_SSE2,
+    SAMPLE_ISA_AVX2,
+    SAMPLE_ISA_AVX512,
+    SAMPLE_ISA_COUNT
+} sample_isa;
+
+typedef struct isa_kernels {
+    fast_gl_fn fast_gl[SAMPLE_FORMAT_COUNT][4]; /* [format][channels − 1] */
+    tex_readers readers[SAMPLE_FORMAT_COUNT][4];
+} isa_kernels;
+
+#define SAMPLE_ISA_CAT_(a, b) a##_##b
+#define SAMPLE_ISA_CAT(a, b) SAMPLE_ISA_CAT_(a, b)
+#define SAMPLE_ISA_NAME(x) SAMPLE_ISA_CAT(x, SAMPLE_ISA)
+
+/* The tables the build made (isa.c refers only to those it was told of). */
+extern const isa_kernels isa_kernels_scalar, isa_kernels_sse2, isa_kernels_avx2,
+    isa_kernels_avx512;
+
+/* The table this process runs: chosen on first use, thread-safe, then a
+ * relaxed atomic load. An out-of-line call, so that this header (also read
+ * by C++, libsample_io) needs no <stdatomic.h>. */
+const isa_kernels *isa_kernels_active(void);
+
+/* For tests (not public API): run `name` ("scalar", "sse2", "avx2",
+ * "avx512") from now on, process-wide. Returns 0 when done; −1 for an
+ * unknown name, −2 when this build has no kernels for it (compiler without
+ * the flags, or not x86), −3 when this CPU lacks it; the choice is then
+ * unchanged. NULL returns to the automatic choice (CPU and LIBSAMPLE_ISA,
+ * read again). Not meant to race with sampling: a batch already running
+ * keeps the kernels it started with, the footprint readers switch at once,
+ * and both give the same bits anyway. */
+int sample_isa_force(const char *name);
+
+/* The kernel for this batch's format and channel count (sampler.c). */
+static inline fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a)
+{
+    (void)a;
+    return isa_kernels_active()->fast_gl[c->tex->format][c->tex->channels - 1];
+}
+
 static inline const tex_readers *tex_readers_of(const sample_texture *t)
 {
-    return &tex_readers_table[t->format][t->channels - 1];
+    return &isa_kernels_active()->readers[t->format][t->channels - 1];
 }
 
 /* The footprint queries of a batch (sampler.c): query i (finite, λ > 0)

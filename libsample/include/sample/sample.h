@@ -39,7 +39,8 @@
  *
  *   A texture is immutable after creation: every function taking a
  *   `const sample_texture *` may be called from any number of threads at once.
- *   Nothing is allocated while sampling. There is no global state.
+ *   Nothing is allocated while sampling. The only global state is which
+ *   instruction set sampling runs on (section 6), decided once, thread-safe.
  *   sample_texture_destroy() must not race with readers of the same texture.
  *
  * 5. BAD INPUT (DESIGN §10, doc/guarantees.md)
@@ -49,6 +50,16 @@
  *   holds NaN or ±inf returns the sampler's border colour. Coordinates far
  *   outside [0, 1] wrap as specified and never index out of bounds. Every
  *   footprint filter reads at most SAMPLE_MAX_FOOTPRINT_TEXELS texels.
+ *
+ * 6. INSTRUCTION SETS (doc/performance.md)
+ *
+ *   The sampling loops are built for several instruction sets — portable
+ *   C ("scalar"), SSE2, AVX2 and AVX-512 on x86-64 — and the best one this
+ *   CPU supports is picked on first use. Every one returns the same bits,
+ *   on every machine: they do the same IEEE operations in the same order,
+ *   never fused. The environment variable LIBSAMPLE_ISA=scalar|sse2|avx2|
+ *   avx512, read once, caps the choice (a level the CPU lacks falls back to
+ *   the best below it); sample_isa_name() says what runs.
  */
 #ifndef SAMPLE_SAMPLE_H
 #define SAMPLE_SAMPLE_H
@@ -308,6 +319,12 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *samp
 /* One query; a thin wrapper over sample_batch(). */
 sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,
                          const sample_query *query, float rgba[4]);
+
+/* The instruction set sampling runs on in this process (section 6):
+ * "scalar", "sse2", "avx2" or "avx512". Static string; decides the choice
+ * if no sampling has yet. For tools to print what ran; results do not
+ * depend on it. */
+const char *sample_isa_name(void);
 
 /* ---- Names ------------------------------------------------------------- */
 
