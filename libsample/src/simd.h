@@ -1,7 +1,11 @@
 /*
  * A thin 4-float vector layer (stb style): one RGBA texel or result per
  * vector. SSE2 where the compiler targets it (every x86-64), plain structs
- * otherwise or when SAMPLE_NO_SIMD is defined.
+ * otherwise or when SAMPLE_NO_SIMD is defined. The fast path (fast_gl.c) is
+ * compiled once per instruction set with this header (isa.c): plain structs
+ * (the portable "scalar" kernels), SSE2, and SSE2 code re-encoded with VEX
+ * (-mavx2, -mavx512*) plus F16C's half conversion; the operations are the
+ * same lane-wise IEEE ones in every build.
  *
  * Only IEEE-exact lane-wise operations are offered (add, sub, mul, div,
  * exact int → float): with fused multiply-add off (-ffp-contract=off, and no
@@ -19,6 +23,9 @@
 #if defined(__SSE2__) && !defined(SAMPLE_NO_SIMD)
 #define SAMPLE_SIMD_SSE2 1
 #include <emmintrin.h>
+#if defined(__F16C__)
+#include <immintrin.h>
+#endif
 
 typedef __m128 v4f;
 static inline v4f v4_load(const float *p) { return _mm_loadu_ps(p); }
@@ -39,6 +46,30 @@ static inline v4f v4_from_u8x4(const unsigned char *p)
     x = _mm_unpacklo_epi16(_mm_unpacklo_epi8(x, z), z);
     return _mm_cvtepi32_ps(x);
 }
+#if defined(__F16C__)
+/* Four IEEE halves (8 bytes at p) widened exactly: the same bits as
+ * sample_half_to_float on each lane. In the builds that have F16C (the
+ * AVX2 and AVX-512 kernels, isa.c) VCVTPH2PS does the work: every finite
+ * half, subnormals included, is exact in float, and the instruction
+ * ignores MXCSR.DAZ (Intel SDM vol. 2, VCVTPH2PS: "the correct normal
+ * result is returned. MXCSR.DAZ is ignored"). Only NaNs need care: it
+ * returns a signalling NaN quieted (bit 22 set), while
+ * sample_half_to_float moves the payload as it is. The quiet bit is
+ * cleared again on the lanes whose half was a signalling NaN (exponent all
+ * ones, mantissa ≠ 0, half bit 9 clear), with a few integer operations.
+ * tests/test_isa.c checks all 65536 halves against sample_half_to_float
+ * in every build. */
+static inline v4f v4_from_f16x4(const unsigned char *p)
+{
+    __m128i h = _mm_loadl_epi64((const __m128i *)(const void *)p);
+    __m128i h32 = _mm_unpacklo_epi16(h, _mm_setzero_si128());
+    __m128i nan = _mm_cmpgt_epi32(_mm_and_si128(h32, _mm_set1_epi32(0x7fff)), _mm_set1_epi32(0x7c00));
+    /* Bit 22 on the NaN lanes whose half bit 9 (moved by 13, as the
+     * payload is) is 0. */
+    __m128i clear = _mm_andnot_si128(_mm_slli_epi32(h32, 13), _mm_and_si128(nan, _mm_set1_epi32(0x400000)));
+    return _mm_castsi128_ps(_mm_andnot_si128(clear, _mm_castps_si128(_mm_cvtph_ps(h))));
+}
+#else
 /* Four IEEE halves (8 bytes at p) widened exactly: the same bits as
  * sample_half_to_float on each lane. Normal, inf and NaN halves move their
  * exponent and mantissa into place and rebias the exponent (+112, or +224
@@ -60,6 +91,7 @@ static inline v4f v4_from_f16x4(const unsigned char *p)
     bits = _mm_or_si128(_mm_andnot_si128(issub, bits), _mm_and_si128(issub, _mm_castps_si128(sub)));
     return _mm_castsi128_ps(_mm_or_si128(bits, sign));
 }
+#endif /* __F16C__ */
 #else
 typedef struct v4f {
     float v[4];
