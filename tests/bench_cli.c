@@ -4,7 +4,8 @@
  * format, filter, engine, thread count) asked for, positive speeds, the
  * exact texel counts of the filters whose cost is fixed (nearest 1,
  * bilinear 4, bicubic 16 on every query), and ratios exactly where an OIIO
- * twin exists. No speed is asserted.
+ * twin exists; the instruction set it ran on (LIBSAMPLE_ISA) in the table
+ * and the JSON. No speed is asserted.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -82,6 +83,9 @@ static void tiny_json(void)
     rc = run("--quick --size 32 --queries 300 --runs 1 --threads 2 --batch 64 "
              "--sets magnify,plane --formats float,srgb8 --json r.json");
     CHECK(rc == 0, "tiny run exits 0 (got %d)", rc);
+    text = slurp("out.txt");
+    CHECK(text && strstr(text, "\nlibsample ISA: ") != NULL, "the table names the instruction set");
+    free(text);
     text = slurp("r.json");
     CHECK(text != NULL, "r.json written");
     if (!text) return;
@@ -127,8 +131,12 @@ static void tiny_json(void)
     CHECK(n == 2 * 2 * 12 * 2, "result count %d", n);
     cJSON_Delete(root);
 
+    /* LIBSAMPLE_ISA reaches the library and the record ("scalar": every
+     * build has it). */
+    setenv("LIBSAMPLE_ISA", "scalar", 1);
     rc = run("--quick --size 32 --queries 50 --runs 1 --threads 1 --no-oiio --sets minify "
              "--formats half --filters trilinear,ewa --scalar --json -");
+    unsetenv("LIBSAMPLE_ISA");
     CHECK(rc == 0, "--json - exits 0");
     text = slurp("out.txt");
     root = text ? cJSON_Parse(text) : NULL;
@@ -136,6 +144,7 @@ static void tiny_json(void)
     res = root ? cJSON_GetObjectItemCaseSensitive(root, "results") : NULL;
     CHECK(cJSON_GetArraySize(res) == 2, "two filters, one thread count, no OIIO");
     CHECK(cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(root, "scalar_path")), "--scalar recorded");
+    CHECK(strcmp(str(root, "isa"), "scalar") == 0, "LIBSAMPLE_ISA=scalar recorded: \"%s\"", str(root, "isa"));
     cJSON_Delete(root);
     free(text);
 }

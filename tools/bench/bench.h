@@ -126,6 +126,7 @@ typedef struct bench_report {
     size_t queries, batch;
     const char *command; /* the command line, for the record */
     int scalar;          /* 1: libsample ran with SAMPLE_OPT_SCALAR_PATH */
+    const char *isa;     /* sample_isa_name(): the instruction set it ran on */
     double load[2];      /* 1-minute load average before and after (< 0: unknown) */
 } bench_report;
 

@@ -365,6 +365,7 @@ int cmd_bench(int argc, char **argv)
     if (rc == 0) {
         bench_report r;
         r.scalar = b.o.scalar;
+        r.isa = sample_isa_name();
         r.load[0] = load[0];
         r.load[1] = load[1];
         command = join_args(argc, argv);

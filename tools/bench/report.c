@@ -56,9 +56,11 @@ void bench_print_table(const bench_report *r)
            "median [min-max] of %d runs after a warm-up, in millions of samples per second.\n"
            "texels = texels read per sample (libsample's sample_stats); ratio = ours / OIIO.\n"
            "1-minute load average: %.2f before, %.2f after (other processes skew timings).\n"
-           "libsample path: %s.\n",
+           "libsample path: %s.\n"
+           "libsample ISA: %s.\n",
            r->size, r->size, r->queries, r->batch, r->runs, r->load[0], r->load[1],
-           r->scalar ? "general (SAMPLE_OPT_SCALAR_PATH)" : "default (fast path where it applies)");
+           r->scalar ? "general (SAMPLE_OPT_SCALAR_PATH)" : "default (fast path where it applies)",
+           r->isa);
     for (set = 0; set < BENCH_SET_COUNT; ++set)
         for (fmt = 0; fmt < BENCH_FMT_COUNT; ++fmt) {
             int any = 0;
@@ -150,10 +152,11 @@ int bench_write_json(const bench_report *r, const char *path)
             SAMPLE_VERSION_STRING);
     bench_json_string(f, r->command);
     fprintf(f, ",\n  \"size\": %d, \"queries\": %zu, \"batch\": %zu, \"runs\": %d, "
-               "\"threads_max\": %d, \"scalar_path\": %s,\n"
-               "  \"load_before\": %.3g, \"load_after\": %.3g,\n  \"results\": [",
-            r->size, r->queries, r->batch, r->runs, r->threads_max, r->scalar ? "true" : "false",
-            r->load[0], r->load[1]);
+               "\"threads_max\": %d, \"scalar_path\": %s, \"isa\": ",
+            r->size, r->queries, r->batch, r->runs, r->threads_max, r->scalar ? "true" : "false");
+    bench_json_string(f, r->isa);
+    fprintf(f, ",\n  \"load_before\": %.3g, \"load_after\": %.3g,\n  \"results\": [", r->load[0],
+            r->load[1]);
     json_results(f, r);
     fprintf(f, "\n  ]\n}\n");
     if (fclose(f) != 0) {
