@@ -3,8 +3,10 @@
  * this CPU runs decodes all 65536 half bit patterns to exactly
  * sample_half_to_float's bits (the AVX2 and AVX-512 builds through F16C's
  * VCVTPH2PS, simd.h), with 1–4 channels, also with denormals-are-zero and
- * flush-to-zero set; LIBSAMPLE_ISA and sample_isa_force choose as
- * documented. Identity of the filters across builds: test_fastpath.
+ * flush-to-zero set; NaN texels filter to NaN in every build where they do
+ * in the scalar one (only a NaN's payload may differ); LIBSAMPLE_ISA and
+ * sample_isa_force choose as documented. Identity of the filters across
+ * builds: test_fastpath.
  */
 #define _POSIX_C_SOURCE 200809L /* setenv, unsetenv: before any system header */
 #include "check.h"
@@ -69,6 +71,101 @@ static void test_half_decode_exhaustive(void)
     CHECK(sample_isa_force(NULL) == 0, "automatic choice");
 }
 
+/* Texels that are NaN, with payloads: every build returns NaN exactly where
+ * the scalar build does and the same bits everywhere else, but which
+ * NaN's payload a sum of two NaNs carries is the compiler's choice of
+ * operand order (IEEE 754 §6.2.3 leaves it open; C lets + and * commute),
+ * and the plain-struct and SSE builds do choose differently. For every
+ * non-NaN operand the commuted operation is exact, so that is the only
+ * difference there can be. */
+static uint64_t rng = 0x9E3779B97F4A7C15ull;
+static uint32_t rnd(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (uint32_t)rng;
+}
+
+enum { NQ = 400 };
+
+static int same_or_both_nan(const float *x, const float *y, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k)
+        if (bits_of(x[k]) != bits_of(y[k]) && !(isnan(x[k]) && isnan(y[k]))) return 0;
+    return 1;
+}
+
+static void test_nan_texels(void)
+{
+    static const sample_filter filters[4] = {SAMPLE_NEAREST, SAMPLE_LINEAR, SAMPLE_CUBIC,
+                                             SAMPLE_LINEAR_MIPMAP_LINEAR};
+    static sample_query q[NQ];
+    static float ref[3][NQ * 4], got[3][NQ * 4];
+    int f, nc, fl, k, i;
+    for (f = 0; f < 2; ++f)
+        for (nc = 1; nc <= 4; ++nc) {
+            const int w = 17, h = 9;
+            size_t n = (size_t)w * h * nc, e;
+            unsigned char *data = malloc(n * 4);
+            sample_image im;
+            sample_mip_params mp;
+            sample_texture *tex = NULL;
+            for (e = 0; e < n; ++e) {
+                /* One texel in four a NaN of random sign and payload. */
+                int nan = rnd() % 4 == 0;
+                if (f == 0) {
+                    uint32_t b = nan ? 0x7f800001u | (rnd() & 0x807fffffu) : 0x3f000000u + (rnd() & 0xffffu);
+                    memcpy(data + 4 * e, &b, 4);
+                } else {
+                    uint16_t b = (uint16_t)(nan ? 0x7c01u | (rnd() & 0x83ffu) : 0x3800u + (rnd() & 0x3ffu));
+                    memcpy(data + 2 * e, &b, 2);
+                }
+            }
+            im.width = w;
+            im.height = h;
+            im.channels = nc;
+            im.format = f == 0 ? SAMPLE_FORMAT_F32 : SAMPLE_FORMAT_F16;
+            im.data = data;
+            im.row_stride = 0;
+            sample_mip_params_init(&mp);
+            CHECK(sample_texture_create(&im, &mp, &tex, NULL) == SAMPLE_OK, "create");
+            free(data);
+            if (!tex) continue;
+            for (fl = 0; fl < 4; ++fl) {
+                sample_sampler s;
+                sample_sampler_init(&s);
+                s.min_filter = filters[fl];
+                s.mag_filter = fl < 3 ? filters[fl] : SAMPLE_LINEAR;
+                for (k = 0; k < NQ; ++k) {
+                    q[k].s = (float)(rnd() % 20000) / 18000.0f - 0.05f;
+                    q[k].t = (float)(rnd() % 20000) / 18000.0f - 0.05f;
+                    q[k].dsdx = q[k].dtdy = (float)(rnd() % 100) / 400.0f;
+                    q[k].dtdx = q[k].dsdy = 0.0f;
+                }
+                for (i = 0; i < SAMPLE_ISA_COUNT; ++i) {
+                    sample_batch_args a;
+                    if (sample_isa_force(test_isa_names[i]) != 0) continue;
+                    memset(&a, 0, sizeof a);
+                    a.count = NQ;
+                    a.queries = q;
+                    a.rgba = i ? got[0] : ref[0];
+                    a.drgba_ds = i ? got[1] : ref[1];
+                    a.drgba_dt = i ? got[2] : ref[2];
+                    CHECK(sample_batch(tex, &s, &a) == SAMPLE_OK, "sample_batch");
+                    if (i)
+                        for (k = 0; k < 3; ++k)
+                            CHECK(same_or_both_nan(got[k], ref[k], NQ * 4),
+                                  "%s vs scalar, format %d, %d channels, filter %d, output %d",
+                                  test_isa_names[i], f, nc, (int)filters[fl], k);
+                }
+            }
+            sample_texture_destroy(tex);
+        }
+    CHECK(sample_isa_force(NULL) == 0, "automatic choice");
+}
+
 static int usable(const char *name)
 {
     const char *was = sample_isa_name();
@@ -111,6 +208,7 @@ static void test_choice(void)
 int main(void)
 {
     RUN(test_half_decode_exhaustive);
+    RUN(test_nan_texels);
     RUN(test_choice);
     return check_finish();
 }
