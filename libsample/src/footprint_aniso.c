@@ -93,11 +93,51 @@ void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double 
     if (a->f == 0.0f) a->l1 = a->l0;
 }
 
+/* Ask for the lines the probes of one level will read, so that their
+ * misses overlap. Only a hint, so the probes' texel positions are stepped
+ * along the major axis in float (no per-probe division or double), and a
+ * line asked for by the previous probe is not asked for again: a second
+ * prefetch of a line still takes a slot in the miss queue. Positions are
+ * clamped into the level, so no invalid address is formed. Inline: GCC
+ * deletes calls to a function whose only effect is a prefetch
+ * (doc/performance.md). */
+SAMPLE_FORCE_INLINE void prefetch_probes(const sample_ctx *c, int lv, float s0, float t0, float s1, float t1, int n)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    const size_t tb = c->tex->texel_bytes;
+    float u = s0 * (float)L->w - 0.5f, v = t0 * (float)L->h - 0.5f;
+    float du = n > 1 ? (s1 - s0) * (float)L->w / (float)(n - 1) : 0.0f;
+    float dv = n > 1 ? (t1 - t0) * (float)L->h / (float)(n - 1) : 0.0f;
+    uintptr_t last0 = 0, last1 = 0;
+    int k;
+    for (k = 0; k < n; ++k, u += du, v += dv) {
+        int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
+        int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
+        const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
+        /* Texels i and i + 1 may straddle a line. */
+        size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
+        uintptr_t a0 = (uintptr_t)p >> 6, a1 = (uintptr_t)(p + e) >> 6;
+        if (a0 != last0 && a0 != last1) SAMPLE_PREFETCH(p);
+        if (a1 != a0 && a1 != last0 && a1 != last1) SAMPLE_PREFETCH(p + e);
+        if (j + 1 < L->h) {
+            SAMPLE_PREFETCH(p + L->stride);
+            if (a1 != a0) SAMPLE_PREFETCH(p + L->stride + e);
+        }
+        last0 = a0;
+        last1 = a1;
+    }
+}
+
 void fp_aniso_plan(const sample_ctx *c, const sample_query *q, const double rho2[2], double log2_rho,
                    float call_bias, fp_aniso_setup *a)
 {
+    float s0, t0, s1, t1;
     fp_aniso_setup_of(c, q, rho2, log2_rho, call_bias, a);
-    fp_aniso_prefetch(c, q, a);
+    fp_aniso_probe(q, a, 1, &s0, &t0);
+    fp_aniso_probe(q, a, a->n, &s1, &t1);
+    prefetch_probes(c, a->l0, s0, t0, s1, t1, a->n);
+    /* On the coarser level the probes are half as far apart in texels. */
+    if (a->l1 != a->l0) prefetch_probes(c, a->l1, s0, t0, s1, t1, a->n / 2 + 1);
 }
 
 uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,

@@ -705,18 +705,6 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, floa
     }
 }
 
-/* Ask for every anisotropic probe's rows, so that their misses overlap. */
-SAMPLE_FORCE_INLINE void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a)
-{
-    int i;
-    for (i = 1; i <= a->n; ++i) {
-        float s, t;
-        fp_aniso_probe(q, a, i, &s, &t);
-        ctx_prefetch_bilinear(c, a->l0, s, t);
-        if (a->l1 != a->l0) ctx_prefetch_bilinear(c, a->l1, s, t);
-    }
-}
-
 /* One level of a footprint filter: when `count_only`, returns (as a double,
  * +inf if unbounded) how many texels the level would visit, reading none;
  * otherwise accumulates into `acc` and returns the texels read. */
