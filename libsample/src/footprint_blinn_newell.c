@@ -22,6 +22,18 @@
  */
 #include "internal.h"
 
+/* One level's footprint in texels of that level. fp_run visits each level
+ * twice (count, then accumulate); the second visit reuses the first's
+ * arithmetic (as EWA's memo, doc/performance.md). */
+typedef struct bn_level_geom {
+    int lv;   /* −1: empty */
+    int fail; /* the level cannot be filtered (unbounded or singular) */
+    double u0, v0, ku, kv, jlo, nrows;
+    double M[2][2];    /* parallelogram: J′⁻¹ (texel offset → screen) */
+    double G[3][3];    /* quad: the pulled-back inverse homography */
+    double V[4][2];    /* quad: the widened support's corners */
+} bn_level_geom;
+
 typedef struct bn_geom {
     float s, t;      /* centre of the footprint (normalized) */
     double J[2][2];  /* rows (s, t), columns (x, y); one pixel, normalized */
@@ -29,6 +41,7 @@ typedef struct bn_geom {
      * the corners (normalized, relative to the centre; w = 1 at (0, 0)),
      * and the range [wlo, whi] of w on the square (its corner values). */
     double H[3][3], wlo, whi;
+    bn_level_geom *memo; /* two entries, by the level's parity */
 } bn_geom;
 
 /* w = (1 − |x|)(1 − |y|) on the open square and its gradient; at a crease
@@ -71,19 +84,20 @@ static double row_span(double u0, double lo, double hi, double *ilo)
 
 /* ---- Parallelogram (Jacobian) footprint --------------------------------- */
 
-static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc,
-                              int count_only)
+static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
-    const bn_geom *g = (const bn_geom *)gp;
     const struct sample_level *L = &c->tex->level[lv];
-    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
-    double u0, v0, J[2][2], Jw[2][2], M[2][2], s0, s1, ext, jlo, nrows, total = 0.0, ku, kv;
-    int fs, ft, r, i, k;
+    double J[2][2], Jw[2][2], s0, s1, ext;
+    int i, k, fs, ft;
     fp_svd d;
-    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
-    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
+    e->lv = lv;
+    e->fail = 0;
+    fp_center(c, lv, g->s, g->t, &e->u0, &e->v0, &fs, &ft);
     fp_level_jacobian(c, lv, g->J, fs, ft, J);
+    /* ∂u0/∂s (negative on a mirrored axis). */
+    e->ku = fs ? -(double)L->w : (double)L->w;
+    e->kv = ft ? -(double)L->h : (double)L->h;
     fp_svd2(J[0][0], J[0][1], J[1][0], J[1][1], &d);
     fp_clamp_eccentricity(&d);
     /* Unit-variance widening (file comment); M = J′⁻¹ = V·diag(1/σ′)·Uᵀ. */
@@ -91,15 +105,31 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     s1 = sqrt(d.s[1] * d.s[1] + 1.0);
     fp_svd_compose(&d, s0, s1, Jw);
     for (i = 0; i < 2; ++i)
-        for (k = 0; k < 2; ++k) M[i][k] = d.V[i][0] * d.U[k][0] / s0 + d.V[i][1] * d.U[k][1] / s1;
-    /* ∂u0/∂s (negative on a mirrored axis). */
-    ku = fs ? -(double)L->w : (double)L->w;
-    kv = ft ? -(double)L->h : (double)L->h;
-
+        for (k = 0; k < 2; ++k) e->M[i][k] = d.V[i][0] * d.U[k][0] / s0 + d.V[i][1] * d.U[k][1] / s1;
     /* Rows: the parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v. */
     ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
-    jlo = ceil(v0 - ext);
-    nrows = floor(v0 + ext) - jlo + 1.0;
+    e->jlo = ceil(e->v0 - ext);
+    e->nrows = floor(e->v0 + ext) - e->jlo + 1.0;
+}
+
+static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc,
+                              int count_only)
+{
+    const bn_geom *g = (const bn_geom *)gp;
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
+    bn_level_geom *e = &g->memo[lv & 1];
+    double u0, v0, M[2][2], jlo, nrows, total = 0.0, ku, kv;
+    int r, k;
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
+
+    if (e->lv != lv) bn_affine_setup(c, g, lv, e);
+    u0 = e->u0;
+    v0 = e->v0;
+    ku = e->ku;
+    kv = e->kv;
+    memcpy(M, e->M, sizeof M);
+    jlo = e->jlo;
+    nrows = e->nrows;
     if (!(nrows <= cap)) return INFINITY;
     for (r = 0; r < (int)nrows; ++r) {
         double j = jlo + r, dv = j - v0, lo = -INFINITY, hi = INFINITY, ilo = 0.0, ncol;
@@ -148,20 +178,18 @@ static void hull_row(double H[4][2], double dv, double *lo, double *hi)
         }
 }
 
-static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
+static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
-    const bn_geom *g = (const bn_geom *)gp;
     const struct sample_level *L = &c->tex->level[lv];
-    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
-    double u0, v0, ku, kv, H[3][3], Gh[3][3], G[3][3], det, T[2][2], Ti[2][2], V[4][2], vmin, vmax, jlo, nrows;
-    double total = 0.0;
-    int fs, ft, r, k, i, area;
+    double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax;
+    int fs, ft, k, i;
     fp_svd sv;
-    float tx[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
-    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
-    ku = fs ? -(double)L->w : (double)L->w;
-    kv = ft ? -(double)L->h : (double)L->h;
+    e->lv = lv;
+    e->fail = 1;
+    fp_center(c, lv, g->s, g->t, &e->u0, &e->v0, &fs, &ft);
+    ku = e->ku = fs ? -(double)L->w : (double)L->w;
+    kv = e->kv = ft ? -(double)L->h : (double)L->h;
     /* The homography in texels of this level: rows (u, v) scaled, w kept. */
     for (k = 0; k < 3; ++k) {
         H[0][k] = g->H[0][k] * ku;
@@ -179,7 +207,7 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
      * nonzero, so w stays within its range on the square. σ > 0: the
      * caller sends only projective, not too eccentric quads here. */
     fp_svd2(g->J[0][0] * ku, g->J[0][1] * ku, g->J[1][0] * kv, g->J[1][1] * kv, &sv);
-    if (!(sv.s[1] > 0.0)) return INFINITY;
+    if (!(sv.s[1] > 0.0)) return;
     for (i = 0; i < 2; ++i)
         for (k = 0; k < 2; ++k) {
             double f0 = sqrt(sv.s[0] * sv.s[0] + 1.0) / sv.s[0], f1 = sqrt(sv.s[1] * sv.s[1] + 1.0) / sv.s[1];
@@ -197,14 +225,14 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     Gh[2][1] = H[0][1] * H[2][0] - H[0][0] * H[2][1];
     Gh[2][2] = H[0][0] * H[1][1] - H[0][1] * H[1][0];
     det = H[0][0] * Gh[0][0] + H[0][1] * Gh[1][0] + H[0][2] * Gh[2][0];
-    if (!(det != 0.0) || !isfinite(det)) return INFINITY;
+    if (!(det != 0.0) || !isfinite(det)) return;
     /* G = H⁻¹·[T, c0 − T·c0; 0 0 1]: one 3 × 3 product per texel. */
     for (i = 0; i < 3; ++i) {
         double a0 = Gh[i][0] / det, a1 = Gh[i][1] / det, a2 = Gh[i][2] / det;
-        G[i][0] = a0 * T[0][0] + a1 * T[1][0];
-        G[i][1] = a0 * T[0][1] + a1 * T[1][1];
-        G[i][2] = a0 * (H[0][2] - T[0][0] * H[0][2] - T[0][1] * H[1][2]) +
-                  a1 * (H[1][2] - T[1][0] * H[0][2] - T[1][1] * H[1][2]) + a2;
+        e->G[i][0] = a0 * T[0][0] + a1 * T[1][0];
+        e->G[i][1] = a0 * T[0][1] + a1 * T[1][1];
+        e->G[i][2] = a0 * (H[0][2] - T[0][0] * H[0][2] - T[0][1] * H[1][2]) +
+                     a1 * (H[1][2] - T[1][0] * H[0][2] - T[1][1] * H[1][2]) + a2;
     }
     /* Support: c0 + T⁻¹·(P_k − c0), P_k = H(corner k) (w = λ_k > 0). */
     vmin = INFINITY;
@@ -214,13 +242,36 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
         double w = H[2][0] * x + H[2][1] * y + H[2][2];
         double pu = (H[0][0] * x + H[0][1] * y + H[0][2]) / w - H[0][2];
         double pv = (H[1][0] * x + H[1][1] * y + H[1][2]) / w - H[1][2];
-        V[k][0] = H[0][2] + Ti[0][0] * pu + Ti[0][1] * pv;
-        V[k][1] = H[1][2] + Ti[1][0] * pu + Ti[1][1] * pv;
-        vmin = fmin(vmin, V[k][1]);
-        vmax = fmax(vmax, V[k][1]);
+        e->V[k][0] = H[0][2] + Ti[0][0] * pu + Ti[0][1] * pv;
+        e->V[k][1] = H[1][2] + Ti[1][0] * pu + Ti[1][1] * pv;
+        vmin = fmin(vmin, e->V[k][1]);
+        vmax = fmax(vmax, e->V[k][1]);
     }
-    jlo = ceil(v0 + vmin);
-    nrows = floor(v0 + vmax) - jlo + 1.0;
+    e->jlo = ceil(e->v0 + vmin);
+    e->nrows = floor(e->v0 + vmax) - e->jlo + 1.0;
+    e->fail = 0;
+}
+
+static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
+{
+    const bn_geom *g = (const bn_geom *)gp;
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
+    bn_level_geom *e = &g->memo[lv & 1];
+    double u0, v0, ku, kv, G[3][3], V[4][2], jlo, nrows;
+    double total = 0.0;
+    int r, k, area;
+    float tx[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
+
+    if (e->lv != lv) bn_quad_setup(c, g, lv, e);
+    if (e->fail) return INFINITY;
+    u0 = e->u0;
+    v0 = e->v0;
+    ku = e->ku;
+    kv = e->kv;
+    memcpy(G, e->G, sizeof G);
+    memcpy(V, e->V, sizeof V);
+    jlo = e->jlo;
+    nrows = e->nrows;
     if (!(nrows <= cap)) return INFINITY;
     /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
      * ∫ pyr(x, y)·T(H(x, y)) dx dy = ∫ pyr(H⁻¹(u))·T(u) / |det DH| du, so
@@ -358,8 +409,11 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
 {
     const struct sample_level *B = &c->tex->level[c->base];
     bn_geom g;
+    bn_level_geom memo[2];
     fp_svd d;
     int quad = 0, k;
+    memo[0].lv = memo[1].lv = -1;
+    g.memo = memo;
     g.s = q->s;
     g.t = q->t;
     fp_query_jacobian(q, g.J);
