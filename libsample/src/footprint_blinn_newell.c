@@ -41,6 +41,7 @@ typedef struct bn_geom {
      * the corners (normalized, relative to the centre; w = 1 at (0, 0)),
      * and the range [wlo, whi] of w on the square (its corner values). */
     double H[3][3], wlo, whi;
+    fp_shape base;       /* of J on the base level (the level choice's) */
     bn_level_geom *memo; /* two entries, by the level's parity */
 } bn_geom;
 
@@ -87,9 +88,9 @@ static double row_span(double u0, double lo, double hi, double *ilo)
 static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double J[2][2], Jw[2][2], s0, s1, ext;
-    int i, k, fs, ft;
-    fp_svd d;
+    double J[2][2], Jw[2][2], det, ext;
+    int fs, ft;
+    fp_shape d;
 
     e->lv = lv;
     e->fail = 0;
@@ -98,14 +99,14 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     /* ∂u0/∂s (negative on a mirrored axis). */
     e->ku = fs ? -(double)L->w : (double)L->w;
     e->kv = ft ? -(double)L->h : (double)L->h;
-    fp_svd2(J[0][0], J[0][1], J[1][0], J[1][1], &d);
-    fp_clamp_eccentricity(&d);
-    /* Unit-variance widening (file comment); M = J′⁻¹ = V·diag(1/σ′)·Uᵀ. */
-    s0 = sqrt(d.s[0] * d.s[0] + 1.0);
-    s1 = sqrt(d.s[1] * d.s[1] + 1.0);
-    fp_svd_compose(&d, s0, s1, Jw);
-    for (i = 0; i < 2; ++i)
-        for (k = 0; k < 2; ++k) e->M[i][k] = d.V[i][0] * d.U[k][0] / s0 + d.V[i][1] * d.U[k][1] / s1;
+    /* Unit-variance widening (file comment): J′ = U·diag(√(σ² + 1))·Vᵀ,
+     * M = J′⁻¹ by its adjugate; det J′ = ±√(σ0² + 1)·√(σ1² + 1) ≠ 0. */
+    fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
+    det = fp_shape_reshape(&d, 1.0, Jw);
+    e->M[0][0] = Jw[1][1] / det;
+    e->M[0][1] = -Jw[0][1] / det;
+    e->M[1][0] = -Jw[1][0] / det;
+    e->M[1][1] = Jw[0][0] / det;
     /* Rows: the parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v. */
     ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
     e->jlo = ceil(e->v0 - ext);
@@ -410,7 +411,7 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
     const struct sample_level *B = &c->tex->level[c->base];
     bn_geom g;
     bn_level_geom memo[2];
-    fp_svd d;
+    double Jb[2][2];
     int quad = 0, k;
     memo[0].lv = memo[1].lv = -1;
     g.memo = memo;
@@ -447,9 +448,12 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
     }
     /* Level choice from the minor semi-axis in base texels (after the
      * eccentricity clamp, which also decides whether a quad stays a quad). */
-    fp_svd2(g.J[0][0] * B->w, g.J[0][1] * B->w, g.J[1][0] * B->h, g.J[1][1] * B->h, &d);
-    if (quad == 1 && !(d.s[1] * FP_MAX_ECCENTRICITY >= d.s[0] && d.s[1] > 0.0)) quad = 0;
-    fp_clamp_eccentricity(&d);
-    return fp_run(c, &g, quad == 1 ? bn_quad_level : bn_affine_level, d.s[1], g.s, g.t, call_bias, out,
+    Jb[0][0] = g.J[0][0] * B->w;
+    Jb[0][1] = g.J[0][1] * B->w;
+    Jb[1][0] = g.J[1][0] * B->h;
+    Jb[1][1] = g.J[1][1] * B->h;
+    fp_shape_of(Jb, &g.base);
+    if (quad == 1 && (g.base.clamped || !(g.base.s[1] > 0.0))) quad = 0;
+    return fp_run(c, &g, quad == 1 ? bn_quad_level : bn_affine_level, g.base.s[1], g.s, g.t, call_bias, out,
                   dds, ddt, st);
 }

@@ -30,20 +30,73 @@ void fp_svd2(double a, double b, double c, double d, fp_svd *o)
     }
 }
 
-void fp_svd_compose(const fp_svd *d, double s0, double s1, double m[2][2])
+void fp_shape_of(double J[2][2], fp_shape *o)
 {
-    int i, j;
-    for (i = 0; i < 2; ++i)
-        for (j = 0; j < 2; ++j) m[i][j] = d->U[i][0] * s0 * d->V[j][0] + d->U[i][1] * s1 * d->V[j][1];
+    /* The same E, F, G, H, Q, R as fp_svd2, so σ (and the level choice made
+     * from it) is fp_svd2's to the bit. */
+    o->E = 0.5 * (J[0][0] + J[1][1]);
+    o->F = 0.5 * (J[0][0] - J[1][1]);
+    o->G = 0.5 * (J[1][0] + J[0][1]);
+    o->H = 0.5 * (J[1][0] - J[0][1]);
+    o->Q = hypot(o->E, o->H);
+    o->R = hypot(o->F, o->G);
+    fp_shape_finish(o);
 }
 
-void fp_clamp_eccentricity(fp_svd *d)
+void fp_shape_finish(fp_shape *o)
 {
-    /* Lengthen the minor axis rather than shorten the major one (pbrt's
-     * "clamp ellipse eccentricity"): the filter may blur across, never alias
-     * along. */
-    double lo = d->s[0] / FP_MAX_ECCENTRICITY;
-    if (d->s[1] < lo) d->s[1] = lo;
+    double sy = o->Q - o->R, lo;
+    o->s[0] = o->Q + o->R;
+    o->s[1] = fabs(sy);
+    /* Eccentricity clamp: lengthen the minor axis rather than shorten the
+     * major one (pbrt's "clamp ellipse eccentricity"): the filter may blur
+     * across, never alias along. */
+    lo = o->s[0] / FP_MAX_ECCENTRICITY;
+    o->clamped = o->s[1] < lo;
+    if (o->clamped) o->s[1] = lo;
+}
+
+void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o)
+{
+    /* Scaling J by a power of two scales E … H exactly, and Q, R and σ with
+     * them (the hypot calls are the costly part, not these products). */
+    o->E = 0.5 * (J[0][0] + J[1][1]);
+    o->F = 0.5 * (J[0][0] - J[1][1]);
+    o->G = 0.5 * (J[1][0] + J[0][1]);
+    o->H = 0.5 * (J[1][0] - J[0][1]);
+    o->Q = b->Q * r;
+    o->R = b->R * r;
+    fp_shape_finish(o);
+}
+
+double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2])
+{
+    /* J = R(φ)·diag(σ0, ±σ1)·R(θ) (fp_svd2) = Q·R(φ + θ) + R·Ref(φ − θ),
+     * with Q·R(φ + θ) = [[E, −H], [H, E]] and R·Ref(φ − θ) = [[F, G], [G, −F]]
+     * (Blinn, "Consider the lowly 2×2 matrix", 1996). The same rotations
+     * with new singular values t0, ±t1 are then
+     *   J″ = (t0 ± t1)/(2Q)·[[E, −H], [H, E]] + (t0 ∓ t1)/(2R)·[[F, G], [G, −F]]
+     * (upper signs where σ1's sign is +, i.e. Q ≥ R): no angles, no trig.
+     * The coefficient over the smaller of Q, R is written without the
+     * cancellation of t0 − t1: t0² − t1² = σ0² − σ1c², which is 4QR when the
+     * clamp did not act (σ0 ± σ1 = 2·max, 2·min). */
+    double sx = d->s[0], s1 = d->s[1], t0 = sqrt(sx * sx + wid), t1 = sqrt(s1 * s1 + wid);
+    double big = d->Q >= d->R ? d->Q : d->R, small = d->Q >= d->R ? d->R : d->Q, kb, ks, kc, ka;
+    if (!(big > 0.0)) { /* J = 0: fp_svd2 gives U = V = I */
+        out[0][0] = t0;
+        out[0][1] = out[1][0] = 0.0;
+        out[1][1] = t1;
+        return t0 * t1;
+    }
+    kb = (t0 + t1) / (2.0 * big);
+    ks = d->clamped ? (sx - s1) * (sx + s1) / ((t0 + t1) * 2.0 * small) : 2.0 * big / (t0 + t1);
+    kc = d->Q >= d->R ? kb : ks;
+    ka = d->Q >= d->R ? ks : kb;
+    out[0][0] = kc * d->E + ka * d->F;
+    out[0][1] = ka * d->G - kc * d->H;
+    out[1][0] = kc * d->H + ka * d->G;
+    out[1][1] = kc * d->E - ka * d->F;
+    return d->Q >= d->R ? t0 * t1 : -(t0 * t1);
 }
 
 void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
@@ -55,6 +108,21 @@ void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int fl
     out[0][1] = J[0][1] * ku;
     out[1][0] = J[1][0] * kv;
     out[1][1] = J[1][1] * kv;
+}
+
+void fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[2][2], int flipped,
+                    fp_shape *o)
+{
+    const struct sample_level *L = &c->tex->level[lv], *B = &c->tex->level[c->base];
+    int q = L->w > 0 ? B->w / L->w : 0;
+    /* A level that halves both axes k times has the base Jacobian times
+     * 2^−k (the same singular vectors, σ scaled); a mirror-clamp flip or an
+     * axis that stopped halving (non-power-of-two sizes, 1 × n levels)
+     * takes the full computation. */
+    if (!flipped && q > 0 && (q & (q - 1)) == 0 && B->w == L->w * q && B->h == L->h * q)
+        fp_shape_scaled(base, J, 1.0 / q, o);
+    else
+        fp_shape_of(J, o);
 }
 
 void fp_accum_init(fp_accum *a) { memset(a, 0, sizeof *a); }

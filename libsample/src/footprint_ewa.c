@@ -67,6 +67,7 @@ typedef struct ewa_level_geom {
 typedef struct ewa_geom {
     float s, t;
     double J[2][2];       /* rows (s, t), columns (x, y); one pixel, normalized */
+    fp_shape base;        /* of J on the base level (the level choice's) */
     ewa_level_geom *memo; /* two entries, by the level's parity */
 } ewa_geom;
 
@@ -74,16 +75,16 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
 {
     const struct sample_level *L = &c->tex->level[lv];
     double J[2][2], A, B, C, F;
-    fp_svd d;
+    fp_shape d;
 
     e->lv = lv;
     fp_center(c, lv, g->s, g->t, &e->u0, &e->v0, &e->fs, &e->ft);
     fp_level_jacobian(c, lv, g->J, e->fs, e->ft, J);
     /* Clamp ellipse eccentricity (on the singular values, so the clamp is
-     * the same for every pair of columns spanning the same ellipse). */
-    fp_svd2(J[0][0], J[0][1], J[1][0], J[1][1], &d);
-    fp_clamp_eccentricity(&d);
-    fp_svd_compose(&d, d.s[0], d.s[1], J);
+     * the same for every pair of columns spanning the same ellipse); an
+     * unclamped J is used as it is. */
+    fp_level_shape(c, lv, &g->base, J, e->fs || e->ft, &d);
+    if (d.clamped) fp_shape_reshape(&d, 0.0, J);
     e->ku = e->fs ? -(double)L->w : (double)L->w;
     e->kv = e->ft ? -(double)L->h : (double)L->h;
 
@@ -158,10 +159,10 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
 uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
                 float dds[4], float ddt[4], sample_stats *st)
 {
-    const struct sample_level *Bl = &c->tex->level[c->base];
+    const struct sample_level *B = &c->tex->level[c->base];
     ewa_geom g;
     ewa_level_geom memo[2];
-    fp_svd d;
+    double Jb[2][2];
     memo[0].lv = memo[1].lv = -1;
     g.memo = memo;
     g.s = q->s;
@@ -169,7 +170,10 @@ uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, flo
     fp_query_jacobian(q, g.J);
     /* Level from the ellipse's minor semi-axis in base texels (the same rule
      * as Blinn–Newell; pbrt uses the shorter Jacobian column instead). */
-    fp_svd2(g.J[0][0] * Bl->w, g.J[0][1] * Bl->w, g.J[1][0] * Bl->h, g.J[1][1] * Bl->h, &d);
-    fp_clamp_eccentricity(&d);
-    return fp_run(c, &g, ewa_level, d.s[1], g.s, g.t, call_bias, out, dds, ddt, st);
+    Jb[0][0] = g.J[0][0] * B->w;
+    Jb[0][1] = g.J[0][1] * B->w;
+    Jb[1][0] = g.J[1][0] * B->h;
+    Jb[1][1] = g.J[1][1] * B->h;
+    fp_shape_of(Jb, &g.base);
+    return fp_run(c, &g, ewa_level, g.base.s[1], g.s, g.t, call_bias, out, dds, ddt, st);
 }

@@ -590,16 +590,37 @@ typedef struct fp_svd {
     double U[2][2], s[2], V[2][2];
 } fp_svd;
 void fp_svd2(double a, double b, double c, double d, fp_svd *out);
-/* U · diag(s0, s1) · Vᵀ into m (row-major). */
-void fp_svd_compose(const fp_svd *d, double s0, double s1, double m[2][2]);
-
-/* Raise the minor singular value to at least s[0] / FP_MAX_ECCENTRICITY. */
-void fp_clamp_eccentricity(fp_svd *d);
+/* A 2 × 2 Jacobian J = [[a, b], [c, d]] in Blinn's form (fp_svd2's E, F,
+ * G, H, Q = |(E, H)|, R = |(F, G)|), its singular values σ0 = Q + R ≥
+ * σ1 = |Q − R| (fp_svd2's, bit for bit), σ1 raised to σ0 / FP_MAX_ECCENTRICITY
+ * where it was below (`clamped`). Enough to rebuild J with new singular
+ * values and the same rotations without any trigonometry. */
+typedef struct fp_shape {
+    double E, F, G, H, Q, R, s[2];
+    int clamped;
+} fp_shape;
+void fp_shape_of(double J[2][2], fp_shape *o);
+/* fp_shape_of(J) given that J = r·(the Jacobian of b), r a power of two:
+ * Q and R come from b (no hypot). */
+void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o);
+void fp_shape_finish(fp_shape *o); /* s and the clamp from Q, R */
+/* out = U·diag(√(σ0² + wid), √(σ1² + wid))·Vᵀ, with J = U·diag(σ)·Vᵀ as
+ * fp_svd2 factors it and σ1 after the clamp: wid = 0 is the clamped
+ * Jacobian (EWA), wid = 1 the unit-variance widening (Blinn–Newell).
+ * Returns det(out). */
+double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2]);
 
 /* The normalized Jacobian J (rows s, t; columns x, y) in texel units of level
  * lv, with the rows of a mirrored axis (fp_center) negated. */
 void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
                        double out[2][2]);
+
+/* The shape of J (level lv's Jacobian, fp_level_jacobian; `flipped` if a
+ * mirror-clamp negated a row) from `base`, the shape of the same query's
+ * Jacobian on the base level c->base, when that is a power-of-two scaling;
+ * fp_shape_of(J) otherwise. */
+void fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[2][2], int flipped,
+                    fp_shape *o);
 
 /* Weighted sums of one level: Σw, Σw·T and, for ∂/∂(u0, v0) of the centre at
  * fixed footprint, Σ∂w and Σ∂w·T. In double so that a constant texture comes
