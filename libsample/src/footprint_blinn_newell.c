@@ -121,6 +121,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     bn_level_geom *e = &g->memo[lv & 1];
     double u0, v0, M[2][2], jlo, nrows, total = 0.0, ku, kv;
     int r, k;
+    fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
     if (e->lv != lv) bn_affine_setup(c, g, lv, e);
@@ -141,6 +142,18 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
         pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, T);
         if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
         if (pass == FP_ROW_COUNTED) continue;
+        if (!acc->deriv) {
+            /* The pyramid alone: no gradient, sums in registers. */
+            double xr = M[0][1] * dv, yr = M[1][1] * dv;
+            for (k = 0; k < (int)ncol; ++k) {
+                double du = (ilo + k) - u0, ax = fabs(M[0][0] * du + xr), ay = fabs(M[1][0] * du + yr), w;
+                if (ax >= 1.0 || ay >= 1.0) continue;
+                w = (1.0 - ax) * (1.0 - ay);
+                if (w <= 0.0) continue;
+                fp_sums_add(&sm, w, T[k]);
+            }
+            continue;
+        }
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, gx = 0.0, gy = 0.0, w;
             w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
@@ -149,6 +162,10 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
             fp_accum_add(acc, w, -(gx * M[0][0] + gy * M[1][0]) * ku, -(gx * M[0][1] + gy * M[1][1]) * kv, T[k]);
             total += 1.0;
         }
+    }
+    if (!count_only && !acc->deriv) {
+        fp_accum_fold(acc, &sm);
+        total += sm.n;
     }
     return total;
 }

@@ -109,6 +109,7 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     ewa_level_geom *m = &g->memo[lv & 1];
     double u0, v0, A, B, C, jlo, nrows, total = 0.0, ku, kv;
     int r, k;
+    fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
 
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
@@ -136,6 +137,22 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, T);
         if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
         if (pass == FP_ROW_COUNTED) continue;
+        if (!acc->deriv) {
+            /* The weight alone: no slope, sums in registers. */
+            for (k = 0; k < (int)ncol; ++k) {
+                double du = (ilo + k) - u0, r2 = A * du * du + B * du * dv + C * dv * dv, x, w;
+                int e;
+                if (!(r2 < 1.0)) continue;
+                if (r2 < 0.0) r2 = 0.0;
+                x = r2 * 128.0;
+                e = (int)x;
+                if (e > 127) e = 127;
+                w = ewa_lut[e] + (x - e) * (ewa_lut[e + 1] - ewa_lut[e]);
+                if (w <= 0.0) continue;
+                fp_sums_add(&sm, w, T[k]);
+            }
+            continue;
+        }
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, r2, x, w, dw;
             int e;
@@ -152,6 +169,10 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
             fp_accum_add(acc, w, -dw * (2.0 * A * du + B * dv) * ku, -dw * (B * du + 2.0 * C * dv) * kv, T[k]);
             total += 1.0;
         }
+    }
+    if (!count_only && !acc->deriv) {
+        fp_accum_fold(acc, &sm);
+        total += sm.n;
     }
     return total;
 }

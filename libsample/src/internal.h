@@ -650,6 +650,34 @@ static inline void fp_accum_add(fp_accum *a, double w, double dwdu, double dwdv,
     a->texels++;
 }
 
+/* The sums of fp_accum without the derivative ones, for the filters' inner
+ * loops when no derivatives are asked for: a local the compiler keeps in
+ * registers (the 4 channels as two double pairs), folded into the level's
+ * fp_accum once (fp_accum_fold). Same additions in the same order as
+ * fp_accum_add, so the same bits. */
+typedef struct fp_sums {
+    double sw, sT[4];
+    uint32_t n;
+} fp_sums;
+
+SAMPLE_FORCE_INLINE void fp_sums_add(fp_sums *s, double w, const float T[4])
+{
+    int k;
+    s->sw += w;
+    for (k = 0; k < 4; ++k) s->sT[k] += w * T[k];
+    s->n++;
+}
+
+/* a ← a + s for an fp_accum that received nothing else (a level's sums
+ * start at 0, so this is the sums themselves). */
+SAMPLE_FORCE_INLINE void fp_accum_fold(fp_accum *a, const fp_sums *s)
+{
+    int k;
+    a->sw += s->sw;
+    for (k = 0; k < 4; ++k) a->sT[k] += s->sT[k];
+    a->texels += s->n;
+}
+
 /* Texels ilo … ilo + n − 1 (n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS) of row j of
  * level lv into T, exactly as ctx_texel reads them (linear rule): a span
  * inside the level is decoded in one go by the format's reader
