@@ -30,8 +30,10 @@ typedef struct bn_level_geom {
     int fail; /* the level cannot be filtered (unbounded or singular) */
     double u0, v0, ku, kv, jlo, nrows;
     double M[2][2];    /* parallelogram: J′⁻¹ (texel offset → screen) */
+    double sa[2], sb[2]; /* parallelogram: |M₀₀|, |M₁₀| and M₀₁, M₁₁ times their signs */
     double G[3][3];    /* quad: the pulled-back inverse homography */
     double V[4][2];    /* quad: the widened support's corners */
+    fp_spans spans;    /* rows found by the counting pass */
 } bn_level_geom;
 
 typedef struct bn_geom {
@@ -77,8 +79,8 @@ static double row_span(double u0, double lo, double hi, double *ilo)
 {
     double a, b;
     if (!(lo <= hi)) return 0.0;
-    a = ceil(u0 + lo);
-    b = floor(u0 + hi);
+    a = fp_ceil(u0 + lo);
+    b = fp_floor(u0 + hi);
     *ilo = a;
     return b >= a ? b - a + 1.0 : 0.0;
 }
@@ -107,10 +109,39 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     e->M[0][1] = -Jw[0][1] / det;
     e->M[1][0] = -Jw[1][0] / det;
     e->M[1][1] = Jw[0][0] / det;
+    e->sa[0] = fabs(e->M[0][0]);
+    e->sb[0] = e->M[0][0] < 0.0 ? -e->M[0][1] : e->M[0][1];
+    e->sa[1] = fabs(e->M[1][0]);
+    e->sb[1] = e->M[1][0] < 0.0 ? -e->M[1][1] : e->M[1][1];
     /* Rows: the parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v. */
     ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
     e->jlo = ceil(e->v0 - ext);
     e->nrows = floor(e->v0 + ext) - e->jlo + 1.0;
+    e->spans.n = 0;
+}
+
+/* Row dv's span: the intersection of the slabs |x| ≤ 1 and |y| ≤ 1. With
+ * a = |M₀₀| > 0 and b = ±M₀₁·dv (the sign of M₀₀) the x slab is
+ * [(−1 − b)/a, (1 − b)/a]: slab()'s bounds to the bit (negation is exact),
+ * without its branches; a zero M₀₀ or M₁₀ (a row parallel to a side) takes
+ * slab(). */
+static double bn_affine_span(const bn_level_geom *e, double dv, double *ilo)
+{
+    double lo = -INFINITY, hi = INFINITY, b0, b1, l0, h0, l1, h1;
+    if (!(e->sa[0] > 0.0 && e->sa[1] > 0.0)) {
+        slab(e->M[0][0], e->M[0][1] * dv, &lo, &hi);
+        slab(e->M[1][0], e->M[1][1] * dv, &lo, &hi);
+        return row_span(e->u0, lo, hi, ilo);
+    }
+    b0 = e->sb[0] * dv;
+    b1 = e->sb[1] * dv;
+    l0 = (-1.0 - b0) / e->sa[0];
+    h0 = (1.0 - b0) / e->sa[0];
+    l1 = (-1.0 - b1) / e->sa[1];
+    h1 = (1.0 - b1) / e->sa[1];
+    lo = l0 > l1 ? l0 : l1;
+    hi = h0 < h1 ? h0 : h1;
+    return row_span(e->u0, lo, hi, ilo);
 }
 
 static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc,
@@ -119,55 +150,69 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     const bn_geom *g = (const bn_geom *)gp;
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     bn_level_geom *e = &g->memo[lv & 1];
-    double u0, v0, M[2][2], jlo, nrows, total = 0.0, ku, kv;
-    int r, k;
+    double u0, v0, M[2][2], jlo, total = 0.0, ku, kv;
+    int r, k, nrows;
     fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
 
     if (e->lv != lv) bn_affine_setup(c, g, lv, e);
+    if (!(e->nrows <= cap)) return INFINITY;
     u0 = e->u0;
     v0 = e->v0;
     ku = e->ku;
     kv = e->kv;
     memcpy(M, e->M, sizeof M);
     jlo = e->jlo;
-    nrows = e->nrows;
-    if (!(nrows <= cap)) return INFINITY;
-    for (r = 0; r < (int)nrows; ++r) {
-        double j = jlo + r, dv = j - v0, lo = -INFINITY, hi = INFINITY, ilo = 0.0, ncol;
-        int pass;
-        slab(M[0][0], M[0][1] * dv, &lo, &hi);
-        slab(M[1][0], M[1][1] * dv, &lo, &hi);
-        ncol = row_span(u0, lo, hi, &ilo);
-        pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, T);
-        if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
-        if (pass == FP_ROW_COUNTED) continue;
+    nrows = (int)e->nrows;
+    if (count_only) {
+        e->spans.n = 0;
+        for (r = 0; r < nrows; ++r) {
+            double j = jlo + r, ilo = 0.0, ncol = bn_affine_span(e, j - v0, &ilo);
+            if (fp_span_count(c, lv, &e->spans, r, j, ilo, ncol, cap, &total)) return INFINITY;
+        }
+        e->spans.n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
+        return total;
+    }
+    for (r = 0; r < nrows; ++r) {
+        double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
+        const unsigned char *p;
+        if (r < e->spans.n) {
+            ilo = e->spans.ilo[r];
+            ncol = e->spans.ncol[r];
+        } else {
+            ncol = bn_affine_span(e, dv, &ilo);
+        }
+        if (ncol > cap) break; /* unreachable after a successful count */
+        if (!(ncol > 0.0)) continue;
+        p = fp_row_texels(c, lv, j, ilo, (int)ncol, T);
         if (!acc->deriv) {
             /* The pyramid alone: no gradient, sums in registers. */
             double xr = M[0][1] * dv, yr = M[1][1] * dv;
             for (k = 0; k < (int)ncol; ++k) {
                 double du = (ilo + k) - u0, ax = fabs(M[0][0] * du + xr), ay = fabs(M[1][0] * du + yr), w;
+                float t4[4];
                 if (ax >= 1.0 || ay >= 1.0) continue;
                 w = (1.0 - ax) * (1.0 - ay);
                 if (w <= 0.0) continue;
-                fp_sums_add(&sm, w, T[k]);
+                memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+                fp_sums_add(&sm, w, t4);
             }
             continue;
         }
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, gx = 0.0, gy = 0.0, w;
+            float t4[4];
             w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
             if (w <= 0.0) continue;
+            memcpy(t4, p + 16 * (size_t)k, sizeof t4);
             /* w depends on c − u0: ∂w/∂u0 = −(gx·M₀₀ + gy·M₁₀). */
-            fp_accum_add(acc, w, -(gx * M[0][0] + gy * M[1][0]) * ku, -(gx * M[0][1] + gy * M[1][1]) * kv, T[k]);
+            fp_accum_add(acc, w, -(gx * M[0][0] + gy * M[1][0]) * ku, -(gx * M[0][1] + gy * M[1][1]) * kv, t4);
             total += 1.0;
         }
     }
-    if (!count_only && !acc->deriv) {
-        fp_accum_fold(acc, &sm);
-        total += sm.n;
-    }
-    return total;
+    if (acc->deriv) return total;
+    fp_accum_fold(acc, &sm);
+    return total + sm.n;
 }
 
 /* ---- General quadrilateral (exact corners): the projective map --------- */
@@ -176,7 +221,7 @@ static double cross2(const double a[2], const double b[2]) { return a[0] * b[1] 
 
 /* Row interval of the convex hull of four points (all six segments: the
  * hull's boundary is among them and each lies inside it). */
-static void hull_row(double H[4][2], double dv, double *lo, double *hi)
+static void hull_row(const double H[4][2], double dv, double *lo, double *hi)
 {
     int p, q;
     *lo = INFINITY;
@@ -267,7 +312,16 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
     }
     e->jlo = ceil(e->v0 + vmin);
     e->nrows = floor(e->v0 + vmax) - e->jlo + 1.0;
+    e->spans.n = 0;
     e->fail = 0;
+}
+
+/* Row dv's span: the support's hull on that row. */
+static double bn_quad_span(const bn_level_geom *e, double dv, double *ilo)
+{
+    double lo, hi;
+    hull_row(e->V, dv, &lo, &hi);
+    return row_span(e->u0, lo, hi, ilo);
 }
 
 static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
@@ -275,22 +329,29 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     const bn_geom *g = (const bn_geom *)gp;
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     bn_level_geom *e = &g->memo[lv & 1];
-    double u0, v0, ku, kv, G[3][3], V[4][2], jlo, nrows;
+    double u0, v0, ku, kv, G[3][3], jlo;
     double total = 0.0;
-    int r, k, area;
-    float tx[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
+    int r, k, area, nrows;
+    float tx[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
 
     if (e->lv != lv) bn_quad_setup(c, g, lv, e);
-    if (e->fail) return INFINITY;
+    if (e->fail || !(e->nrows <= cap)) return INFINITY;
     u0 = e->u0;
     v0 = e->v0;
     ku = e->ku;
     kv = e->kv;
     memcpy(G, e->G, sizeof G);
-    memcpy(V, e->V, sizeof V);
     jlo = e->jlo;
-    nrows = e->nrows;
-    if (!(nrows <= cap)) return INFINITY;
+    nrows = (int)e->nrows;
+    if (count_only) {
+        e->spans.n = 0;
+        for (r = 0; r < nrows; ++r) {
+            double j = jlo + r, ilo = 0.0, ncol = bn_quad_span(e, j - v0, &ilo);
+            if (fp_span_count(c, lv, &e->spans, r, j, ilo, ncol, cap, &total)) return INFINITY;
+        }
+        e->spans.n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
+        return total;
+    }
     /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
      * ∫ pyr(x, y)·T(H(x, y)) dx dy = ∫ pyr(H⁻¹(u))·T(u) / |det DH| du, so
      * each texel's weight is divided by |det DH| at its preimage. For a
@@ -301,17 +362,22 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
      * points with nonzero weight lie in the quad, so the clamp to that
      * range (|det DH| to its range on the quad) only guards rounding. The
      * entry keeps (whi/wlo)³ ≤ 2²⁰, so weights span at most 2²⁰. */
-    area = !count_only && (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT);
-    for (r = 0; r < (int)nrows; ++r) {
-        double j = jlo + r, dv = j - v0, lo, hi, ilo = 0.0, ncol;
-        int pass;
-        hull_row(V, dv, &lo, &hi);
-        ncol = row_span(u0, lo, hi, &ilo);
-        pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, tx);
-        if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
-        if (pass == FP_ROW_COUNTED) continue;
+    area = (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT) != 0;
+    for (r = 0; r < nrows; ++r) {
+        double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
+        const unsigned char *p;
+        if (r < e->spans.n) {
+            ilo = e->spans.ilo[r];
+            ncol = e->spans.ncol[r];
+        } else {
+            ncol = bn_quad_span(e, dv, &ilo);
+        }
+        if (ncol > cap) break; /* unreachable after a successful count */
+        if (!(ncol > 0.0)) continue;
+        p = fp_row_texels(c, lv, j, ilo, (int)ncol, tx);
         for (k = 0; k < (int)ncol; ++k) {
             double du = ilo + k - u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
+            float t4[4];
             /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
              * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
              * quad, where the pyramid is 0 anyway. */
@@ -344,7 +410,8 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
                 wv = m * wv + w * mv;
                 w *= m;
             }
-            fp_accum_add(acc, w, -wu * ku, -wv * kv, tx[k]);
+            memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+            fp_accum_add(acc, w, -wu * ku, -wv * kv, t4);
             total += 1.0;
         }
     }

@@ -133,11 +133,12 @@ static int accum_result(const fp_accum *a, double r[4], double rs[4], double rt[
 {
     int k;
     if (!(a->sw > 0.0)) return 0;
-    for (k = 0; k < 4; ++k) {
-        r[k] = a->sT[k] / a->sw;
-        rs[k] = (a->sTdu[k] - r[k] * a->sdu) / a->sw;
-        rt[k] = (a->sTdv[k] - r[k] * a->sdv) / a->sw;
-    }
+    for (k = 0; k < 4; ++k) r[k] = a->sT[k] / a->sw;
+    if (a->deriv)
+        for (k = 0; k < 4; ++k) {
+            rs[k] = (a->sTdu[k] - r[k] * a->sdu) / a->sw;
+            rt[k] = (a->sTdv[k] - r[k] * a->sdv) / a->sw;
+        }
     return 1;
 }
 
@@ -152,7 +153,7 @@ static int mirror_clamp(sample_wrap m)
 static double reduce_period(sample_wrap m, double u, int n)
 {
     double p = m == SAMPLE_WRAP_REPEAT ? (double)n : (m == SAMPLE_WRAP_MIRRORED_REPEAT ? 2.0 * n : 0.0);
-    return p > 0.0 ? u - p * floor(u / p) : u;
+    return p > 0.0 ? u - p * fp_floor(u / p) : u;
 }
 
 void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
@@ -164,20 +165,10 @@ void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double
     *flip_t = mirror_clamp(mt) && t < 0.0f;
     /* A float times an int below 2^17 is exact in double. Texel centres sit
      * at integers after the −½ (DESIGN §2). */
-    *u0 = reduce_period(ms, (double)wrap_coord(ms, s, L->w) * L->w, L->w) - 0.5;
-    *v0 = reduce_period(mt, (double)wrap_coord(mt, t, L->h) * L->h, L->h) - 0.5;
-}
-
-void fp_read_row(const sample_ctx *c, int lv, double j, double ilo, int n, float (*T)[4])
-{
-    const struct sample_level *L = &c->tex->level[lv];
-    int k;
-    if (j >= 0.0 && j < (double)L->h && ilo >= 0.0 && ilo + n <= (double)L->w) {
-        tex_readers_of(c->tex)->row(L->data + (size_t)j * L->stride + (size_t)ilo * c->tex->texel_bytes,
-                                    n, T);
-        return;
-    }
-    for (k = 0; k < n; ++k) ctx_texel(c, lv, ilo + k, j, 1, T[k]);
+    if (ms >= SAMPLE_WRAP_CLAMP) s = wrap_coord(ms, s, L->w);
+    if (mt >= SAMPLE_WRAP_CLAMP) t = wrap_coord(mt, t, L->h);
+    *u0 = reduce_period(ms, (double)s * L->w, L->w) - 0.5;
+    *v0 = reduce_period(mt, (double)t * L->h, L->h) - 0.5;
 }
 
 static void store(float *dst, const double *v)
@@ -232,8 +223,8 @@ uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double
             n += (uint32_t)level(c, geom, l1, &a1, 0);
             ok = accum_result(&a1, r1, s1, t1);
             /* Blend in double: (1 − f)·T + f·T is then T exactly in float. */
-            for (k = 0; k < 4 && ok; ++k) {
-                r0[k] = (1.0 - f) * r0[k] + f * r1[k];
+            for (k = 0; k < 4 && ok; ++k) r0[k] = (1.0 - f) * r0[k] + f * r1[k];
+            for (k = 0; k < 4 && ok && a0.deriv; ++k) {
                 s0[k] = (1.0 - f) * s0[k] + f * s1[k];
                 t0[k] = (1.0 - f) * t0[k] + f * t1[k];
             }

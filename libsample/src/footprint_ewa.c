@@ -62,6 +62,7 @@ typedef struct ewa_level_geom {
     int lv; /* −1: empty */
     int fs, ft;
     double u0, v0, A, B, C, jlo, nrows, ku, kv;
+    fp_spans spans; /* rows found by the counting pass */
 } ewa_level_geom;
 
 typedef struct ewa_geom {
@@ -100,6 +101,19 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     e->A = A / F;
     e->B = B / F;
     e->C = C / F;
+    e->spans.n = 0;
+}
+
+/* Row dv's span: the columns where A·du² + B·dv·du + C·dv² < 1. */
+static double ewa_span(const ewa_level_geom *m, double dv, double *ilo)
+{
+    double disc = m->B * m->B * dv * dv - 4.0 * m->A * (m->C * dv * dv - 1.0), sq, a, b;
+    if (!(disc > 0.0)) return 0.0;
+    sq = sqrt(disc);
+    a = fp_ceil(m->u0 + (-m->B * dv - sq) / (2.0 * m->A));
+    b = fp_floor(m->u0 + (-m->B * dv + sq) / (2.0 * m->A));
+    *ilo = a;
+    return b >= a ? b - a + 1.0 : 0.0;
 }
 
 static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
@@ -107,40 +121,48 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     const ewa_geom *g = (const ewa_geom *)gp;
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     ewa_level_geom *m = &g->memo[lv & 1];
-    double u0, v0, A, B, C, jlo, nrows, total = 0.0, ku, kv;
-    int r, k;
+    double u0, v0, A, B, C, jlo, total = 0.0, ku, kv;
+    int r, k, nrows;
     fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels */
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
 
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
+    if (!(m->nrows <= cap)) return INFINITY;
     u0 = m->u0;
     v0 = m->v0;
     A = m->A;
     B = m->B;
     C = m->C;
     jlo = m->jlo;
-    nrows = m->nrows;
+    nrows = (int)m->nrows;
     ku = m->ku;
     kv = m->kv;
-    if (!(nrows <= cap)) return INFINITY;
-    for (r = 0; r < (int)nrows; ++r) {
-        double j = jlo + r, dv = j - v0, disc, sq, ilo = 0.0, ncol, a, b;
-        int pass;
-        /* Columns where A·du² + B·dv·du + C·dv² < 1. */
-        disc = B * B * dv * dv - 4.0 * A * (C * dv * dv - 1.0);
-        if (!(disc > 0.0)) continue;
-        sq = sqrt(disc);
-        a = ceil(u0 + (-B * dv - sq) / (2.0 * A));
-        b = floor(u0 + (-B * dv + sq) / (2.0 * A));
-        ilo = a;
-        ncol = b >= a ? b - a + 1.0 : 0.0;
-        pass = fp_row_pass(c, lv, j, ilo, ncol, count_only, cap, &total, T);
-        if (pass == FP_ROW_OVER) return count_only ? INFINITY : total;
-        if (pass == FP_ROW_COUNTED) continue;
+    if (count_only) {
+        m->spans.n = 0;
+        for (r = 0; r < nrows; ++r) {
+            double j = jlo + r, ilo = 0.0, ncol = ewa_span(m, j - v0, &ilo);
+            if (fp_span_count(c, lv, &m->spans, r, j, ilo, ncol, cap, &total)) return INFINITY;
+        }
+        m->spans.n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
+        return total;
+    }
+    for (r = 0; r < nrows; ++r) {
+        double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
+        const unsigned char *p;
+        if (r < m->spans.n) {
+            ilo = m->spans.ilo[r];
+            ncol = m->spans.ncol[r];
+        } else {
+            ncol = ewa_span(m, dv, &ilo);
+        }
+        if (ncol > cap) break; /* unreachable after a successful count */
+        if (!(ncol > 0.0)) continue;
+        p = fp_row_texels(c, lv, j, ilo, (int)ncol, T);
         if (!acc->deriv) {
             /* The weight alone: no slope, sums in registers. */
             for (k = 0; k < (int)ncol; ++k) {
                 double du = (ilo + k) - u0, r2 = A * du * du + B * du * dv + C * dv * dv, x, w;
+                float t4[4];
                 int e;
                 if (!(r2 < 1.0)) continue;
                 if (r2 < 0.0) r2 = 0.0;
@@ -149,12 +171,14 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
                 if (e > 127) e = 127;
                 w = ewa_lut[e] + (x - e) * (ewa_lut[e + 1] - ewa_lut[e]);
                 if (w <= 0.0) continue;
-                fp_sums_add(&sm, w, T[k]);
+                memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+                fp_sums_add(&sm, w, t4);
             }
             continue;
         }
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, r2, x, w, dw;
+            float t4[4];
             int e;
             r2 = A * du * du + B * du * dv + C * dv * dv;
             if (!(r2 < 1.0)) continue;
@@ -165,16 +189,15 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
             dw = (ewa_lut[e + 1] - ewa_lut[e]) * 128.0; /* dw/dr² */
             w = ewa_lut[e] + (x - e) * (ewa_lut[e + 1] - ewa_lut[e]);
             if (w <= 0.0) continue;
+            memcpy(t4, p + 16 * (size_t)k, sizeof t4);
             /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */
-            fp_accum_add(acc, w, -dw * (2.0 * A * du + B * dv) * ku, -dw * (B * du + 2.0 * C * dv) * kv, T[k]);
+            fp_accum_add(acc, w, -dw * (2.0 * A * du + B * dv) * ku, -dw * (B * du + 2.0 * C * dv) * kv, t4);
             total += 1.0;
         }
     }
-    if (!count_only && !acc->deriv) {
-        fp_accum_fold(acc, &sm);
-        total += sm.n;
-    }
-    return total;
+    if (acc->deriv) return total;
+    fp_accum_fold(acc, &sm);
+    return total + sm.n;
 }
 
 uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],

@@ -678,12 +678,6 @@ SAMPLE_FORCE_INLINE void fp_accum_fold(fp_accum *a, const fp_sums *s)
     a->texels += s->n;
 }
 
-/* Texels ilo … ilo + n − 1 (n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS) of row j of
- * level lv into T, exactly as ctx_texel reads them (linear rule): a span
- * inside the level is decoded in one go by the format's reader
- * (tex_readers), anything else texel by texel through ctx_texel. */
-void fp_read_row(const sample_ctx *c, int lv, double j, double ilo, int n, float (*T)[4]);
-
 /* Prefetch the lines of texels ilo … ilo + ncol − 1 of row j of level lv
  * (the part inside the level; wrapped parts are left to the hardware). The
  * footprint filters call it from their counting pass, which finds every
@@ -714,22 +708,72 @@ static inline void fp_query_jacobian(const sample_query *q, double J[2][2])
     J[1][1] = q->dtdy;
 }
 
-/* One row span in a footprint filter's two passes. The counting pass
- * prefetches it and adds it to *total (FP_ROW_OVER once over the cap, the
- * caller then moves to a coarser level); the accumulating pass reads its
- * texels into T (FP_ROW_READ). Bounds every row by the cap in both passes. */
-enum { FP_ROW_OVER = -1, FP_ROW_COUNTED = 0, FP_ROW_READ = 1 };
-SAMPLE_FORCE_INLINE int fp_row_pass(const sample_ctx *c, int lv, double j, double ilo, double ncol, int count_only,
-                                    double cap, double *total, float (*T)[4])
+/* ceil and floor of the footprint filters' row and column bounds. Without
+ * SSE4.1 GCC expands ceil() into some twenty instructions, and these run
+ * twice per row. Any |x| ≥ 2^52 is already integral, NaN and ±inf pass
+ * through; the values are ceil's and floor's except that a zero result is
+ * always +0 (ceil(−0.5) = −0), which the callers' arithmetic does not see. */
+static inline double fp_ceil(double x)
 {
-    if (count_only) {
-        fp_prefetch_span(c, lv, j, ilo, ncol);
-        *total += ncol;
-        return *total > cap ? FP_ROW_OVER : FP_ROW_COUNTED;
+    double t;
+    if (!(fabs(x) < 0x1p52)) return x;
+    t = (double)(int64_t)x;
+    return t < x ? t + 1.0 : t;
+}
+
+static inline double fp_floor(double x)
+{
+    double t;
+    if (!(fabs(x) < 0x1p52)) return x;
+    t = (double)(int64_t)x;
+    return t > x ? t - 1.0 : t;
+}
+
+/* A level's row spans, found by the counting pass and kept for the
+ * accumulating pass (the first FP_SPAN_MEMO rows; the rare taller
+ * footprints recompute the rest): each row's bounds cost a few divisions,
+ * a square root for EWA, and two rounding steps. */
+#define FP_SPAN_MEMO 96
+typedef struct fp_spans {
+    int n; /* rows stored by the last complete count */
+    double ilo[FP_SPAN_MEMO], ncol[FP_SPAN_MEMO];
+} fp_spans;
+
+/* The counting pass's step for row r (row j, texels ilo … ilo + ncol − 1):
+ * keep the span, prefetch its lines, add it to *total; nonzero once the
+ * total is over the cap (the caller then moves to a coarser level). Every
+ * row is bounded by the cap before any texel is read. */
+SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
+                                      double ncol, double cap, double *total)
+{
+    if (r < FP_SPAN_MEMO) {
+        sp->ilo[r] = ilo;
+        sp->ncol[r] = ncol;
     }
-    if (ncol > cap) return FP_ROW_OVER; /* unreachable after a successful count */
-    fp_read_row(c, lv, j, ilo, (int)ncol, T);
-    return FP_ROW_READ;
+    fp_prefetch_span(c, lv, j, ilo, ncol);
+    *total += ncol;
+    return *total > cap;
+}
+
+/* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of row j of
+ * level lv as float RGBA, 16 bytes apart from the returned pointer, exactly
+ * as ctx_texel reads them (linear rule): a float RGBA span inside the level
+ * in place (nothing to decode), another span inside the level decoded in
+ * one go by the format's reader (tex_readers) into buf, anything else
+ * texel by texel through ctx_texel into buf. Load with memcpy. */
+SAMPLE_FORCE_INLINE const unsigned char *fp_row_texels(const sample_ctx *c, int lv, double j, double ilo, int n,
+                                                       float (*buf)[4])
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    int k;
+    if (j >= 0.0 && j < (double)L->h && ilo >= 0.0 && ilo + n <= (double)L->w) {
+        const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)ilo * c->tex->texel_bytes;
+        if (c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4) return p;
+        tex_readers_of(c->tex)->row(p, n, buf);
+    } else {
+        for (k = 0; k < n; ++k) ctx_texel(c, lv, ilo + k, j, 1, buf[k]);
+    }
+    return (const unsigned char *)buf;
 }
 
 /* Prefetch the two rows a bilinear read near (s, t) on level lv needs.
