@@ -171,6 +171,171 @@ void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double
     *v0 = reduce_period(mt, (double)t * L->h, L->h) - 0.5;
 }
 
+/* ---- Cross-query prefetch (the fast path's plan step) ------------------ */
+
+/* log2 x to about 2e-4 for x > 0 (the prefetch's level choice only):
+ * exponent plus 2/ln 2 · atanh((m − 1)/(m + 1)) to the fifth power. */
+static double approx_log2(double x)
+{
+    uint64_t b;
+    double m, t, t2;
+    int e;
+    memcpy(&b, &x, sizeof b);
+    e = (int)((b >> 52) & 0x7ff);
+    if (!(x > 0.0) || e == 0 || e == 0x7ff) return x > 1.0 ? 1e4 : -1e4;
+    b = (b & 0x000fffffffffffffull) | 0x3ff0000000000000ull;
+    memcpy(&m, &b, sizeof m);
+    t = (m - 1.0) / (m + 1.0);
+    t2 = t * t;
+    return (double)(e - 1023) + 2.8853900817779268 * t * (1.0 + t2 * (1.0 / 3.0 + t2 * 0.2));
+}
+
+/* The footprint centre on an axis of n texels for the prefetch: fp_center's
+ * for REPEAT (the first period), the coordinate clamped to the level for
+ * the other wraps (a hint: mirrored periods are not followed). */
+static double prefetch_centre(sample_wrap m, float s, int n)
+{
+    double x = (double)s;
+    if (m == SAMPLE_WRAP_REPEAT) x -= fp_floor(x);
+    else x = x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x);
+    return x * n - 0.5;
+}
+
+/* Prefetch up to `budget` lines of level lv's rows under the widened
+ * parallelogram J′·[−1, 1]² about (s, t), J (rows s, t) normalized;
+ * returns the lines left. J′ = U·diag(√(σ² + 1))·Vᵀ (σ1 clamped) is
+ * Blinn–Newell's support and the bounding parallelogram of EWA's ellipse
+ * (J′J′ᵀ = J_cJ_cᵀ + I, so the ellipse is {J′·e : |e| ≤ 1}); it is built
+ * as fp_shape_reshape does, with sqrt for hypot. On row dv the slab
+ * |x| ≤ 1 is du ∈ (J′₀₁/J′₁₁)·dv ± |det J′/J′₁₁| and |y| ≤ 1 is
+ * (J′₀₀/J′₁₀)·dv ± |det J′/J′₁₀| (x, y = J′⁻¹·(du, dv) by the adjugate),
+ * so a row costs a few adds. Rows past the top or bottom of a repeating
+ * level come from the other side; columns are clipped to the level (the
+ * wrapped part of a row, mirror-clamp flips and the cap's level
+ * escalation are left to the filter's own prefetch). */
+static int prefetch_level(const sample_ctx *c, int lv, float s, float t, double Jn[2][2], int budget)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    const size_t tb = c->tex->texel_bytes;
+    const double w = L->w, h = L->h, wmax = w - 1.0;
+    double E = 0.5 * (Jn[0][0] * w + Jn[1][1] * h), F = 0.5 * (Jn[0][0] * w - Jn[1][1] * h);
+    double G = 0.5 * (Jn[1][0] * h + Jn[0][1] * w), H = 0.5 * (Jn[1][0] * h - Jn[0][1] * w);
+    double Q = sqrt(E * E + H * H), R = sqrt(F * F + G * G), sx = Q + R, s1 = fabs(Q - R);
+    double big = Q >= R ? Q : R, small = Q >= R ? R : Q, t0, t1, kb, ks, kc, ka, j00, j01, j10, j11;
+    double det, ext, u0, v0, sl0, hw0, sl1, hw1, dv, c0, c1;
+    long j, jlo, jhi;
+    int clamped = s1 < sx / FP_MAX_ECCENTRICITY;
+    if (clamped) s1 = sx / FP_MAX_ECCENTRICITY;
+    t0 = sqrt(sx * sx + 1.0);
+    t1 = sqrt(s1 * s1 + 1.0);
+    if (!(big > 0.0)) {
+        kc = ka = 0.0;
+    } else {
+        kb = (t0 + t1) / (2.0 * big);
+        ks = clamped ? (sx - s1) * (sx + s1) / ((t0 + t1) * 2.0 * small) : 2.0 * big / (t0 + t1);
+        kc = Q >= R ? kb : ks;
+        ka = Q >= R ? ks : kb;
+    }
+    j00 = big > 0.0 ? kc * E + ka * F : t0;
+    j01 = ka * G - kc * H;
+    j10 = kc * H + ka * G;
+    j11 = big > 0.0 ? kc * E - ka * F : t1;
+    det = j00 * j11 - j01 * j10;
+    ext = fabs(j10) + fabs(j11);
+    /* Taller than the budget's rows (or degenerate): nothing worth a hint,
+     * and every row loop below stays short. */
+    if (!(ext < FP_PREFETCH_LINES) || !(det != 0.0)) return budget;
+    /* A side parallel to the rows (J′₁₁ or J′₁₀ = 0) bounds nothing. */
+    sl0 = j11 != 0.0 ? j01 / j11 : 0.0;
+    hw0 = j11 != 0.0 ? fabs(det / j11) : w;
+    sl1 = j10 != 0.0 ? j00 / j10 : 0.0;
+    hw1 = j10 != 0.0 ? fabs(det / j10) : w;
+    u0 = prefetch_centre(c->smp->wrap_s, s, L->w);
+    v0 = prefetch_centre(c->smp->wrap_t, t, L->h);
+    jlo = (long)fp_ceil(v0 - ext);
+    jhi = (long)fp_floor(v0 + ext);
+    dv = (double)jlo - v0;
+    /* Row j's slab centres c0, c1 advance by sl0, sl1 per row. */
+    c0 = u0 + sl0 * dv;
+    c1 = u0 + sl1 * dv;
+    for (j = jlo; j <= jhi && budget > 0; ++j, c0 += sl0, c1 += sl1) {
+        long jj = j, i0, i1;
+        double lo = c0 - hw0 > c1 - hw1 ? c0 - hw0 : c1 - hw1, hi = c0 + hw0 < c1 + hw1 ? c0 + hw0 : c1 + hw1;
+        const unsigned char *row;
+        uintptr_t p, end;
+        if (jj < 0 || jj >= L->h) {
+            if (c->smp->wrap_t != SAMPLE_WRAP_REPEAT) continue;
+            jj %= L->h;
+            if (jj < 0) jj += L->h;
+        }
+        if (lo < 0.0) lo = 0.0;
+        if (hi > wmax) hi = wmax;
+        if (!(lo <= hi)) continue;
+        i0 = (long)lo;
+        i1 = (long)hi;
+        row = L->data + (size_t)jj * L->stride;
+        /* The lines of the first and the last texel, always both (the
+         * same line twice costs less than a mispredicted loop exit; a span
+         * longer than two lines, past any normal footprint's, gets its
+         * middle from the filter's own prefetch). */
+        p = (uintptr_t)row + (uintptr_t)i0 * tb;
+        end = (uintptr_t)row + (uintptr_t)(i1 + 1) * tb - 1;
+        SAMPLE_PREFETCH((const void *)p);
+        SAMPLE_PREFETCH((const void *)end);
+        budget -= 2;
+        if ((end >> 6) - (p >> 6) > 1)
+            for (p += 64; p < end && budget > 0; p += 64, --budget) SAMPLE_PREFETCH((const void *)p);
+    }
+    return budget;
+}
+
+void fp_footprint_prefetch(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
+                           float call_bias)
+{
+    const struct sample_level *B = &c->tex->level[c->base];
+    double J[2][2], E, F, G, H, Q, R, sx, s1, p;
+    float s = q->s, t = q->t;
+    int l0, k, budget;
+    /* Non-finite input is the border colour (batch_query_finite): nothing
+     * to read. */
+    if (!(isfinite(s) && isfinite(t))) return;
+    if (c->smp->footprint != SAMPLE_FOOTPRINT_BLINN_NEWELL && c->smp->footprint != SAMPLE_FOOTPRINT_EWA) return;
+    fp_query_jacobian(q, J);
+    if (corners && c->smp->footprint == SAMPLE_FOOTPRINT_BLINN_NEWELL) {
+        /* Corner mode, roughly: the corner mean and the parallelogram of
+         * the bilinear centre Jacobian. */
+        double ms = 0.0, mt = 0.0;
+        for (k = 0; k < 4; ++k) {
+            ms += 0.25 * corners->st[k][0];
+            mt += 0.25 * corners->st[k][1];
+        }
+        s = (float)ms;
+        t = (float)mt;
+        J[0][0] = 0.25 * ((corners->st[1][0] + corners->st[2][0]) - (corners->st[0][0] + corners->st[3][0]));
+        J[0][1] = 0.25 * ((corners->st[2][0] + corners->st[3][0]) - (corners->st[0][0] + corners->st[1][0]));
+        J[1][0] = 0.25 * ((corners->st[1][1] + corners->st[2][1]) - (corners->st[0][1] + corners->st[3][1]));
+        J[1][1] = 0.25 * ((corners->st[2][1] + corners->st[3][1]) - (corners->st[0][1] + corners->st[1][1]));
+        if (!(isfinite(s) && isfinite(t))) return;
+    }
+    /* fp_run's level choice, with a cheap log2 and sqrt for hypot. */
+    E = 0.5 * (J[0][0] * B->w + J[1][1] * B->h);
+    F = 0.5 * (J[0][0] * B->w - J[1][1] * B->h);
+    G = 0.5 * (J[1][0] * B->h + J[0][1] * B->w);
+    H = 0.5 * (J[1][0] * B->h - J[0][1] * B->w);
+    Q = sqrt(E * E + H * H);
+    R = sqrt(F * F + G * G);
+    sx = Q + R;
+    s1 = fabs(Q - R);
+    if (s1 < sx / FP_MAX_ECCENTRICITY) s1 = sx / FP_MAX_ECCENTRICITY;
+    p = approx_log2(s1) - 1.0; /* − log2(FP_MINOR_TEXELS) */
+    p = lod_lambda(c, p < -1e4 ? -1e4f : (p > 1e4 ? 1e4f : (float)p), call_bias);
+    /* lod_split's levels: both are read whatever the blend weight. */
+    p = (double)c->base + (p > 0.0 ? p : 0.0);
+    l0 = p >= (double)c->maxlev ? c->maxlev : (int)p;
+    budget = prefetch_level(c, l0, s, t, J, FP_PREFETCH_LINES);
+    if (l0 < c->maxlev && p != (double)l0) prefetch_level(c, l0 + 1, s, t, J, budget);
+}
+
 static void store(float *dst, const double *v)
 {
     int k;
