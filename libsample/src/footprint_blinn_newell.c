@@ -175,16 +175,18 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     }
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
-        const unsigned char *p;
+        const unsigned char *p, *at;
         if (r < e->spans.n) {
             ilo = e->spans.ilo[r];
             ncol = e->spans.ncol[r];
+            at = e->spans.at[r];
         } else {
             ncol = bn_affine_span(e, dv, &ilo);
+            at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
         }
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
-        p = fp_row_texels(c, lv, j, ilo, (int)ncol, T);
+        p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
         if (!acc->deriv) {
             /* The pyramid alone: no gradient, sums in registers. */
             double xr = M[0][1] * dv, yr = M[1][1] * dv;
@@ -365,16 +367,18 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     area = (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT) != 0;
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
-        const unsigned char *p;
+        const unsigned char *p, *at;
         if (r < e->spans.n) {
             ilo = e->spans.ilo[r];
             ncol = e->spans.ncol[r];
+            at = e->spans.at[r];
         } else {
             ncol = bn_quad_span(e, dv, &ilo);
+            at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
         }
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
-        p = fp_row_texels(c, lv, j, ilo, (int)ncol, tx);
+        p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, tx);
         for (k = 0; k < (int)ncol; ++k) {
             double du = ilo + k - u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
             float t4[4];

@@ -148,16 +148,18 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     }
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
-        const unsigned char *p;
+        const unsigned char *p, *at;
         if (r < m->spans.n) {
             ilo = m->spans.ilo[r];
             ncol = m->spans.ncol[r];
+            at = m->spans.at[r];
         } else {
             ncol = ewa_span(m, dv, &ilo);
+            at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
         }
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
-        p = fp_row_texels(c, lv, j, ilo, (int)ncol, T);
+        p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
         if (!acc->deriv) {
             /* The weight alone: no slope, sums in registers. */
             for (k = 0; k < (int)ncol; ++k) {

@@ -740,25 +740,49 @@ static inline double fp_floor(double x)
 /* A level's row spans, found by the counting pass and kept for the
  * accumulating pass (the first FP_SPAN_MEMO rows; the rare taller
  * footprints recompute the rest): each row's bounds cost a few divisions,
- * a square root for EWA, and two rounding steps. */
+ * a square root for EWA, and two rounding steps, and its address a few
+ * more steps. */
 #define FP_SPAN_MEMO 96
 typedef struct fp_spans {
     int n; /* rows stored by the last complete count */
     double ilo[FP_SPAN_MEMO], ncol[FP_SPAN_MEMO];
+    const unsigned char *at[FP_SPAN_MEMO]; /* fp_span_at */
 } fp_spans;
 
+/* The address of texel ilo of row j of level lv when texels ilo … ilo +
+ * ncol − 1 all lie inside the level (then every wrap mode reads them
+ * there, ctx_texel's own shortcut), NULL otherwise. */
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const sample_ctx *c, int lv, double j, double ilo, double ncol)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    if (j >= 0.0 && j < (double)L->h && ilo >= 0.0 && ilo + ncol <= (double)L->w)
+        return L->data + (size_t)(long)j * L->stride + (size_t)(long)ilo * c->tex->texel_bytes;
+    return NULL;
+}
+
 /* The counting pass's step for row r (row j, texels ilo … ilo + ncol − 1):
- * keep the span, prefetch its lines, add it to *total; nonzero once the
- * total is over the cap (the caller then moves to a coarser level). Every
- * row is bounded by the cap before any texel is read. */
+ * keep the span and its address, prefetch its lines, add it to *total;
+ * nonzero once the total is over the cap (the caller then moves to a
+ * coarser level). Every row is bounded by the cap before any texel is
+ * read. */
 SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
                                       double ncol, double cap, double *total)
 {
+    const unsigned char *at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
     if (r < FP_SPAN_MEMO) {
         sp->ilo[r] = ilo;
         sp->ncol[r] = ncol;
+        sp->at[r] = at;
     }
-    fp_prefetch_span(c, lv, j, ilo, ncol);
+    if (at) {
+        /* The first texel's line, then every line start up to the last
+         * byte (all inside the span). */
+        uintptr_t o = ((uintptr_t)at & ~(uintptr_t)63) + 64, end = (uintptr_t)at + (size_t)ncol * c->tex->texel_bytes;
+        SAMPLE_PREFETCH(at);
+        for (; o < end; o += 64) SAMPLE_PREFETCH((const void *)o);
+    } else {
+        fp_prefetch_span(c, lv, j, ilo, ncol);
+    }
     *total += ncol;
     return *total > cap;
 }
@@ -766,18 +790,17 @@ SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp,
 /* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of row j of
  * level lv as float RGBA, 16 bytes apart from the returned pointer, exactly
  * as ctx_texel reads them (linear rule): a float RGBA span inside the level
- * in place (nothing to decode), another span inside the level decoded in
- * one go by the format's reader (tex_readers) into buf, anything else
- * texel by texel through ctx_texel into buf. Load with memcpy. */
-SAMPLE_FORCE_INLINE const unsigned char *fp_row_texels(const sample_ctx *c, int lv, double j, double ilo, int n,
-                                                       float (*buf)[4])
+ * (at, fp_span_at) in place (nothing to decode), another span inside the
+ * level decoded in one go by the format's reader (tex_readers) into buf,
+ * anything else texel by texel through ctx_texel into buf. Load with
+ * memcpy. */
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const sample_ctx *c, int lv, double j, double ilo, int n,
+                                                        const unsigned char *at, float (*buf)[4])
 {
-    const struct sample_level *L = &c->tex->level[lv];
     int k;
-    if (j >= 0.0 && j < (double)L->h && ilo >= 0.0 && ilo + n <= (double)L->w) {
-        const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)ilo * c->tex->texel_bytes;
-        if (c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4) return p;
-        tex_readers_of(c->tex)->row(p, n, buf);
+    if (at) {
+        if (c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4) return at;
+        tex_readers_of(c->tex)->row(at, n, buf);
     } else {
         for (k = 0; k < n; ++k) ctx_texel(c, lv, ilo + k, j, 1, buf[k]);
     }
