@@ -492,27 +492,33 @@ static int projective(const sample_quad *q, bn_geom *g)
     return 1;
 }
 
-uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
-                         float call_bias, float out[4], float dds[4], float ddt[4],
-                         sample_stats *st)
-{
-    const struct sample_level *B = &c->tex->level[c->base];
+/* A plan's geometry: the query's, and its two levels' memos. */
+typedef struct bn_plan_geom {
     bn_geom g;
     bn_level_geom memo[2];
+} bn_plan_geom;
+_Static_assert(sizeof(bn_plan_geom) <= FP_PLAN_BYTES, "FP_PLAN_BYTES too small for Blinn-Newell");
+
+void fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+                          fp_plan *pl)
+{
+    const struct sample_level *B = &c->tex->level[c->base];
+    bn_plan_geom *pg = (bn_plan_geom *)(void *)pl->geom.bytes;
+    bn_geom *g = &pg->g;
     double Jb[2][2];
     int quad = 0, k;
-    memo[0].lv = memo[1].lv = -1;
-    g.memo = memo;
-    g.s = q->s;
-    g.t = q->t;
-    fp_query_jacobian(q, g.J);
+    pg->memo[0].lv = pg->memo[1].lv = -1;
+    g->memo = pg->memo;
+    g->s = q->s;
+    g->t = q->t;
+    fp_query_jacobian(q, g->J);
     if (corners) {
-        quad = projective(corners, &g);
+        quad = projective(corners, g);
         /* |det DH| ∝ 1/w³ varies over the quad by (whi/wlo)³; beyond 2²⁰
          * (a corner within about a pixel of the horizon) the quad is
          * filtered as its centre parallelogram, which stays exact in centre
          * and centre Jacobian. */
-        if (quad && !(g.whi * g.whi * g.whi <= 0x1p20 * (g.wlo * g.wlo * g.wlo))) quad = -1;
+        if (quad && !(g->whi * g->whi * g->whi <= 0x1p20 * (g->wlo * g->wlo * g->wlo))) quad = -1;
     }
     if (corners && !quad) {
         /* Not a projective image of the square (bow-tie, dart, zero area,
@@ -523,25 +529,34 @@ uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sampl
             ms += 0.25 * corners->st[k][0];
             mt += 0.25 * corners->st[k][1];
         }
-        g.s = (float)ms;
-        g.t = (float)mt;
+        g->s = (float)ms;
+        g->t = (float)mt;
         for (k = 0; k < 4; ++k) {
-            P[k][0] = (double)corners->st[k][0] - g.s;
-            P[k][1] = (double)corners->st[k][1] - g.t;
+            P[k][0] = (double)corners->st[k][0] - g->s;
+            P[k][1] = (double)corners->st[k][1] - g->t;
         }
-        g.J[0][0] = 0.25 * (P[1][0] + P[2][0] - P[0][0] - P[3][0]);
-        g.J[0][1] = 0.25 * (P[2][0] + P[3][0] - P[0][0] - P[1][0]);
-        g.J[1][0] = 0.25 * (P[1][1] + P[2][1] - P[0][1] - P[3][1]);
-        g.J[1][1] = 0.25 * (P[2][1] + P[3][1] - P[0][1] - P[1][1]);
+        g->J[0][0] = 0.25 * (P[1][0] + P[2][0] - P[0][0] - P[3][0]);
+        g->J[0][1] = 0.25 * (P[2][0] + P[3][0] - P[0][0] - P[1][0]);
+        g->J[1][0] = 0.25 * (P[1][1] + P[2][1] - P[0][1] - P[3][1]);
+        g->J[1][1] = 0.25 * (P[2][1] + P[3][1] - P[0][1] - P[1][1]);
     }
     /* Level choice from the minor semi-axis in base texels (after the
      * eccentricity clamp, which also decides whether a quad stays a quad). */
-    Jb[0][0] = g.J[0][0] * B->w;
-    Jb[0][1] = g.J[0][1] * B->w;
-    Jb[1][0] = g.J[1][0] * B->h;
-    Jb[1][1] = g.J[1][1] * B->h;
-    fp_shape_of(Jb, &g.base);
-    if (quad == 1 && (g.base.clamped || !(g.base.s[1] > 0.0))) quad = 0;
-    return fp_run(c, &g, quad == 1 ? bn_quad_level : bn_affine_level, g.base.s[1], g.s, g.t, call_bias, out,
-                  dds, ddt, st);
+    Jb[0][0] = g->J[0][0] * B->w;
+    Jb[0][1] = g->J[0][1] * B->w;
+    Jb[1][0] = g->J[1][0] * B->h;
+    Jb[1][1] = g->J[1][1] * B->h;
+    fp_shape_of(Jb, &g->base);
+    if (quad == 1 && (g->base.clamped || !(g->base.s[1] > 0.0))) quad = 0;
+    fp_run_count(c, g, quad == 1 ? bn_quad_level : bn_affine_level, g->base.s[1], g->s, g->t, call_bias,
+                 &pl->rs);
+}
+
+uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
+                         float call_bias, float out[4], float dds[4], float ddt[4],
+                         sample_stats *st)
+{
+    fp_plan pl;
+    fp_blinn_newell_plan(c, q, corners, call_bias, &pl);
+    return fp_run_read(c, &pl.rs, out, dds, ddt, st);
 }

@@ -343,9 +343,8 @@ static void store(float *dst, const double *v)
         for (k = 0; k < 4; ++k) dst[k] = (float)v[k];
 }
 
-uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base,
-                float s, float t, float call_bias, float out[4], float dds[4], float ddt[4],
-                sample_stats *st)
+void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
+                  float t, float call_bias, fp_run_state *rs)
 {
     /* Four texels stay in reserve for the bilinear fallback below. */
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS - 4.0;
@@ -354,11 +353,8 @@ uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double
      * LOD clamps as for any λ (GL 4.6 §8.14.1). */
     double lb = log2(minor_base) - log2(FP_MINOR_TEXELS);
     float lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias);
-    int l0, l1, k, ok = 0;
+    int l0, l1, ok = 0;
     float f;
-    uint32_t n = 0;
-    fp_accum a0, a1;
-    double r0[4], s0[4], t0[4], r1[4], s1[4], t1[4];
 
     lod_split(c, lam, &l0, &l1, &f);
     if (f == 0.0f) l1 = l0;
@@ -377,6 +373,28 @@ uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double
         if (l1 < c->maxlev) ++l1;
         if (l0 == l1) f = 0.0f;
     }
+    rs->geom = geom;
+    rs->level = level;
+    rs->s = s;
+    rs->t = t;
+    rs->lam = lam;
+    rs->f = f;
+    rs->l0 = l0;
+    rs->l1 = l1;
+    rs->ok = ok;
+}
+
+uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
+                     sample_stats *st)
+{
+    const void *geom = rs->geom;
+    fp_level_fn level = rs->level;
+    int l0 = rs->l0, l1 = rs->l1, k, ok = rs->ok;
+    float f = rs->f;
+    uint32_t n = 0;
+    fp_accum a0, a1;
+    double r0[4], s0[4], t0[4], r1[4], s1[4], t1[4];
+
     if (ok) {
         fp_accum_init(&a0);
         a0.deriv = dds || ddt;
@@ -399,7 +417,7 @@ uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double
         st->level0 = (int16_t)l0;
         st->level1 = (int16_t)(l1 != l0 ? l1 : -1);
         st->level_frac = l1 != l0 ? f : 0.0f;
-        st->lod = lam;
+        st->lod = rs->lam;
     }
     if (!ok) {
         /* Wider than the whole budget even on the coarsest level (or an
@@ -411,10 +429,25 @@ uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double
             st->level1 = -1;
             st->level_frac = 0.0f;
         }
-        return n + recon_level(c, c->maxlev, SAMPLE_LINEAR, s, t, out, dds, ddt);
+        return n + recon_level(c, c->maxlev, SAMPLE_LINEAR, rs->s, rs->t, out, dds, ddt);
     }
     store(out, r0);
     store(dds, s0);
     store(ddt, t0);
     return n;
+}
+
+void fp_footprint_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+                       fp_plan *pl)
+{
+    if (c->smp->footprint == SAMPLE_FOOTPRINT_BLINN_NEWELL)
+        fp_blinn_newell_plan(c, q, corners, call_bias, pl);
+    else
+        fp_ewa_plan(c, q, call_bias, pl);
+}
+
+uint32_t fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
+                          sample_stats *st)
+{
+    return fp_run_read(c, &pl->rs, out, dds, ddt, st);
 }

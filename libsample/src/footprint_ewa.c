@@ -202,24 +202,38 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     return total + sm.n;
 }
 
+/* A plan's geometry: the query's, and its two levels' memos. */
+typedef struct ewa_plan_geom {
+    ewa_geom g;
+    ewa_level_geom memo[2];
+} ewa_plan_geom;
+_Static_assert(sizeof(ewa_plan_geom) <= FP_PLAN_BYTES, "FP_PLAN_BYTES too small for EWA");
+
+void fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl)
+{
+    const struct sample_level *B = &c->tex->level[c->base];
+    ewa_plan_geom *pg = (ewa_plan_geom *)(void *)pl->geom.bytes;
+    ewa_geom *g = &pg->g;
+    double Jb[2][2];
+    pg->memo[0].lv = pg->memo[1].lv = -1;
+    g->memo = pg->memo;
+    g->s = q->s;
+    g->t = q->t;
+    fp_query_jacobian(q, g->J);
+    /* Level from the ellipse's minor semi-axis in base texels (the same rule
+     * as Blinn–Newell; pbrt uses the shorter Jacobian column instead). */
+    Jb[0][0] = g->J[0][0] * B->w;
+    Jb[0][1] = g->J[0][1] * B->w;
+    Jb[1][0] = g->J[1][0] * B->h;
+    Jb[1][1] = g->J[1][1] * B->h;
+    fp_shape_of(Jb, &g->base);
+    fp_run_count(c, g, ewa_level, g->base.s[1], g->s, g->t, call_bias, &pl->rs);
+}
+
 uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
                 float dds[4], float ddt[4], sample_stats *st)
 {
-    const struct sample_level *B = &c->tex->level[c->base];
-    ewa_geom g;
-    ewa_level_geom memo[2];
-    double Jb[2][2];
-    memo[0].lv = memo[1].lv = -1;
-    g.memo = memo;
-    g.s = q->s;
-    g.t = q->t;
-    fp_query_jacobian(q, g.J);
-    /* Level from the ellipse's minor semi-axis in base texels (the same rule
-     * as Blinn–Newell; pbrt uses the shorter Jacobian column instead). */
-    Jb[0][0] = g.J[0][0] * B->w;
-    Jb[0][1] = g.J[0][1] * B->w;
-    Jb[1][0] = g.J[1][0] * B->h;
-    Jb[1][1] = g.J[1][1] * B->h;
-    fp_shape_of(Jb, &g.base);
-    return fp_run(c, &g, ewa_level, g.base.s[1], g.s, g.t, call_bias, out, dds, ddt, st);
+    fp_plan pl;
+    fp_ewa_plan(c, q, call_bias, &pl);
+    return fp_run_read(c, &pl.rs, out, dds, ddt, st);
 }

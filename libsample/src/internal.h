@@ -835,14 +835,49 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, floa
 typedef double (*fp_level_fn)(const sample_ctx *c, const void *geom, int lv, fp_accum *acc,
                               int count_only);
 
-/* The level loop shared by Blinn–Newell and EWA: levels from the minor
- * semi-axis (base texels, after the eccentricity clamp) and the bias, moved
- * coarser while the two levels together would exceed
- * SAMPLE_MAX_FOOTPRINT_TEXELS, blended in double; bilinear at the coarsest
- * level if even that does not fit. Fills out/dds/ddt/st; returns texels. */
-uint32_t fp_run(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base,
-                float s, float t, float call_bias, float out[4], float dds[4], float ddt[4],
-                sample_stats *st);
+/* The level loop shared by Blinn–Newell and EWA, in two halves.
+ * fp_run_count: levels from the minor semi-axis (base texels, after the
+ * eccentricity clamp) and the bias, the counting pass (every row's span
+ * found, kept and prefetched; no texel read), moved coarser while the two
+ * levels together would exceed SAMPLE_MAX_FOOTPRINT_TEXELS. fp_run_read:
+ * the accumulating pass on those levels, blended in double; bilinear at
+ * the coarsest level if even that did not fit. Fills out/dds/ddt/st;
+ * returns texels. The halves may run apart (another query's work in
+ * between) as long as geom stays where it is. */
+typedef struct fp_run_state {
+    const void *geom;
+    fp_level_fn level;
+    float s, t, lam, f;
+    int l0, l1, ok;
+} fp_run_state;
+void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
+                  float t, float call_bias, fp_run_state *rs);
+uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
+                     sample_stats *st);
+
+/* A Blinn–Newell or EWA query split at fp_run's halves, for a batch loop
+ * that plans query i + 1 (its rows' lines then on their way) before it
+ * runs query i: fp_footprint_plan does the geometry and the counting pass
+ * into *pl, fp_footprint_run the accumulating pass, with the results of
+ * fp_blinn_newell / fp_ewa bit for bit (they are these two calls). A plan
+ * holds the filter's geometry and both levels' row spans (FP_PLAN_BYTES)
+ * and must not be moved between the calls. */
+#define FP_PLAN_BYTES 5632
+typedef struct fp_plan {
+    fp_run_state rs;
+    union {
+        double align;
+        void *palign;
+        unsigned char bytes[FP_PLAN_BYTES];
+    } geom;
+} fp_plan;
+void fp_footprint_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+                       fp_plan *pl);
+uint32_t fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
+                          sample_stats *st);
+void fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+                          fp_plan *pl);
+void fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl);
 
 /* The footprint centre on level lv in texel units with texel centres at
  * integers (u0 = s·w − ½), after the coordinate transform of the wrap modes
