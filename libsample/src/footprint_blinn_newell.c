@@ -188,16 +188,18 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
         if (!acc->deriv) {
-            /* The pyramid alone: no gradient, sums in registers. */
-            double xr = M[0][1] * dv, yr = M[1][1] * dv;
-            for (k = 0; k < (int)ncol; ++k) {
-                double du = (ilo + k) - u0, ax = fabs(M[0][0] * du + xr), ay = fabs(M[1][0] * du + yr), w;
+            /* The pyramid alone: no gradient, sums in registers. With
+             * |x|, |y| < 1 both factors are at least 2^−53, so w > 0 (M and
+             * du are finite, fp_shape_reshape: det J′ = ±t0·t1, t ≥ 1);
+             * ii counts texel indices exactly in double. */
+            double xr = M[0][1] * dv, yr = M[1][1] * dv, ii = ilo;
+            const unsigned char *pk = p;
+            for (k = 0; k < (int)ncol; ++k, ii += 1.0, pk += 16) {
+                double du = ii - u0, ax = fabs(M[0][0] * du + xr), ay = fabs(M[1][0] * du + yr);
                 float t4[4];
                 if (ax >= 1.0 || ay >= 1.0) continue;
-                w = (1.0 - ax) * (1.0 - ay);
-                if (w <= 0.0) continue;
-                memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-                fp_sums_add(&sm, w, t4);
+                memcpy(t4, pk, sizeof t4);
+                fp_sums_add(&sm, (1.0 - ax) * (1.0 - ay), t4);
             }
             continue;
         }

@@ -161,19 +161,21 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
         if (!acc->deriv) {
-            /* The weight alone: no slope, sums in registers. */
-            for (k = 0; k < (int)ncol; ++k) {
-                double du = (ilo + k) - u0, r2 = A * du * du + B * du * dv + C * dv * dv, x, w;
+            /* The weight alone: no slope, sums in registers; ii counts
+             * texel indices exactly in double. r² < 1 keeps e ≤ 127. */
+            double ii = ilo;
+            const unsigned char *pk = p;
+            for (k = 0; k < (int)ncol; ++k, ii += 1.0, pk += 16) {
+                double du = ii - u0, r2 = A * du * du + B * du * dv + C * dv * dv, x, w;
                 float t4[4];
                 int e;
                 if (!(r2 < 1.0)) continue;
                 if (r2 < 0.0) r2 = 0.0;
                 x = r2 * 128.0;
                 e = (int)x;
-                if (e > 127) e = 127;
                 w = ewa_lut[e] + (x - e) * (ewa_lut[e + 1] - ewa_lut[e]);
                 if (w <= 0.0) continue;
-                memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+                memcpy(t4, pk, sizeof t4);
                 fp_sums_add(&sm, w, t4);
             }
             continue;
