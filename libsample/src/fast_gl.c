@@ -2,9 +2,10 @@
  * The fast path of sample_batch for the OpenGL filters: NEAREST, LINEAR and
  * CUBIC per level, with or without mipmaps; with a footprint filter, the
  * magnified queries (λ ≤ 0, the mag filter); the anisotropic filter's
- * minified queries (planned with their probes a block ahead, the probes
- * read with this format's bilinear inlined); the other filters' minified
- * queries are handed to the filter (sample_run_footprint). Also the
+ * minified queries (planned with their probes a few queries ahead, the
+ * probes read with this format's bilinear inlined); Blinn–Newell and EWA
+ * planned one query ahead (fp_footprint_plan: geometry, counting pass and
+ * row prefetches) and accumulated by the filter (sample_run_footprint). Also the
  * per-format readers the footprint filters use (tex_readers).
  *
  * It computes exactly what the general path (sampler.c's loop over
@@ -243,8 +244,8 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
 
 /* sampler.c's run_query + gl_apply for a planned query. */
 SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
-                             const fast_plan *pl, sample_format fmt, int nc, size_t tb,
-                             aniso_fn aniso)
+                             const fast_plan *pl, const fp_plan *fpl, sample_format fmt, int nc,
+                             size_t tb, aniso_fn aniso)
 {
     float *out = a->rgba + 4 * i;
     float *dds = a->drgba_ds ? a->drgba_ds + 4 * i : NULL;
@@ -263,7 +264,7 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         return;
     }
     if (pl->kind == PLAN_FOOTPRINT) {
-        sample_run_footprint(c, a, i);
+        sample_run_footprint(c, a, i, fpl);
         return;
     }
     if (pl->kind == PLAN_ANISO) {
@@ -337,6 +338,17 @@ TEX_READERS_FMT(F16)
 TEX_READERS_FMT(UNORM8)
 TEX_READERS_FMT(SRGB8)
 
+/* plan_query for a Blinn–Newell or EWA sampler, with the filter's own plan
+ * of a minified query. */
+SAMPLE_FORCE_INLINE void plan_fp_query(const sample_ctx *c, const sample_batch_args *a, size_t i, size_t tb,
+                                       fast_plan *pl, fp_plan *fpl)
+{
+    plan_query(c, a, i, NULL, tb, pl);
+    if (pl->kind == PLAN_FOOTPRINT)
+        fp_footprint_plan(c, &a->queries[i], a->corners ? &a->corners[i] : NULL,
+                          a->lod_bias ? a->lod_bias[i] : 0.0f, fpl);
+}
+
 /* The batch loop, generic over the texel format and channel count; each
  * instantiation below has them as constants. */
 SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
@@ -366,8 +378,22 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, &ring[i]);
         for (i = 0; i < a->count; ++i) {
             fast_plan *pl = &ring[i % FAST_AHEAD_ANISO];
-            run_query(c, a, i, pl, fmt, nc, tb, aniso);
+            run_query(c, a, i, pl, NULL, fmt, nc, tb, aniso);
             if (i + FAST_AHEAD_ANISO < a->count) plan_query(c, a, i + FAST_AHEAD_ANISO, NULL, tb, pl);
+        }
+        return;
+    }
+    if (smp->footprint == SAMPLE_FOOTPRINT_BLINN_NEWELL || smp->footprint == SAMPLE_FOOTPRINT_EWA) {
+        /* One query ahead: query i + 1's geometry and counting pass (which
+         * finds and prefetches its rows) run before query i accumulates, so
+         * its lines arrive while this one computes. Deeper measured the
+         * same (doc/performance.md). */
+        fast_plan pl[2];
+        fp_plan fpl[2];
+        for (i = 0; i < a->count && i < 2; ++i) plan_fp_query(c, a, i, tb, &pl[i & 1], &fpl[i & 1]);
+        for (i = 0; i < a->count; ++i) {
+            run_query(c, a, i, &pl[i & 1], &fpl[i & 1], fmt, nc, tb, aniso);
+            if (i + 2 < a->count) plan_fp_query(c, a, i + 2, tb, &pl[i & 1], &fpl[i & 1]);
         }
         return;
     }
@@ -375,7 +401,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         fast_plan plan[FAST_BLOCK];
         size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
         for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed ? &mg : NULL, tb, &plan[k]);
-        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], fmt, nc, tb, aniso);
+        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, aniso);
     }
 }
 

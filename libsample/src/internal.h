@@ -278,8 +278,12 @@ static inline const tex_readers *tex_readers_of(const sample_texture *t)
 
 /* The footprint queries of a batch (sampler.c): query i (finite, λ > 0)
  * through the sampler's footprint filter, with its stats. The fast path
- * hands these back; its λ ≤ 0 queries are the mag filter's. */
-void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i);
+ * hands these back; its λ ≤ 0 queries are the mag filter's. With `pl`
+ * (Blinn–Newell, EWA: fp_footprint_plan of query i, done earlier) only
+ * the accumulating pass runs; NULL runs the whole filter. */
+struct fp_plan;
+void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i,
+                          const struct fp_plan *pl);
 
 /* ---- Reconstruction on one level (reconstruct.c) ------------------------ */
 
@@ -568,14 +572,6 @@ static inline void fp_aniso_stats(const fp_aniso_setup *a, sample_stats *st)
     st->level_frac = a->l1 != a->l0 ? a->f : 0.0f;
     st->lod = a->lam;
 }
-/* A prefetch hint for Blinn–Newell and EWA (footprint_common.c), like
- * fp_aniso_plan's: without trigonometry, the level(s) fp_run will choose
- * and the rows of the widened footprint there, at most FP_PREFETCH_LINES
- * cache lines (a normal footprint needs 20 to 60; the filter's own
- * counting pass still prefetches every row). corners may be NULL. */
-void fp_footprint_prefetch(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
-                           float call_bias);
-#define FP_PREFETCH_LINES 64
 uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
                          float call_bias, float out[4], float dds[4], float ddt[4],
                          sample_stats *st);

@@ -110,7 +110,8 @@ static void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i
     if (pl->ch.level1 >= 0) ctx_prefetch_bilinear(c, pl->ch.level1, q->s, q->t);
 }
 
-void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i)
+void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i,
+                          const struct fp_plan *pl)
 {
     const sample_query *q = &a->queries[i];
     float *out = a->rgba + 4 * i;
@@ -124,17 +125,21 @@ void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_
     st->level0 = st->level1 = -1;
     st->level_frac = 0.0f;
     st->lod = 0.0f;
-    switch (c->smp->footprint) {
-    case SAMPLE_FOOTPRINT_ANISOTROPIC:
-        n = fp_anisotropic(c, q, bias, out, dds, ddt, st);
-        break;
-    case SAMPLE_FOOTPRINT_BLINN_NEWELL:
-        n = fp_blinn_newell(c, q, corners, bias, out, dds, ddt, st);
-        break;
-    case SAMPLE_FOOTPRINT_EWA:
-    default:
-        n = fp_ewa(c, q, bias, out, dds, ddt, st);
-        break;
+    if (pl) {
+        n = fp_footprint_run(c, pl, out, dds, ddt, st);
+    } else {
+        switch (c->smp->footprint) {
+        case SAMPLE_FOOTPRINT_ANISOTROPIC:
+            n = fp_anisotropic(c, q, bias, out, dds, ddt, st);
+            break;
+        case SAMPLE_FOOTPRINT_BLINN_NEWELL:
+            n = fp_blinn_newell(c, q, corners, bias, out, dds, ddt, st);
+            break;
+        case SAMPLE_FOOTPRINT_EWA:
+        default:
+            n = fp_ewa(c, q, bias, out, dds, ddt, st);
+            break;
+        }
     }
     st->texels = n;
 }
@@ -149,7 +154,7 @@ static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
     uint32_t n = 0;
 
     if (pl->kind == PLAN_FOOTPRINT) {
-        sample_run_footprint(c, a, i);
+        sample_run_footprint(c, a, i, NULL);
         return;
     }
     st->level0 = st->level1 = -1;
