@@ -44,6 +44,9 @@
 #endif
 /* How many anisotropic queries ahead of their reading their probes' lines
  * are asked for (fast_gl_batch). */
+#ifndef FAST_AHEAD_FP
+#define FAST_AHEAD_FP 16
+#endif
 #ifndef FAST_AHEAD_ANISO
 #define FAST_AHEAD_ANISO 4
 #endif
@@ -338,12 +341,11 @@ TEX_READERS_FMT(F16)
 TEX_READERS_FMT(UNORM8)
 TEX_READERS_FMT(SRGB8)
 
-/* plan_query for a Blinn–Newell or EWA sampler, with the filter's own plan
- * of a minified query. */
-SAMPLE_FORCE_INLINE void plan_fp_query(const sample_ctx *c, const sample_batch_args *a, size_t i, size_t tb,
-                                       fast_plan *pl, fp_plan *fpl)
+/* The filter's own plan of query i when plan_query handed it to the
+ * footprint filter (Blinn–Newell, EWA). */
+SAMPLE_FORCE_INLINE void plan_fp_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
+                                       const fast_plan *pl, fp_plan *fpl)
 {
-    plan_query(c, a, i, NULL, tb, pl);
     if (pl->kind == PLAN_FOOTPRINT)
         fp_footprint_plan(c, &a->queries[i], a->corners ? &a->corners[i] : NULL,
                           a->lod_bias ? a->lod_bias[i] : 0.0f, fpl);
@@ -384,16 +386,23 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         return;
     }
     if (smp->footprint == SAMPLE_FOOTPRINT_BLINN_NEWELL || smp->footprint == SAMPLE_FOOTPRINT_EWA) {
-        /* One query ahead: query i + 1's geometry and counting pass (which
-         * finds and prefetches its rows) run before query i accumulates, so
-         * its lines arrive while this one computes. Deeper measured the
-         * same (doc/performance.md). */
-        fast_plan pl[2];
+        /* Two pipelines: every query is planned FAST_AHEAD_FP ahead (the
+         * magnified ones, read like any GL query, get their lines asked
+         * for as in the blocks below); a minified one's filter plan — its
+         * geometry and counting pass, which finds and prefetches its rows
+         * — is made while the query before it runs, so its lines arrive
+         * during that query's accumulation. Deeper filter plans measured
+         * the same (doc/performance.md) and each is FP_PLAN_BYTES. */
+        fast_plan ring[FAST_AHEAD_FP];
         fp_plan fpl[2];
-        for (i = 0; i < a->count && i < 2; ++i) plan_fp_query(c, a, i, tb, &pl[i & 1], &fpl[i & 1]);
+        size_t ahead = a->count < FAST_AHEAD_FP ? a->count : FAST_AHEAD_FP;
+        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, &ring[i]);
+        if (ahead) plan_fp_query(c, a, 0, &ring[0], &fpl[0]);
         for (i = 0; i < a->count; ++i) {
-            run_query(c, a, i, &pl[i & 1], &fpl[i & 1], fmt, nc, tb, aniso);
-            if (i + 2 < a->count) plan_fp_query(c, a, i + 2, tb, &pl[i & 1], &fpl[i & 1]);
+            fast_plan *pl = &ring[i % FAST_AHEAD_FP];
+            if (i + 1 < a->count) plan_fp_query(c, a, i + 1, &ring[(i + 1) % FAST_AHEAD_FP], &fpl[(i + 1) & 1]);
+            run_query(c, a, i, pl, &fpl[i & 1], fmt, nc, tb, aniso);
+            if (i + FAST_AHEAD_FP < a->count) plan_query(c, a, i + FAST_AHEAD_FP, NULL, tb, pl);
         }
         return;
     }
