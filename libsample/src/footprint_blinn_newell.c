@@ -144,6 +144,9 @@ static double bn_affine_span(const bn_level_geom *e, double dv, double *ilo)
     return row_span(e->u0, lo, hi, ilo);
 }
 
+/* bn_affine_span as an fp_span_fn. */
+static double bn_affine_span_fn(const void *lg, double dv, double *ilo) { return bn_affine_span((const bn_level_geom *)lg, dv, ilo); }
+
 static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc,
                               int count_only)
 {
@@ -164,26 +167,11 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     memcpy(M, e->M, sizeof M);
     jlo = e->jlo;
     nrows = (int)e->nrows;
-    if (count_only) {
-        e->spans.n = 0;
-        for (r = 0; r < nrows; ++r) {
-            double j = jlo + r, ilo = 0.0, ncol = bn_affine_span(e, j - v0, &ilo);
-            if (fp_span_count(c, lv, &e->spans, r, j, ilo, ncol, cap, &total)) return INFINITY;
-        }
-        e->spans.n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
-        return total;
-    }
+    if (count_only) return fp_count_rows(c, lv, &e->spans, bn_affine_span_fn, e, jlo, v0, nrows, cap);
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
         const unsigned char *p, *at;
-        if (r < e->spans.n) {
-            ilo = e->spans.ilo[r];
-            ncol = e->spans.ncol[r];
-            at = e->spans.at[r];
-        } else {
-            ncol = bn_affine_span(e, dv, &ilo);
-            at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
-        }
+        ncol = fp_row_span(c, lv, &e->spans, bn_affine_span_fn, e, r, j, dv, cap, &ilo, &at);
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
@@ -328,6 +316,9 @@ static double bn_quad_span(const bn_level_geom *e, double dv, double *ilo)
     return row_span(e->u0, lo, hi, ilo);
 }
 
+/* bn_quad_span as an fp_span_fn. */
+static double bn_quad_span_fn(const void *lg, double dv, double *ilo) { return bn_quad_span((const bn_level_geom *)lg, dv, ilo); }
+
 static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
 {
     const bn_geom *g = (const bn_geom *)gp;
@@ -347,15 +338,7 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     memcpy(G, e->G, sizeof G);
     jlo = e->jlo;
     nrows = (int)e->nrows;
-    if (count_only) {
-        e->spans.n = 0;
-        for (r = 0; r < nrows; ++r) {
-            double j = jlo + r, ilo = 0.0, ncol = bn_quad_span(e, j - v0, &ilo);
-            if (fp_span_count(c, lv, &e->spans, r, j, ilo, ncol, cap, &total)) return INFINITY;
-        }
-        e->spans.n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
-        return total;
-    }
+    if (count_only) return fp_count_rows(c, lv, &e->spans, bn_quad_span_fn, e, jlo, v0, nrows, cap);
     /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
      * ∫ pyr(x, y)·T(H(x, y)) dx dy = ∫ pyr(H⁻¹(u))·T(u) / |det DH| du, so
      * each texel's weight is divided by |det DH| at its preimage. For a
@@ -370,14 +353,7 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
         const unsigned char *p, *at;
-        if (r < e->spans.n) {
-            ilo = e->spans.ilo[r];
-            ncol = e->spans.ncol[r];
-            at = e->spans.at[r];
-        } else {
-            ncol = bn_quad_span(e, dv, &ilo);
-            at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
-        }
+        ncol = fp_row_span(c, lv, &e->spans, bn_quad_span_fn, e, r, j, dv, cap, &ilo, &at);
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, tx);

@@ -116,6 +116,9 @@ static double ewa_span(const ewa_level_geom *m, double dv, double *ilo)
     return b >= a ? b - a + 1.0 : 0.0;
 }
 
+/* ewa_span as an fp_span_fn. */
+static double ewa_span_fn(const void *lg, double dv, double *ilo) { return ewa_span((const ewa_level_geom *)lg, dv, ilo); }
+
 static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
 {
     const ewa_geom *g = (const ewa_geom *)gp;
@@ -137,26 +140,11 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     nrows = (int)m->nrows;
     ku = m->ku;
     kv = m->kv;
-    if (count_only) {
-        m->spans.n = 0;
-        for (r = 0; r < nrows; ++r) {
-            double j = jlo + r, ilo = 0.0, ncol = ewa_span(m, j - v0, &ilo);
-            if (fp_span_count(c, lv, &m->spans, r, j, ilo, ncol, cap, &total)) return INFINITY;
-        }
-        m->spans.n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
-        return total;
-    }
+    if (count_only) return fp_count_rows(c, lv, &m->spans, ewa_span_fn, m, jlo, v0, nrows, cap);
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
         const unsigned char *p, *at;
-        if (r < m->spans.n) {
-            ilo = m->spans.ilo[r];
-            ncol = m->spans.ncol[r];
-            at = m->spans.at[r];
-        } else {
-            ncol = ewa_span(m, dv, &ilo);
-            at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
-        }
+        ncol = fp_row_span(c, lv, &m->spans, ewa_span_fn, m, r, j, dv, cap, &ilo, &at);
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);

@@ -783,6 +783,44 @@ SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp,
     return *total > cap;
 }
 
+/* A filter's row bounds: the span of texel indices on the row dv texels
+ * from the level's centre (*ilo, returns the count; 0 if none). */
+typedef double (*fp_span_fn)(const void *level_geom, double dv, double *ilo);
+
+/* The counting pass of a level of nrows rows from jlo (fp_span_count on
+ * each); returns the texels, or INFINITY once over the cap. Generic over
+ * the filter's span function, inlined with it (zstd style). */
+SAMPLE_FORCE_INLINE double fp_count_rows(const sample_ctx *c, int lv, fp_spans *sp, fp_span_fn span,
+                                         const void *lg, double jlo, double v0, int nrows, double cap)
+{
+    double total = 0.0;
+    int r;
+    sp->n = 0;
+    for (r = 0; r < nrows; ++r) {
+        double j = jlo + r, ilo = 0.0, ncol = span(lg, j - v0, &ilo);
+        if (fp_span_count(c, lv, sp, r, j, ilo, ncol, cap, &total)) return INFINITY;
+    }
+    sp->n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
+    return total;
+}
+
+/* Row r's span in the accumulating pass: the one the count stored, or
+ * (past FP_SPAN_MEMO rows) found again; its address in *at (fp_span_at). */
+SAMPLE_FORCE_INLINE double fp_row_span(const sample_ctx *c, int lv, const fp_spans *sp, fp_span_fn span,
+                                       const void *lg, int r, double j, double dv, double cap, double *ilo,
+                                       const unsigned char **at)
+{
+    double ncol;
+    if (r < sp->n) {
+        *ilo = sp->ilo[r];
+        *at = sp->at[r];
+        return sp->ncol[r];
+    }
+    ncol = span(lg, dv, ilo);
+    *at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, *ilo, ncol) : NULL;
+    return ncol;
+}
+
 /* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of row j of
  * level lv as float RGBA, 16 bytes apart from the returned pointer, exactly
  * as ctx_texel reads them (linear rule): a float RGBA span inside the level
