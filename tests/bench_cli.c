@@ -31,17 +31,8 @@ static int run(const char *args)
 static char *slurp(const char *name)
 {
     char p[1024];
-    FILE *f;
-    long n;
-    char *s = NULL;
     snprintf(p, sizeof p, "%s/%s", dir, name);
-    if (!(f = fopen(p, "rb"))) return NULL;
-    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
-        (s = malloc((size_t)n + 1)) != NULL) {
-        s[fread(s, 1, (size_t)n, f)] = 0;
-    }
-    fclose(f);
-    return s;
+    return check_slurp(p, NULL);
 }
 
 static void help_and_usage(void)

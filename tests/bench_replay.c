@@ -44,19 +44,8 @@ static int sh(const char *fmt, ...)
 static char *slurp(const char *name, size_t *len)
 {
     char p[1024];
-    FILE *f;
-    long n;
-    char *s = NULL;
     snprintf(p, sizeof p, "%s/%s", dir, name);
-    if (!(f = fopen(p, "rb"))) return NULL;
-    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
-        (s = malloc((size_t)n + 1)) != NULL) {
-        size_t got = fread(s, 1, (size_t)n, f);
-        s[got] = 0;
-        if (len) *len = got;
-    }
-    fclose(f);
-    return s;
+    return check_slurp(p, len);
 }
 
 static int contains(const char *file, const char *what)

@@ -9,6 +9,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int check_pass_count, check_fail_count, check_case_failed;
@@ -49,6 +50,27 @@ static int check_finish(void)
 {
     printf("%d passed, %d failed\n", check_pass_count, check_fail_count);
     return check_fail_count ? 1 : 0;
+}
+
+/* The whole file at `path`, NUL-terminated, in a malloc'd buffer (the
+ * caller frees it); NULL if it cannot be read. *len (if non-NULL) gets the
+ * bytes read, 0 on failure. The test programs read their tools' outputs
+ * with it. */
+static inline void *check_slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    long n;
+    char *s = NULL;
+    if (len) *len = 0;
+    if (!f) return NULL;
+    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
+        (s = malloc((size_t)n + 1)) != NULL) {
+        size_t got = fread(s, 1, (size_t)n, f);
+        s[got] = '\0';
+        if (len) *len = got;
+    }
+    fclose(f);
+    return s;
 }
 
 #endif

@@ -40,20 +40,8 @@ static int run(const char *args)
 static void *slurp(const char *sub, const char *name, size_t *len)
 {
     char p[1024];
-    FILE *f;
-    long n;
-    void *d = NULL;
     snprintf(p, sizeof p, "%s/%s/%s", dir, sub, name);
-    *len = 0;
-    f = fopen(p, "rb");
-    if (!f) return NULL;
-    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
-        (d = malloc((size_t)n + 1)) != NULL) {
-        *len = fread(d, 1, (size_t)n, f);
-        ((char *)d)[*len] = '\0';
-    }
-    fclose(f);
-    return d;
+    return check_slurp(p, len);
 }
 
 static void exit_codes(void)

@@ -28,23 +28,8 @@ static int run(const char *args)
 static char *slurp(const char *name)
 {
     char path[2048];
-    FILE *f;
-    long n;
-    char *s;
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    s = (char *)malloc((size_t)n + 1);
-    if (s && fread(s, 1, (size_t)n, f) != (size_t)n) {
-        free(s);
-        s = NULL;
-    }
-    if (s) s[n] = '\0';
-    fclose(f);
-    return s;
+    return check_slurp(path, NULL);
 }
 
 static void test_usage(void)

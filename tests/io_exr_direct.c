@@ -14,24 +14,6 @@ static sample_texture *make_tex(int w, int h, int nchan, sample_format fmt)
     return io_test_texture(w, h, nchan, fmt, 777u, SAMPLE_MIPGEN_BOX, 0);
 }
 
-static void *slurp(const char *path, size_t *size)
-{
-    FILE *f = fopen(path, "rb");
-    long n;
-    void *buf = NULL;
-    *size = 0;
-    if (!f) return NULL;
-    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0 &&
-        (buf = malloc((size_t)n)) != NULL && fread(buf, 1, (size_t)n, f) != (size_t)n) {
-        free(buf);
-        buf = NULL;
-    } else if (buf) {
-        *size = (size_t)n;
-    }
-    fclose(f);
-    return buf;
-}
-
 /* Every level of `path`: the direct reader's bytes equal OIIO's bytes (same
  * type, bit for bit), and the texture the public call builds through the
  * direct path holds those values. */
@@ -158,7 +140,7 @@ static void test_memory(void)
 {
     char p[1024];
     size_t size;
-    void *buf = slurp(io_path(p, sizeof p, io_scratch, "ours_half.exr"), &size);
+    void *buf = check_slurp(io_path(p, sizeof p, io_scratch, "ours_half.exr"), &size);
     sample_texture *a = NULL, *b = NULL;
     sample_error e;
     unsigned long before = io_exr_direct_reads();
@@ -227,7 +209,7 @@ static void test_truncated(void)
     sample_texture *t = NULL;
     sample_error e;
     write_mip(io_path(p, sizeof p, io_scratch, "cut_src.exr"), 128, 96, 4, 1);
-    buf = slurp(p, &size);
+    buf = check_slurp(p, &size);
     CHECK(buf != NULL && size > 4096, "cannot read %s", p);
     if (!buf || size <= 4096) {
         free(buf);
