@@ -441,8 +441,10 @@ FAST_GL_KERNELS(SRGB8)
 #define ISA_READERS_ROW(fmt)                                                   \
     [SAMPLE_FORMAT_##fmt] = {{row_##fmt##_1, bilinear_##fmt##_1}, {row_##fmt##_2, bilinear_##fmt##_2}, \
                              {row_##fmt##_3, bilinear_##fmt##_3}, {row_##fmt##_4, bilinear_##fmt##_4}}
+extern const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels); /* footprint_rows.c */
 const isa_kernels SAMPLE_ISA_NAME(isa_kernels) = {
     .fast_gl = {ISA_KERNELS_ROW(F32), ISA_KERNELS_ROW(F16), ISA_KERNELS_ROW(UNORM8), ISA_KERNELS_ROW(SRGB8)},
     .readers = {ISA_READERS_ROW(F32), ISA_READERS_ROW(F16), ISA_READERS_ROW(UNORM8), ISA_READERS_ROW(SRGB8)},
+    .rows = &SAMPLE_ISA_NAME(fp_row_kernels),
 };
 _Static_assert(SAMPLE_FORMAT_COUNT == 4, "one row of isa_kernels per format");

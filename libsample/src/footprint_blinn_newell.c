@@ -157,6 +157,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     int r, k, nrows;
     fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
+    const fp_row_kernels *rows;
 
     if (e->lv != lv) bn_affine_setup(c, g, lv, e);
     if (!(e->nrows <= cap)) return INFINITY;
@@ -168,6 +169,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     jlo = e->jlo;
     nrows = (int)e->nrows;
     if (count_only) return fp_count_rows(c, lv, &e->spans, bn_affine_span_fn, e, jlo, v0, nrows, cap);
+    rows = isa_kernels_active()->rows;
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
         const unsigned char *p, *at;
@@ -176,19 +178,12 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
         if (!acc->deriv) {
-            /* The pyramid alone: no gradient, sums in registers. With
-             * |x|, |y| < 1 both factors are at least 2^−53, so w > 0 (M and
-             * du are finite, fp_shape_reshape: det J′ = ±t0·t1, t ≥ 1);
-             * ii counts texel indices exactly in double. */
-            double xr = M[0][1] * dv, yr = M[1][1] * dv, ii = ilo;
-            const unsigned char *pk = p;
-            for (k = 0; k < (int)ncol; ++k, ii += 1.0, pk += 16) {
-                double du = ii - u0, ax = fabs(M[0][0] * du + xr), ay = fabs(M[1][0] * du + yr);
-                float t4[4];
-                if (ax >= 1.0 || ay >= 1.0) continue;
-                memcpy(t4, pk, sizeof t4);
-                fp_sums_add(&sm, (1.0 - ax) * (1.0 - ay), t4);
-            }
+            /* The pyramid alone, the row at once (footprint_rows.c), sums
+             * in registers. With |x|, |y| < 1 both factors are at least
+             * 2^−53, so w > 0 there (M and du are finite, fp_shape_reshape:
+             * det J′ = ±t0·t1, t ≥ 1). */
+            const double m[4] = {M[0][0], M[0][1] * dv, M[1][0], M[1][1] * dv};
+            rows->bn_row(&sm, p, (int)ncol, ilo, u0, m);
             continue;
         }
         for (k = 0; k < (int)ncol; ++k) {

@@ -19,7 +19,7 @@
  *         printf("%.9e,", k == 128 ? 0.0 : exp(-2.0 * k / 128) - exp(-2.0));
  * (pbrt's 128-entry table plus the end point, so that interpolating between
  * entries makes the weight, and hence the result, continuous in r²). */
-static const double ewa_lut[129] = {
+const double fp_ewa_lut[129] = {
     8.646647168e-01, 8.491611538e-01, 8.338979512e-01, 8.188713827e-01,
     8.040777796e-01, 7.895135300e-01, 7.751750781e-01, 7.610589234e-01,
     7.471616193e-01, 7.334797730e-01, 7.200100441e-01, 7.067491439e-01,
@@ -128,6 +128,8 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     int r, k, nrows;
     fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
+    const fp_row_kernels *rows;
+    double abc[3];
 
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
     if (!(m->nrows <= cap)) return INFINITY;
@@ -140,7 +142,11 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     nrows = (int)m->nrows;
     ku = m->ku;
     kv = m->kv;
+    abc[0] = A;
+    abc[1] = B;
+    abc[2] = C;
     if (count_only) return fp_count_rows(c, lv, &m->spans, ewa_span_fn, m, jlo, v0, nrows, cap);
+    rows = isa_kernels_active()->rows;
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
         const unsigned char *p, *at;
@@ -149,37 +155,17 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
         if (!acc->deriv) {
-            /* The weight alone: no slope, sums in registers; ii counts
-             * texel indices exactly in double. r² < 1 keeps e ≤ 127. */
-            double ii = ilo;
-            const unsigned char *pk = p;
-            for (k = 0; k < (int)ncol; ++k, ii += 1.0, pk += 16) {
-                double du = ii - u0, r2 = A * du * du + B * du * dv + C * dv * dv, x, w;
-                float t4[4];
-                int e;
-                if (!(r2 < 1.0)) continue;
-                if (r2 < 0.0) r2 = 0.0;
-                x = r2 * 128.0;
-                e = (int)x;
-                w = ewa_lut[e] + (x - e) * (ewa_lut[e + 1] - ewa_lut[e]);
-                if (w <= 0.0) continue;
-                memcpy(t4, pk, sizeof t4);
-                fp_sums_add(&sm, w, t4);
-            }
+            /* The weight alone, the row at once (footprint_rows.c), sums
+             * in registers. */
+            rows->ewa_row(&sm, p, (int)ncol, ilo, u0, dv, abc);
             continue;
         }
         for (k = 0; k < (int)ncol; ++k) {
-            double ii = ilo + k, du = ii - u0, r2, x, w, dw;
+            double ii = ilo + k, du = ii - u0, r2, w, dw;
             float t4[4];
-            int e;
             r2 = A * du * du + B * du * dv + C * dv * dv;
             if (!(r2 < 1.0)) continue;
-            if (r2 < 0.0) r2 = 0.0;
-            x = r2 * 128.0;
-            e = (int)x;
-            if (e > 127) e = 127;
-            dw = (ewa_lut[e + 1] - ewa_lut[e]) * 128.0; /* dw/dr² */
-            w = ewa_lut[e] + (x - e) * (ewa_lut[e + 1] - ewa_lut[e]);
+            w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, &dw);
             if (w <= 0.0) continue;
             memcpy(t4, p + 16 * (size_t)k, sizeof t4);
             /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */

@@ -236,9 +236,22 @@ typedef enum sample_isa {
     SAMPLE_ISA_COUNT
 } sample_isa;
 
+/* The footprint filters' rows without derivatives (footprint_rows.c, the
+ * same build per instruction set): Blinn–Newell's parallelogram and EWA,
+ * each adding the weighted texels k < n at p (float RGBA, 16 bytes apart,
+ * fp_span_texels) of the row's texels ilo + k to *s. */
+struct fp_sums;
+typedef struct fp_row_kernels {
+    void (*bn_row)(struct fp_sums *s, const unsigned char *p, int n, double ilo, double u0,
+                   const double m[4]);
+    void (*ewa_row)(struct fp_sums *s, const unsigned char *p, int n, double ilo, double u0, double dv,
+                    const double abc[3]);
+} fp_row_kernels;
+
 typedef struct isa_kernels {
     fast_gl_fn fast_gl[SAMPLE_FORMAT_COUNT][4]; /* [format][channels − 1] */
     tex_readers readers[SAMPLE_FORMAT_COUNT][4];
+    const fp_row_kernels *rows;
 } isa_kernels;
 
 #define SAMPLE_ISA_CAT_(a, b) a##_##b
@@ -670,6 +683,19 @@ SAMPLE_FORCE_INLINE void fp_sums_add(fp_sums *s, double w, const float T[4])
     s->sw += w;
     for (k = 0; k < 4; ++k) s->sT[k] += w * T[k];
     s->n++;
+}
+
+/* EWA's weight, e^(−2r²) − e^(−2), interpolated in fp_ewa_lut
+ * (footprint_ewa.c) at r² ∈ [0, 1); its slope dw/dr² in *dwdr2 if asked
+ * for. */
+extern const double fp_ewa_lut[129];
+SAMPLE_FORCE_INLINE double fp_ewa_weight(double r2, double *dwdr2)
+{
+    double x = r2 * 128.0;
+    int e = (int)x;
+    if (e > 127) e = 127;
+    if (dwdr2) *dwdr2 = (fp_ewa_lut[e + 1] - fp_ewa_lut[e]) * 128.0;
+    return fp_ewa_lut[e] + (x - e) * (fp_ewa_lut[e + 1] - fp_ewa_lut[e]);
 }
 
 /* a ← a + s for an fp_accum that received nothing else (a level's sums
