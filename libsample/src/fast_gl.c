@@ -57,6 +57,7 @@ typedef struct fast_taps {
     const unsigned char *row[4]; /* NULL: the row reads the border colour */
     int col[4];                  /* texel index; −1: the border colour */
     float fu, fv;                /* α, β: the fractional parts (eq. 8.13) */
+    int inside;                  /* every tap inside the level: no border */
 } fast_taps;
 
 enum { PLAN_GL, PLAN_BORDER, PLAN_ANISO, PLAN_FOOTPRINT };
@@ -89,16 +90,17 @@ static int kind_taps(sample_filter kind)
 
 /* Indices (double)i0 + first + k, k < n, on an axis of len texels, exactly
  * as wrap_index maps them. i0 is integral (a floor). A run inside the axis
- * maps to itself; REPEAT below 2^24 is an integer modulo (the same true
- * modulo as wrap_index's exact fmod); anything else asks wrap_index. */
-SAMPLE_FORCE_INLINE void axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
+ * maps to itself (returns 1); REPEAT below 2^24 is an integer modulo (the
+ * same true modulo as wrap_index's exact fmod); anything else asks
+ * wrap_index (both return 0). */
+SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
                               int out[4])
 {
     int k;
     if (i0 >= (float)-first && i0 <= (float)(len - n - first)) {
         int b = (int)i0 + first;
         for (k = 0; k < n; ++k) out[k] = b + k;
-        return;
+        return 1;
     }
     if (mode == SAMPLE_WRAP_REPEAT && fabsf(i0) < 16777216.0f) {
         int r = ((int)i0 + first) % len;
@@ -107,9 +109,10 @@ SAMPLE_FORCE_INLINE void axis_index(sample_wrap mode, float i0, int len, int n, 
             out[k] = r;
             if (++r == len) r = 0;
         }
-        return;
+        return 0;
     }
     for (k = 0; k < n; ++k) out[k] = wrap_index(mode, (double)i0 + (first + k), len, linear);
+    return 0;
 }
 
 /* Prefetch the lines of texels c0 … c1 of a row (either may be −1, the
@@ -148,8 +151,8 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
         tp->fu = a - i0;
         tp->fv = b - j0;
     }
-    axis_index(c->smp->wrap_s, i0, L->w, n, first, kind != SAMPLE_NEAREST, tp->col);
-    axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y);
+    tp->inside = axis_index(c->smp->wrap_s, i0, L->w, n, first, kind != SAMPLE_NEAREST, tp->col);
+    tp->inside &= axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y);
     for (k = 0; k < n; ++k) {
         const unsigned char *r = y[k] < 0 ? NULL : L->data + (size_t)y[k] * L->stride;
         tp->row[k] = r;
@@ -179,10 +182,20 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
     }
     if (kind == SAMPLE_LINEAR) {
         v4f T[4];
-        T[0] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[0]);
-        T[1] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[1]);
-        T[2] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[0]);
-        T[3] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[1]);
+        if (tp->inside) {
+            /* Most queries: the 2 × 2 block lies in the level, two texel
+             * pairs side by side. */
+            const unsigned char *p0 = tp->row[0] + (size_t)tp->col[0] * tb, *p1 = tp->row[1] + (size_t)tp->col[0] * tb;
+            T[0] = tex_decode_v4(fmt, nc, p0);
+            T[1] = tex_decode_v4(fmt, nc, p0 + tb);
+            T[2] = tex_decode_v4(fmt, nc, p1);
+            T[3] = tex_decode_v4(fmt, nc, p1 + tb);
+        } else {
+            T[0] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[0]);
+            T[1] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[1]);
+            T[2] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[0]);
+            T[3] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[1]);
+        }
         recon_bilerp(T, tp->fu, tp->fv, out, dds, ddt);
         n = 4;
     } else {
@@ -322,17 +335,23 @@ SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format f
     {                                                                          \
         decode_row(SAMPLE_FORMAT_##fmt, nc, p, n, out);                        \
     }                                                                          \
+    SAMPLE_FORCE_INLINE uint32_t bilinear_inline_##fmt##_##nc(const sample_ctx *c, int lv, float s, \
+                                                              float t, float out[4], float dds[4], \
+                                                              float ddt[4])  \
+    {                                                                          \
+        return bilinear_level(c, SAMPLE_FORMAT_##fmt, nc, lv, s, t, out, dds, ddt); \
+    }                                                                          \
     static uint32_t bilinear_##fmt##_##nc(const sample_ctx *c, int lv, float s, float t, \
                                           float out[4], float dds[4], float ddt[4]) \
     {                                                                          \
-        return bilinear_level(c, SAMPLE_FORMAT_##fmt, nc, lv, s, t, out, dds, ddt); \
+        return bilinear_inline_##fmt##_##nc(c, lv, s, t, out, dds, ddt);      \
     }                                                                          \
     /* fp_anisotropic's probes with this format's bilinear inlined. */         \
     static SAMPLE_NOINLINE uint32_t aniso_##fmt##_##nc(const sample_ctx *c, const sample_query *q, \
                                                        const fp_aniso_setup *an, float out[4], \
                                                        float dds[4], float ddt[4]) \
     {                                                                          \
-        return fp_aniso_probes(c, q, an, bilinear_##fmt##_##nc, out, dds, ddt); \
+        return fp_aniso_probes(c, q, an, bilinear_inline_##fmt##_##nc, out, dds, ddt); \
     }
 #define TEX_READERS_FMT(fmt)                                                   \
     TEX_READERS(fmt, 1) TEX_READERS(fmt, 2) TEX_READERS(fmt, 3) TEX_READERS(fmt, 4)
