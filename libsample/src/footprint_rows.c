@@ -36,6 +36,7 @@
 typedef double v4d __attribute__((vector_size(32)));
 typedef float v4s __attribute__((vector_size(16)));
 typedef int64_t v4l __attribute__((vector_size(32)));
+typedef int32_t v4i __attribute__((vector_size(16)));
 
 static inline v4d v4d_set1(double x) { return (v4d){x, x, x, x}; }
 /* |x|: the sign bit cleared, as fabs. */
@@ -147,10 +148,17 @@ static void ewa_row(fp_sums *s, const unsigned char *p, int n, double ilo, doubl
     for (k = 0; k < n; k += 4, kk += 4.0) {
         v4d du = (ilo + kk) - u0, r2 = A * du * du + B * du * dv + cvv, w;
         v4l in = r2 < 1.0;
-        int j, e = n - k < 4 ? n - k : 4;
-        /* Lanes outside read the table at 0 and are masked out after. */
+        int e = n - k < 4 ? n - k : 4;
+        v4d x, lo, hi;
+        v4i ie;
+        /* fp_ewa_weight on four lanes; lanes outside read the table at 0
+         * and are masked out after. r² < 1 keeps the index ≤ 127. */
         r2 = (v4d)((v4l)v4d_pos(r2) & in);
-        for (j = 0; j < 4; ++j) w[j] = fp_ewa_weight(r2[j], NULL);
+        x = r2 * 128.0;
+        ie = __builtin_convertvector(x, v4i);
+        lo = (v4d){fp_ewa_lut[ie[0]], fp_ewa_lut[ie[1]], fp_ewa_lut[ie[2]], fp_ewa_lut[ie[3]]};
+        hi = (v4d){fp_ewa_lut[ie[0] + 1], fp_ewa_lut[ie[1] + 1], fp_ewa_lut[ie[2] + 1], fp_ewa_lut[ie[3] + 1]};
+        w = lo + (x - __builtin_convertvector(ie, v4d)) * (hi - lo);
         /* Table values are in [0, 1): w is ≥ +0 and not NaN. */
         w = (v4d)((v4l)w & in);
         sums_chunk(&r, w, p + 16 * (size_t)k, e);
