@@ -152,7 +152,16 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
         tp->fv = b - j0;
     }
     tp->inside = axis_index(c->smp->wrap_s, i0, L->w, n, first, kind != SAMPLE_NEAREST, tp->col);
-    tp->inside &= axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y);
+    if (axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y)) {
+        /* Consecutive rows inside the level: one stride apart. */
+        const unsigned char *r = L->data + (size_t)y[0] * L->stride;
+        for (k = 0; k < n; ++k, r += L->stride) {
+            tp->row[k] = r;
+            if (prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], tb);
+        }
+        return;
+    }
+    tp->inside = 0;
     for (k = 0; k < n; ++k) {
         const unsigned char *r = y[k] < 0 ? NULL : L->data + (size_t)y[k] * L->stride;
         tp->row[k] = r;
