@@ -33,7 +33,10 @@ static void file_name(int k, oiio_ts_format fmt)
              fmt == OIIO_TS_HALF ? "exr" : "tx");
 }
 
-/* xorshift32: a fixed, platform-independent sequence. */
+/* xorshift32: a fixed, platform-independent sequence. Callers draw each
+ * value in its own initializer, in order: the expressions of one braced
+ * initializer list are indeterminately sequenced (C11 6.7.9p23), so two
+ * rnd() calls in one list need not run left to right on every compiler. */
 static uint32_t rng_state = 12345u;
 static float rnd(void)
 {
@@ -108,7 +111,8 @@ static void closest_exact(void)
             sample_batch_args args = {0};
             if (!tex || !ot) continue;
             for (i = 0; i < NQ; ++i) {
-                sample_query z = {off_edge(W, -1.0f, 3.0f), off_edge(H, -1.0f, 3.0f), 0, 0, 0, 0};
+                float s = off_edge(W, -1.0f, 3.0f), t = off_edge(H, -1.0f, 3.0f);
+                sample_query z = {s, t, 0, 0, 0, 0};
                 q[i] = z;
             }
             sample_sampler_init(&smp);
@@ -153,7 +157,8 @@ static void bilinear_close(void)
     size_t i;
     if (!tex || !ot) return;
     for (i = 0; i < NQ; ++i) {
-        sample_query z = {rnd() * 3.0f - 1.0f, rnd() * 3.0f - 1.0f, 0, 0, 0, 0};
+        float s = rnd() * 3.0f - 1.0f, t = rnd() * 3.0f - 1.0f;
+        sample_query z = {s, t, 0, 0, 0, 0};
         q[i] = z;
     }
     sample_sampler_init(&smp);

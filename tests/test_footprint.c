@@ -8,6 +8,14 @@
  */
 #include "footprint_util.h"
 
+/* Random values are drawn into named variables, one initializer or
+ * statement each, before the call that uses them: the order in which a
+ * call's arguments are evaluated is unspecified in C (GCC goes right to
+ * left, Clang left to right), so several urand() calls in one argument
+ * list gave the two compilers different queries. The variables are drawn
+ * last argument first, the order GCC used, so the queries are the ones the
+ * suite has always tested. */
+
 static float f_const(int i, int j, int ch) { (void)i; (void)j; return ch == 3 ? 1.0f : 0.3f + 0.1f * ch; }
 static float f_mild(int i, int j, int ch)
 {
@@ -36,8 +44,8 @@ static void constant_exact(void)
         c = ctx_for(t, &s);
         for (n = 0; n < 60; ++n) {
             double a = exp2(urand(-3, 9)), b = a * exp2(urand(-8, 0));
-            sample_query q = footprint((float)urand(-2, 3), (float)urand(-2, 3), a, b, urand(0, 6.3),
-                                       urand(0, 6.3), 37, 20);
+            double skew = urand(0, 6.3), th = urand(0, 6.3), ct = urand(-2, 3), cs = urand(-2, 3);
+            sample_query q = footprint((float)cs, (float)ct, a, b, th, skew, 37, 20);
             for (f = 0; f < FILTER_N; ++f) {
                 float out[4];
                 run_filter(f, &c, &q, NULL, out, NULL, NULL, NULL);
@@ -68,8 +76,8 @@ static void weights_normalized(void)
     sample_sampler_init(&s);
     s.max_anisotropy = 8.0f;
     for (n = 0; n < 3; ++n) {
-        sample_query q = footprint((float)urand(0, 1), (float)urand(0, 1), 2.5 + n, 0.7 + 0.5 * n, urand(0, 3),
-                                   urand(0, 3), 8, 8);
+        double skew = urand(0, 3), th = urand(0, 3), ct = urand(0, 1), cs = urand(0, 1);
+        sample_query q = footprint((float)cs, (float)ct, 2.5 + n, 0.7 + 0.5 * n, th, skew, 8, 8);
         double sum[FILTER_N] = {0, 0, 0};
         for (ind_j = 0; ind_j < 8; ++ind_j)
             for (ind_i = 0; ind_i < 8; ++ind_i) {
@@ -102,7 +110,8 @@ static void column_symmetry(void)
     c = ctx_for(t, &s);
     for (n = 0; n < 40; ++n) {
         double a = exp2(urand(0, 6)), b = a * exp2(urand(-5, 0));
-        sample_query q = footprint((float)urand(0, 1), (float)urand(0, 1), a, b, urand(0, 6.3), urand(0, 6.3), 64, 48);
+        double skew = urand(0, 6.3), th = urand(0, 6.3), ct = urand(0, 1), cs = urand(0, 1);
+        sample_query q = footprint((float)cs, (float)ct, a, b, th, skew, 64, 48);
         sample_query sw = q, ng = q;
         sw.dsdx = q.dsdy; sw.dtdx = q.dtdy; sw.dsdy = q.dsdx; sw.dtdy = q.dtdx;
         ng.dsdy = -q.dsdy; ng.dtdy = -q.dtdy;
@@ -134,7 +143,8 @@ static void tiny_is_bilinear(void)
     sample_sampler_init(&s);
     c = ctx_for(t, &s);
     for (n = 0; n < 50; ++n) {
-        sample_query q = footprint((float)urand(0, 1), (float)urand(0, 1), 1e-3, 1e-3, 0.0, 0.0, 64, 48);
+        double ct = urand(0, 1), cs = urand(0, 1);
+        sample_query q = footprint((float)cs, (float)ct, 1e-3, 1e-3, 0.0, 0.0, 64, 48);
         float bil[4], o[4];
         recon_level(&c, 0, SAMPLE_LINEAR, q.s, q.t, bil, NULL, NULL);
         run_filter(FILTER_ANISO, &c, &q, NULL, o, NULL, NULL, NULL);
@@ -314,7 +324,8 @@ static void degenerate_and_cap(void)
     int f, n, k, bad = 0, over = 0;
     for (n = 0; n < NQ; ++n) {
         double mag = exp2(urand(-40, 70)), ecc = exp2(urand(-60, 0));
-        qs[n] = footprint((float)urand(-1e3, 1e3), (float)urand(-3, 3), mag, mag * ecc, urand(0, 6.3), urand(0, 6.3), 256, 128);
+        double skew = urand(0, 6.3), th = urand(0, 6.3), ct = urand(-3, 3), cs = urand(-1e3, 1e3);
+        qs[n] = footprint((float)cs, (float)ct, mag, mag * ecc, th, skew, 256, 128);
         for (k = 0; k < 4; ++k) {
             quads[n].st[k][0] = (float)(qs[n].s + urand(-1, 1) * mag / 256);
             quads[n].st[k][1] = (float)(qs[n].t + urand(-1, 1) * mag / 128);

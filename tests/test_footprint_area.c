@@ -10,6 +10,14 @@
  */
 #include "footprint_proj.h"
 
+/* Random values are drawn into named variables, one initializer or
+ * statement each, before the call that uses them: the order in which a
+ * call's arguments are evaluated is unspecified in C (GCC goes right to
+ * left, Clang left to right), so several urand() calls in one argument
+ * list gave the two compilers different queries. The variables are drawn
+ * last argument first, the order GCC used, so the queries are the ones the
+ * suite has always tested. */
+
 static float f_mild(int i, int j, int ch)
 {
     (void)ch;
@@ -66,8 +74,9 @@ static void perspective_vs_screen_space(void)
     c0 = ctx_for(t, &s0);
     c1 = ctx_for(t, &s1);
     for (n = 0; n < 60; ++n) {
-        proj_map m = proj_random(urand(3, 10), urand(3, 10), urand(0, 0.6), urand(0.2, 0.8) * 64,
-                                 urand(0.2, 0.8) * 64);
+        double ct = urand(0.2, 0.8) * 64, cs = urand(0.2, 0.8) * 64, kk = urand(0, 0.6), axis_b = urand(3, 10),
+               axis_a = urand(3, 10);
+        proj_map m = proj_random(axis_a, axis_b, kk, cs, ct);
         sample_quad quad = proj_quad(&m, 64, 64);
         double ref_screen = proj_reference(&c0, &m, 0), ref_tex = proj_reference(&c0, &m, 1), e_on, e_off;
         sample_query q;
@@ -111,7 +120,8 @@ static void parallelogram_unchanged(void)
     c1 = ctx_for(t, &s1);
     for (n = 0; n < 100; ++n) {
         double a = exp2(urand(0, 5)), b = a * exp2(urand(-3, 0));
-        sample_query q = footprint((float)urand(0, 1), (float)urand(0, 1), a, b, urand(0, 6.3), urand(-1.2, 1.2), 64, 64);
+        double skew = urand(-1.2, 1.2), th = urand(0, 6.3), ct = urand(0, 1), cs = urand(0, 1);
+        sample_query q = footprint((float)cs, (float)ct, a, b, th, skew, 64, 64);
         sample_quad quad;
         float on[4], off[4], ds0[4], ds1[4], dt0[4], dt1[4];
         for (k = 0; k < 4; ++k) {
@@ -167,12 +177,15 @@ static void constants_exact(void)
             s.options = (n & 2) ? SAMPLE_OPT_BN_AREA_WEIGHT : 0u;
             c = ctx_for(t, &s);
             if (n & 1) {
-                proj_map pm = proj_random(sc * urand(1, 3), sc * urand(1, 3), urand(0, 0.995), urand(-0.5, 1.5) * 64,
-                                          urand(-0.5, 1.5) * 64);
+                double ct = urand(-0.5, 1.5) * 64, cs = urand(-0.5, 1.5) * 64, kk = urand(0, 0.995),
+                       axis_b = sc * urand(1, 3), axis_a = sc * urand(1, 3);
+                proj_map pm = proj_random(axis_a, axis_b, kk, cs, ct);
                 quad = proj_quad(&pm, 64, 64);
             } else {
-                trapezoid(sc * urand(1, 3), sc * urand(1, 3), urand(0, 6.3), urand(0.1, 1.0), urand(-0.5, 0.5),
-                          urand(-0.5, 1.5) * 64, urand(-0.5, 1.5) * 64, 64, 64, &quad, P);
+                double ct = urand(-0.5, 1.5) * 64, cs = urand(-0.5, 1.5) * 64, sh = urand(-0.5, 0.5),
+                       taper = urand(0.1, 1.0), th = urand(0, 6.3), axis_b = sc * urand(1, 3),
+                       axis_a = sc * urand(1, 3);
+                trapezoid(axis_a, axis_b, th, taper, sh, cs, ct, 64, 64, &quad, P);
             }
             memset(&q, 0, sizeof q);
             texels = run_filter(FILTER_BN, &c, &q, &quad, o, ds, dt, NULL);
@@ -210,16 +223,18 @@ static void derivatives(void)
             sample_query q;
             float o[4], ds[4], dt[4], a[4], b[4];
             if (n & 1) {
-                proj_map m = proj_random(urand(1.5, 12), urand(1.5, 12), urand(0, 0.6), urand(0.3, 0.7) * 64,
-                                         urand(0.3, 0.7) * 64);
+                double ct = urand(0.3, 0.7) * 64, cs = urand(0.3, 0.7) * 64, kk = urand(0, 0.6),
+                       axis_b = urand(1.5, 12), axis_a = urand(1.5, 12);
+                proj_map m = proj_random(axis_a, axis_b, kk, cs, ct);
                 quad = proj_quad(&m, 64, 64);
                 for (k = 0; k < 4; ++k) {
                     quad.st[k][0] = (float)(floor(quad.st[k][0] * 65536.0) / 65536.0);
                     quad.st[k][1] = (float)(floor(quad.st[k][1] * 65536.0) / 65536.0);
                 }
             } else {
-                trapezoid(urand(1.5, 12), urand(1.5, 12), urand(0, 6.3), urand(0.3, 0.9), urand(-0.3, 0.3),
-                          urand(0.3, 0.7) * 64, urand(0.3, 0.7) * 64, 64, 64, &quad, P);
+                double ct = urand(0.3, 0.7) * 64, cs = urand(0.3, 0.7) * 64, sh = urand(-0.3, 0.3),
+                       taper = urand(0.3, 0.9), th = urand(0, 6.3), axis_b = urand(1.5, 12), axis_a = urand(1.5, 12);
+                trapezoid(axis_a, axis_b, th, taper, sh, cs, ct, 64, 64, &quad, P);
             }
             memset(&q, 0, sizeof q);
             fp_blinn_newell(&c, &q, &quad, 0.0f, o, ds, dt, NULL);
