@@ -111,6 +111,44 @@ static void nearest_bit_exact_formats(void)
     }
 }
 
+/* Every 8-bit code of UNORM8 (all channels) and of SRGB8's linear alpha is
+ * c / 255 correctly rounded (GL 4.6 eq. 2.1): (float)(c / 255.0) is that,
+ * since rounding a double quotient to float is innocuous. Both paths, since
+ * each reads the codes through the decode table. */
+static void unorm8_every_code(void)
+{
+    unsigned char raw[256 * 4];
+    int f, c, k, path;
+    for (c = 0; c < 256; ++c) {
+        raw[4 * c] = (unsigned char)c;
+        raw[4 * c + 1] = (unsigned char)(255 - c);
+        raw[4 * c + 2] = (unsigned char)(c ^ 0x55);
+        raw[4 * c + 3] = (unsigned char)c;
+    }
+    for (f = SAMPLE_FORMAT_UNORM8; f <= SAMPLE_FORMAT_SRGB8; ++f) {
+        sample_texture *t = make_tex(256, 1, 4, (sample_format)f, raw);
+        for (path = 0; path < 2; ++path) {
+            sample_sampler s;
+            sampler_for(&s, SAMPLE_NEAREST, SAMPLE_WRAP_CLAMP_TO_EDGE);
+            if (path) s.options |= SAMPLE_OPT_SCALAR_PATH;
+            for (c = 0; c < 256; ++c) {
+                sample_query q = {0};
+                float out[4];
+                q.s = ((float)c + 0.5f) / 256.0f;
+                q.t = 0.5f;
+                CHECK(sample_one(t, &s, &q, out) == SAMPLE_OK, "sample");
+                for (k = f == SAMPLE_FORMAT_SRGB8 ? 3 : 0; k < 4; ++k) {
+                    float want = (float)((double)raw[4 * c + k] / 255.0);
+                    CHECK(memcmp(&out[k], &want, 4) == 0, "%s path %d code %d channel %d: %.9g vs %.9g",
+                          sample_format_name((sample_format)f), path, raw[4 * c + k], k,
+                          (double)out[k], (double)want);
+                }
+            }
+        }
+        sample_texture_destroy(t);
+    }
+}
+
 /* The 256-entry sRGB table against the exact EOTF in double: within 1 ulp. */
 static void srgb_table_exact(void)
 {
@@ -265,6 +303,7 @@ int main(void)
     RUN(bilinear_exact_average);
     RUN(nearest_bit_exact_formats);
     RUN(srgb_table_exact);
+    RUN(unorm8_every_code);
     RUN(half_conversion);
     RUN(cubic_kernel_values);
     RUN(cubic_precision_and_interpolation);

@@ -54,6 +54,17 @@ const float sample_srgb_table[256] = {
     0.97344529f, 0.98225055f, 0.991102097f, 1.0f,
 };
 
+/* sample_unorm8_table[c] = c / 255 correctly rounded (GL 4.6 eq. 2.1), the
+ * UNORM8 decode and the linear alpha of SRGB8: a load instead of a divide
+ * per texel (a multiply by the rounded reciprocal is off by an ulp for some
+ * codes). The compiler folds each division at translation time, in the
+ * same IEEE single arithmetic a run-time division uses (tested). */
+#define U8_1(c) ((float)(c) / 255.0f)
+#define U8_4(c) U8_1(c), U8_1((c) + 1), U8_1((c) + 2), U8_1((c) + 3)
+#define U8_16(c) U8_4(c), U8_4((c) + 4), U8_4((c) + 8), U8_4((c) + 12)
+#define U8_64(c) U8_16(c), U8_16((c) + 16), U8_16((c) + 32), U8_16((c) + 48)
+const float sample_unorm8_table[256] = {U8_64(0), U8_64(64), U8_64(128), U8_64(192)};
+
 float sample_srgb_to_linear(float v)
 {
     if (!(v > 0.04045f)) return v / 12.92f; /* also passes NaN through */

@@ -47,6 +47,8 @@ struct sample_texture {
 
 /* The exact sRGB EOTF for each 8-bit code (color.c). */
 extern const float sample_srgb_table[256];
+/* c / 255 for each 8-bit code (color.c). */
+extern const float sample_unorm8_table[256];
 
 /* For the generic functions that the fast path instantiates per format:
  * GCC otherwise keeps some of them out of line, and the constants that
@@ -94,17 +96,16 @@ SAMPLE_FORCE_INLINE v4f tex_decode_v4(sample_format format, int nc, const unsign
         }
         return v4_from_f16x4((const unsigned char *)h);
     }
-    case SAMPLE_FORMAT_UNORM8: {
-        /* c / 255 correctly rounded (GL 4.6 eq. 2.1); a multiply by the
-         * rounded reciprocal is off by an ulp for some codes. */
-        unsigned char b[4] = {0, 0, 0, 255};
-        memcpy(b, p, (size_t)(nc < 4 ? nc : 4));
-        return v4_div(v4_from_u8x4(b), v4_set1(255.0f));
-    }
+    case SAMPLE_FORMAT_UNORM8:
+        /* c / 255 correctly rounded (GL 4.6 eq. 2.1), from a table. */
+        return v4_set(sample_unorm8_table[p[0]], nc > 1 ? sample_unorm8_table[p[1]] : 0.0f,
+                      nc > 2 ? sample_unorm8_table[p[2]] : 0.0f,
+                      nc > 3 ? sample_unorm8_table[p[3]] : 1.0f);
     case SAMPLE_FORMAT_SRGB8:
         /* Alpha of an sRGB format is linear (GL 4.6 §8.24). */
         return v4_set(sample_srgb_table[p[0]], nc > 1 ? sample_srgb_table[p[1]] : 0.0f,
-                      nc > 2 ? sample_srgb_table[p[2]] : 0.0f, nc > 3 ? (float)p[3] / 255.0f : 1.0f);
+                      nc > 2 ? sample_srgb_table[p[2]] : 0.0f,
+                      nc > 3 ? sample_unorm8_table[p[3]] : 1.0f);
     default:
         return v4_set(0.0f, 0.0f, 0.0f, 1.0f);
     }

@@ -35,17 +35,6 @@ static inline v4f v4_set(float x, float y, float z, float w) { return _mm_setr_p
 static inline v4f v4_add(v4f a, v4f b) { return _mm_add_ps(a, b); }
 static inline v4f v4_sub(v4f a, v4f b) { return _mm_sub_ps(a, b); }
 static inline v4f v4_mul(v4f a, v4f b) { return _mm_mul_ps(a, b); }
-static inline v4f v4_div(v4f a, v4f b) { return _mm_div_ps(a, b); }
-/* Four 8-bit codes (4 bytes at p) as floats 0 … 255, exactly. */
-static inline v4f v4_from_u8x4(const unsigned char *p)
-{
-    uint32_t w;
-    __m128i z = _mm_setzero_si128(), x;
-    memcpy(&w, p, 4);
-    x = _mm_cvtsi32_si128((int)w);
-    x = _mm_unpacklo_epi16(_mm_unpacklo_epi8(x, z), z);
-    return _mm_cvtepi32_ps(x);
-}
 #if defined(__F16C__)
 /* Four IEEE halves (8 bytes at p) widened exactly: the same bits as
  * sample_half_to_float on each lane. In the builds that have F16C (the
@@ -120,12 +109,7 @@ static inline v4f v4_set1(float x) { return v4_set(x, x, x, x); }
 SAMPLE_V4_LANEWISE(v4_add, +)
 SAMPLE_V4_LANEWISE(v4_sub, -)
 SAMPLE_V4_LANEWISE(v4_mul, *)
-SAMPLE_V4_LANEWISE(v4_div, /)
 #undef SAMPLE_V4_LANEWISE
-static inline v4f v4_from_u8x4(const unsigned char *p)
-{
-    return v4_set((float)p[0], (float)p[1], (float)p[2], (float)p[3]);
-}
 static inline v4f v4_from_f16x4(const unsigned char *p)
 {
     uint16_t h[4];
