@@ -245,9 +245,13 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
     return 1;
 }
 
+/* `linear` (a constant in each instantiation): the batch's per-level filter
+ * is LINEAR whatever λ is (fast_gl_batch), so the tap count and the
+ * reconstruction are known at compile time. */
 SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
-                              const lod_choice *fixed, size_t tb, fast_plan *pl)
+                              const lod_choice *fixed, size_t tb, int linear, fast_plan *pl)
 {
+    sample_filter kind;
     const sample_query *q = &a->queries[i];
     pl->kind = batch_query_finite(a, i) ? PLAN_GL : PLAN_BORDER;
     if (pl->kind == PLAN_BORDER) return;
@@ -263,15 +267,17 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
         }
         pl->ch = lod_select(c, pl->lam);
     }
-    plan_level(c, pl->ch.level0, pl->ch.kind, q->s, q->t, tb, 1, &pl->u.tp[0]);
-    if (pl->ch.level1 >= 0) plan_level(c, pl->ch.level1, pl->ch.kind, q->s, q->t, tb, 1, &pl->u.tp[1]);
+    kind = linear ? SAMPLE_LINEAR : pl->ch.kind;
+    plan_level(c, pl->ch.level0, kind, q->s, q->t, tb, 1, &pl->u.tp[0]);
+    if (pl->ch.level1 >= 0) plan_level(c, pl->ch.level1, kind, q->s, q->t, tb, 1, &pl->u.tp[1]);
 }
 
 /* sampler.c's run_query + gl_apply for a planned query. */
 SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
                              const fast_plan *pl, const fp_plan *fpl, sample_format fmt, int nc,
-                             size_t tb, aniso_fn aniso)
+                             size_t tb, int linear, aniso_fn aniso)
 {
+    const sample_filter kind = linear ? SAMPLE_LINEAR : pl->ch.kind;
     float *out = a->rgba + 4 * i;
     float *dds = a->drgba_ds ? a->drgba_ds + 4 * i : NULL;
     float *ddt = a->drgba_dt ? a->drgba_dt + 4 * i : NULL;
@@ -300,10 +306,10 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         }
         return;
     }
-    n = run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level0, &pl->u.tp[0], out, dds, ddt);
+    n = run_level(c, fmt, nc, tb, kind, pl->ch.level0, &pl->u.tp[0], out, dds, ddt);
     if (pl->ch.level1 >= 0) {
         float o1[4], ds1[4], dt1[4];
-        n += run_level(c, fmt, nc, tb, pl->ch.kind, pl->ch.level1, &pl->u.tp[1], o1,
+        n += run_level(c, fmt, nc, tb, kind, pl->ch.level1, &pl->u.tp[1], o1,
                        dds ? ds1 : NULL, ddt ? dt1 : NULL);
         recon_blend(out, o1, pl->ch.frac);
         if (dds) recon_blend(dds, ds1, pl->ch.frac);
@@ -379,6 +385,21 @@ SAMPLE_FORCE_INLINE void plan_fp_query(const sample_ctx *c, const sample_batch_a
                           a->lod_bias ? a->lod_bias[i] : 0.0f, fpl);
 }
 
+/* The OpenGL filters' batch loop: blocks of FAST_BLOCK queries planned
+ * (and their lines prefetched), then run. */
+SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
+                                   int nc, const lod_choice *fixed, int linear, aniso_fn aniso)
+{
+    const size_t tb = texel_bytes(fmt, nc);
+    size_t i, k;
+    for (i = 0; i < a->count; i += FAST_BLOCK) {
+        fast_plan plan[FAST_BLOCK];
+        size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
+        for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed, tb, linear, &plan[k]);
+        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, linear, aniso);
+    }
+}
+
 /* The batch loop, generic over the texel format and channel count; each
  * instantiation below has them as constants. */
 SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
@@ -395,7 +416,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
                 (smp->min_filter == SAMPLE_NEAREST || smp->min_filter == SAMPLE_LINEAR ||
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
-    size_t i, k;
+    size_t i;
     if (smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC) {
         /* A software pipeline FAST_AHEAD_ANISO queries deep: query i + D is
          * planned (its probes' lines asked for) right after query i ran, so
@@ -405,11 +426,11 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
          * while the block computes. */
         fast_plan ring[FAST_AHEAD_ANISO];
         size_t ahead = a->count < FAST_AHEAD_ANISO ? a->count : FAST_AHEAD_ANISO;
-        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, &ring[i]);
+        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, 0, &ring[i]);
         for (i = 0; i < a->count; ++i) {
             fast_plan *pl = &ring[i % FAST_AHEAD_ANISO];
-            run_query(c, a, i, pl, NULL, fmt, nc, tb, aniso);
-            if (i + FAST_AHEAD_ANISO < a->count) plan_query(c, a, i + FAST_AHEAD_ANISO, NULL, tb, pl);
+            run_query(c, a, i, pl, NULL, fmt, nc, tb, 0, aniso);
+            if (i + FAST_AHEAD_ANISO < a->count) plan_query(c, a, i + FAST_AHEAD_ANISO, NULL, tb, 0, pl);
         }
         return;
     }
@@ -424,22 +445,20 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         fast_plan ring[FAST_AHEAD_FP];
         fp_plan fpl[2];
         size_t ahead = a->count < FAST_AHEAD_FP ? a->count : FAST_AHEAD_FP;
-        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, &ring[i]);
+        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, 0, &ring[i]);
         if (ahead) plan_fp_query(c, a, 0, &ring[0], &fpl[0]);
         for (i = 0; i < a->count; ++i) {
             fast_plan *pl = &ring[i % FAST_AHEAD_FP];
             if (i + 1 < a->count) plan_fp_query(c, a, i + 1, &ring[(i + 1) % FAST_AHEAD_FP], &fpl[(i + 1) & 1]);
-            run_query(c, a, i, pl, &fpl[i & 1], fmt, nc, tb, aniso);
-            if (i + FAST_AHEAD_FP < a->count) plan_query(c, a, i + FAST_AHEAD_FP, NULL, tb, pl);
+            run_query(c, a, i, pl, &fpl[i & 1], fmt, nc, tb, 0, aniso);
+            if (i + FAST_AHEAD_FP < a->count) plan_query(c, a, i + FAST_AHEAD_FP, NULL, tb, 0, pl);
         }
         return;
     }
-    for (i = 0; i < a->count; i += FAST_BLOCK) {
-        fast_plan plan[FAST_BLOCK];
-        size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
-        for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed ? &mg : NULL, tb, &plan[k]);
-        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, aniso);
-    }
+    if (lod_level_kind(smp->min_filter) == SAMPLE_LINEAR && lod_level_kind(smp->mag_filter) == SAMPLE_LINEAR)
+        gl_blocks(c, a, fmt, nc, fixed ? &mg : NULL, 1, aniso);
+    else
+        gl_blocks(c, a, fmt, nc, fixed ? &mg : NULL, 0, aniso);
 }
 
 #define FAST_GL_KERNEL(fmt, nc)                                                \
