@@ -245,11 +245,12 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
     return 1;
 }
 
-/* `linear` (a constant in each instantiation): the batch's per-level filter
- * is LINEAR whatever λ is (fast_gl_batch), so the tap count and the
+/* Constants of each instantiation: `gl`, the sampler has no footprint
+ * filter (gl_blocks), so no query is handed to one; `linear`, the batch's
+ * per-level filter is LINEAR whatever λ is, so the tap count and the
  * reconstruction are known at compile time. */
 SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
-                              const lod_choice *fixed, size_t tb, int linear, fast_plan *pl)
+                              const lod_choice *fixed, size_t tb, int gl, int linear, fast_plan *pl)
 {
     sample_filter kind;
     const sample_query *q = &a->queries[i];
@@ -260,7 +261,7 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
         pl->lam = 0.0f;
     } else {
         float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
-        if (c->smp->footprint == SAMPLE_FOOTPRINT_NONE) {
+        if (gl || c->smp->footprint == SAMPLE_FOOTPRINT_NONE) {
             pl->lam = lod_lambda(c, lod_lambda_base(c, q), bias);
         } else if (plan_footprint(c, q, bias, pl)) {
             return;
@@ -275,7 +276,7 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
 /* sampler.c's run_query + gl_apply for a planned query. */
 SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
                              const fast_plan *pl, const fp_plan *fpl, sample_format fmt, int nc,
-                             size_t tb, int linear, aniso_fn aniso)
+                             size_t tb, int gl, int linear, aniso_fn aniso)
 {
     const sample_filter kind = linear ? SAMPLE_LINEAR : pl->ch.kind;
     float *out = a->rgba + 4 * i;
@@ -294,11 +295,11 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         }
         return;
     }
-    if (pl->kind == PLAN_FOOTPRINT) {
+    if (!gl && pl->kind == PLAN_FOOTPRINT) {
         sample_run_footprint(c, a, i, fpl);
         return;
     }
-    if (pl->kind == PLAN_ANISO) {
+    if (!gl && pl->kind == PLAN_ANISO) {
         n = aniso(c, &a->queries[i], &pl->u.an, out, dds, ddt);
         if (a->stats) {
             fp_aniso_stats(&pl->u.an, &a->stats[i]);
@@ -385,18 +386,26 @@ SAMPLE_FORCE_INLINE void plan_fp_query(const sample_ctx *c, const sample_batch_a
                           a->lod_bias ? a->lod_bias[i] : 0.0f, fpl);
 }
 
-/* The OpenGL filters' batch loop: blocks of FAST_BLOCK queries planned
- * (and their lines prefetched), then run. */
-SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
+/* The OpenGL filters' batch loop (no footprint filter): blocks of
+ * FAST_BLOCK queries planned (and their lines prefetched), then run. The
+ * sampler and context are copied into locals whose address never leaves
+ * this function's inlined code: the compiler then knows that the result
+ * stores (floats) cannot change the sampler's floats, and keeps the λ
+ * clamps and level-selection state in registers across queries. */
+SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args *a, sample_format fmt,
                                    int nc, const lod_choice *fixed, int linear, aniso_fn aniso)
 {
     const size_t tb = texel_bytes(fmt, nc);
+    const sample_sampler smp = *cp->smp;
+    sample_ctx ctx = *cp;
+    const sample_ctx *c = &ctx;
     size_t i, k;
+    ctx.smp = &smp;
     for (i = 0; i < a->count; i += FAST_BLOCK) {
         fast_plan plan[FAST_BLOCK];
         size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
-        for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed, tb, linear, &plan[k]);
-        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, linear, aniso);
+        for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed, tb, 1, linear, &plan[k]);
+        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, 1, linear, aniso);
     }
 }
 
@@ -426,11 +435,11 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
          * while the block computes. */
         fast_plan ring[FAST_AHEAD_ANISO];
         size_t ahead = a->count < FAST_AHEAD_ANISO ? a->count : FAST_AHEAD_ANISO;
-        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, 0, &ring[i]);
+        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, 0, 0, &ring[i]);
         for (i = 0; i < a->count; ++i) {
             fast_plan *pl = &ring[i % FAST_AHEAD_ANISO];
-            run_query(c, a, i, pl, NULL, fmt, nc, tb, 0, aniso);
-            if (i + FAST_AHEAD_ANISO < a->count) plan_query(c, a, i + FAST_AHEAD_ANISO, NULL, tb, 0, pl);
+            run_query(c, a, i, pl, NULL, fmt, nc, tb, 0, 0, aniso);
+            if (i + FAST_AHEAD_ANISO < a->count) plan_query(c, a, i + FAST_AHEAD_ANISO, NULL, tb, 0, 0, pl);
         }
         return;
     }
@@ -445,13 +454,13 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         fast_plan ring[FAST_AHEAD_FP];
         fp_plan fpl[2];
         size_t ahead = a->count < FAST_AHEAD_FP ? a->count : FAST_AHEAD_FP;
-        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, 0, &ring[i]);
+        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, 0, 0, &ring[i]);
         if (ahead) plan_fp_query(c, a, 0, &ring[0], &fpl[0]);
         for (i = 0; i < a->count; ++i) {
             fast_plan *pl = &ring[i % FAST_AHEAD_FP];
             if (i + 1 < a->count) plan_fp_query(c, a, i + 1, &ring[(i + 1) % FAST_AHEAD_FP], &fpl[(i + 1) & 1]);
-            run_query(c, a, i, pl, &fpl[i & 1], fmt, nc, tb, 0, aniso);
-            if (i + FAST_AHEAD_FP < a->count) plan_query(c, a, i + FAST_AHEAD_FP, NULL, tb, 0, pl);
+            run_query(c, a, i, pl, &fpl[i & 1], fmt, nc, tb, 0, 0, aniso);
+            if (i + FAST_AHEAD_FP < a->count) plan_query(c, a, i + FAST_AHEAD_FP, NULL, tb, 0, 0, pl);
         }
         return;
     }

@@ -378,7 +378,11 @@ static inline double lod_log2_rho(const sample_ctx *c, const sample_query *q, do
 }
 
 /* λ_base = log2 ρ (eq. 8.7 before bias and clamps), as a float. */
-float lod_lambda_base(const sample_ctx *c, const sample_query *q);
+static inline float lod_lambda_base(const sample_ctx *c, const sample_query *q)
+{
+    double rho2[2];
+    return (float)lod_log2_rho(c, q, rho2);
+}
 
 typedef struct lod_choice {
     int magnify;      /* 1: use mag_filter on level base */
@@ -423,7 +427,7 @@ static inline sample_filter lod_level_kind(sample_filter f)
 }
 
 /* Level selection for the OpenGL filters (GL 4.6 §8.14.2–8.14.3). */
-static inline lod_choice lod_select(const sample_ctx *c, float lambda)
+SAMPLE_FORCE_INLINE lod_choice lod_select(const sample_ctx *c, float lambda)
 {
     const sample_sampler *s = c->smp;
     lod_choice r;

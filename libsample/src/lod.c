@@ -1,8 +1,8 @@
 /*
  * Level of detail and level selection (DESIGN §5; OpenGL 4.6 core
  * §8.14.1 "Scale Factor and Level of Detail", §8.14.2, §8.14.3 "Mipmapping").
- * lod_log2_rho, lod_lambda and lod_select, called for every query of the
- * fast path, are static inline in internal.h.
+ * lod_log2_rho, lod_lambda_base, lod_lambda and lod_select, called for
+ * every query of the fast path, are static inline in internal.h.
  */
 #include "internal.h"
 
@@ -17,10 +17,4 @@ void lod_split(const sample_ctx *c, float lambda, int *l0, int *l1, float *frac)
     *l0 = (int)floor(p);
     *l1 = *l0 + 1;
     *frac = (float)(p - floor(p));
-}
-
-float lod_lambda_base(const sample_ctx *c, const sample_query *q)
-{
-    double rho2[2];
-    return (float)lod_log2_rho(c, q, rho2);
 }
