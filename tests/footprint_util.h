@@ -50,6 +50,15 @@ static sample_ctx ctx_for(const sample_texture *t, const sample_sampler *s)
     return c;
 }
 
+/* The default sampler with max_anisotropy 16 (the footprint tests'
+ * common setting) in *s, and its context; *s must outlive the context. */
+static inline sample_ctx footprint_ctx(const sample_texture *t, sample_sampler *s)
+{
+    sample_sampler_init(s);
+    s->max_anisotropy = 16.0f;
+    return ctx_for(t, s);
+}
+
 static uint32_t run_filter(int which, const sample_ctx *c, const sample_query *q, const sample_quad *quad,
                            float out[4], float dds[4], float ddt[4], sample_stats *st)
 {

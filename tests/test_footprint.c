@@ -105,9 +105,7 @@ static void column_symmetry(void)
     sample_sampler s;
     sample_ctx c;
     int n, f;
-    sample_sampler_init(&s);
-    s.max_anisotropy = 16.0f;
-    c = ctx_for(t, &s);
+    c = footprint_ctx(t, &s);
     for (n = 0; n < 40; ++n) {
         double a = exp2(urand(0, 6)), b = a * exp2(urand(-5, 0));
         double skew = urand(0, 6.3), th = urand(0, 6.3), ct = urand(0, 1), cs = urand(0, 1);
@@ -189,9 +187,7 @@ static void level_choice_and_continuity(void)
     sample_sampler s;
     sample_ctx c;
     int f, k, n;
-    sample_sampler_init(&s);
-    s.max_anisotropy = 16.0f;
-    c = ctx_for(t, &s);
+    c = footprint_ctx(t, &s);
     for (f = FILTER_BN; f <= FILTER_EWA; ++f) {
         for (k = 0; k <= 6; ++k) {
             float o[4];
@@ -287,9 +283,7 @@ static void wrap_across_edge(void)
     sample_ctx c;
     int f;
     sample_query q = footprint(0.0f, 0.5f, 6.0, 2.0, 0.0, 0.0, 32, 32);
-    sample_sampler_init(&s);
-    s.max_anisotropy = 16.0f;
-    c = ctx_for(t, &s);
+    c = footprint_ctx(t, &s);
     for (f = 0; f < FILTER_N; ++f) {
         float o[4];
         run_filter(f, &c, &q, NULL, o, NULL, NULL, NULL);

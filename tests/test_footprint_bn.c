@@ -379,9 +379,7 @@ static void derivatives(void)
     sample_sampler s;
     sample_ctx c;
     int n, f, axis, one_sided = 0;
-    sample_sampler_init(&s);
-    s.max_anisotropy = 16.0f;
-    c = ctx_for(t, &s);
+    c = footprint_ctx(t, &s);
     for (n = 0; n < 30; ++n) {
         double skew = urand(-1, 1), th = urand(0, 6.3), minor = urand(0.5, 1.5), major = urand(1.5, 12),
                ct = urand(0.3, 0.7), cs = urand(0.3, 0.7);
@@ -431,9 +429,7 @@ static void derivative_creases(void)
     sample_sampler s;
     sample_ctx c;
     int n, k;
-    sample_sampler_init(&s);
-    s.max_anisotropy = 16.0f;
-    c = ctx_for(t, &s);
+    c = footprint_ctx(t, &s);
     for (n = 0; n < 2; ++n) {
         fd_samples p;
         fd_sample(FILTER_BN, &c, &qs[n], 0, &p);
