@@ -391,9 +391,10 @@ SAMPLE_FORCE_INLINE void plan_fp_query(const sample_ctx *c, const sample_batch_a
  * sampler and context are copied into locals whose address never leaves
  * this function's inlined code: the compiler then knows that the result
  * stores (floats) cannot change the sampler's floats, and keeps the λ
- * clamps and level-selection state in registers across queries. */
+ * clamps and level-selection state in registers across queries. With
+ * gl = 1 run_query never reaches the anisotropic reader (NULL here). */
 SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args *a, sample_format fmt,
-                                   int nc, const lod_choice *fixed, int linear, aniso_fn aniso)
+                                   int nc, const lod_choice *fixed, int linear)
 {
     const size_t tb = texel_bytes(fmt, nc);
     const sample_sampler smp = *cp->smp;
@@ -405,7 +406,7 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
         fast_plan plan[FAST_BLOCK];
         size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
         for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed, tb, 1, linear, &plan[k]);
-        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, 1, linear, aniso);
+        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, 1, linear, NULL);
     }
 }
 
@@ -465,9 +466,9 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         return;
     }
     if (lod_level_kind(smp->min_filter) == SAMPLE_LINEAR && lod_level_kind(smp->mag_filter) == SAMPLE_LINEAR)
-        gl_blocks(c, a, fmt, nc, fixed ? &mg : NULL, 1, aniso);
+        gl_blocks(c, a, fmt, nc, fixed ? &mg : NULL, 1);
     else
-        gl_blocks(c, a, fmt, nc, fixed ? &mg : NULL, 0, aniso);
+        gl_blocks(c, a, fmt, nc, fixed ? &mg : NULL, 0);
 }
 
 #define FAST_GL_KERNEL(fmt, nc)                                                \
