@@ -324,6 +324,51 @@ static void test_footprint_samplers(void)
             }
 }
 
+static void test_aniso_addressed(void)
+{
+    /* The anisotropic filter's common case, which the fast path addresses
+     * when it plans the query (fast_gl.c, aniso_address): every probe's
+     * block inside both levels of a texture larger than the footprint.
+     * Footprints of 1 to 24 probes (above 16 the probes are read one at a
+     * time), at random angles and λ', on wraps with and without a
+     * coordinate transform; values only, values with stats, and with
+     * derivatives (read one probe at a time). */
+    static const int sizes[2][2] = {{64, 64}, {61, 37}};
+    int f, nc, z, rep, i, fails = 0;
+    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
+        for (nc = 1; nc <= 4; ++nc)
+            for (z = 0; z < 2; ++z) {
+                sample_texture *tex = make_texture((sample_format)f, nc, sizes[z][0], sizes[z][1]);
+                for (rep = 0; rep < 6; ++rep) {
+                    sample_sampler s;
+                    unsigned what = rep < 3 ? 0u : (rep == 3 ? 4u : (unsigned)(rnd() & 7));
+                    sample_sampler_init(&s);
+                    s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+                    s.footprint = SAMPLE_FOOTPRINT_ANISOTROPIC;
+                    s.max_anisotropy = rep == 2 ? 32.0f : 16.0f;
+                    s.wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
+                    s.wrap_t = rep == 1 ? SAMPLE_WRAP_CLAMP : SAMPLE_WRAP_REPEAT;
+                    for (i = 0; i < NQ; ++i) {
+                        /* Minor axis 0.6–3 texels, major up to 24 times that. */
+                        float ang = frand(0.0f, 6.2831853f), minor = frand(0.6f, 3.0f) / (float)sizes[z][0];
+                        float major = minor * frand(1.0f, rep == 2 ? 24.0f : 16.0f);
+                        qs[i].s = frand(0.25f, 0.75f);
+                        qs[i].t = frand(0.25f, 0.75f);
+                        qs[i].dsdx = major * cosf(ang);
+                        qs[i].dtdx = major * sinf(ang);
+                        qs[i].dsdy = -minor * sinf(ang);
+                        qs[i].dtdy = minor * cosf(ang);
+                    }
+                    run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
+                    run(tex, s, 0, qs, biases, quads, what, NQ, &got);
+                    if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) break;
+                }
+                CHECK(fails == 0, "%d anisotropic configurations differ (format %d, %d channels)", fails, f,
+                      nc);
+                sample_texture_destroy(tex);
+            }
+}
+
 static void test_scalar_option_value(void)
 {
     /* Additive: the next free bit after the existing options. */
@@ -339,6 +384,7 @@ int main(void)
         rng_state = RNG_SEED; /* the same textures and queries for every build */
         RUN(test_identical_all_combinations);
         RUN(test_footprint_samplers);
+        RUN(test_aniso_addressed);
         RUN(test_batch_sizes);
         RUN(test_threads);
     }

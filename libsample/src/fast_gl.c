@@ -62,8 +62,22 @@ typedef struct fast_taps {
 
 enum { PLAN_GL, PLAN_BORDER, PLAN_ANISO, PLAN_FOOTPRINT };
 
+/* The probes of an anisotropic query, addressed when the query is planned
+ * (aniso_address): at most ANISO_FAST_PROBES, each with its 2 × 2 block
+ * inside both levels. */
+#define ANISO_FAST_PROBES 16
+/* Probes addressed together: the loops over them run on whole vectors
+ * (8 floats: one AVX register, two SSE ones). */
+#define ANISO_LANES 8
+
+typedef struct aniso_taps {
+    int n; /* probes addressed; 0: fp_aniso_probes reads the query */
+    const unsigned char *p[2][ANISO_FAST_PROBES]; /* each block's first texel on l0, l1 */
+    float fu[2][ANISO_FAST_PROBES], fv[2][ANISO_FAST_PROBES];
+} aniso_taps;
+
 typedef uint32_t (*aniso_fn)(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an,
-                             float out[4], float dds[4], float ddt[4]);
+                             const aniso_taps *at, float out[4], float dds[4], float ddt[4]);
 
 typedef struct fast_plan {
     int kind; /* PLAN_GL: the taps below; PLAN_BORDER: non-finite input;
@@ -169,6 +183,21 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
     }
 }
 
+/* The 2 × 2 block at p (rows stride apart) reconstructed bilinearly
+ * (recon_bilerp): the LINEAR taps of a query whose block lies in the
+ * level. */
+SAMPLE_FORCE_INLINE void bilerp_block(sample_format fmt, int nc, size_t tb, const unsigned char *p,
+                                      size_t stride, float fu, float fv, float out[4], float dds[4],
+                                      float ddt[4])
+{
+    v4f T[4];
+    T[0] = tex_decode_v4(fmt, nc, p);
+    T[1] = tex_decode_v4(fmt, nc, p + tb);
+    T[2] = tex_decode_v4(fmt, nc, p + stride);
+    T[3] = tex_decode_v4(fmt, nc, p + stride + tb);
+    recon_bilerp(T, fu, fv, out, dds, ddt);
+}
+
 SAMPLE_FORCE_INLINE v4f fetch(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
                         const unsigned char *row, int col)
 {
@@ -190,22 +219,19 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
         return 1;
     }
     if (kind == SAMPLE_LINEAR) {
-        v4f T[4];
         if (tp->inside) {
-            /* Most queries: the 2 × 2 block lies in the level, two texel
-             * pairs side by side. */
-            const unsigned char *p0 = tp->row[0] + (size_t)tp->col[0] * tb, *p1 = tp->row[1] + (size_t)tp->col[0] * tb;
-            T[0] = tex_decode_v4(fmt, nc, p0);
-            T[1] = tex_decode_v4(fmt, nc, p0 + tb);
-            T[2] = tex_decode_v4(fmt, nc, p1);
-            T[3] = tex_decode_v4(fmt, nc, p1 + tb);
+            /* Most queries: the 2 × 2 block lies in the level (its rows
+             * are then consecutive, plan_level). */
+            bilerp_block(fmt, nc, tb, tp->row[0] + (size_t)tp->col[0] * tb, L->stride, tp->fu, tp->fv,
+                         out, dds, ddt);
         } else {
+            v4f T[4];
             T[0] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[0]);
             T[1] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[1]);
             T[2] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[0]);
             T[3] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[1]);
+            recon_bilerp(T, tp->fu, tp->fv, out, dds, ddt);
         }
-        recon_bilerp(T, tp->fu, tp->fv, out, dds, ddt);
         n = 4;
     } else {
         double wx[4], wy[4], dwx[4], dwy[4];
@@ -236,11 +262,11 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
     if (!(pl->lam > 0.0f)) return 0;
     pl->kind = PLAN_FOOTPRINT;
     if (c->smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC) {
-        /* The probes and their rows now, a block ahead of their reading
-         * (the other filters find their spans only in their counting
-         * pass). */
+        /* The probes now (their addresses and prefetches: plan_aniso),
+         * queries ahead of their reading (the other filters find their
+         * spans only in their counting pass). */
         pl->kind = PLAN_ANISO;
-        fp_aniso_plan(c, q, rho2, lr, bias, &pl->u.an);
+        fp_aniso_setup_of(c, q, rho2, lr, bias, &pl->u.an);
     }
     return 1;
 }
@@ -275,8 +301,8 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
 
 /* sampler.c's run_query + gl_apply for a planned query. */
 SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
-                             const fast_plan *pl, const fp_plan *fpl, sample_format fmt, int nc,
-                             size_t tb, int gl, int linear, aniso_fn aniso)
+                             const fast_plan *pl, const fp_plan *fpl, const aniso_taps *at,
+                             sample_format fmt, int nc, size_t tb, int gl, int linear, aniso_fn aniso)
 {
     const sample_filter kind = linear ? SAMPLE_LINEAR : pl->ch.kind;
     float *out = a->rgba + 4 * i;
@@ -300,7 +326,7 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         return;
     }
     if (!gl && pl->kind == PLAN_ANISO) {
-        n = aniso(c, &a->queries[i], &pl->u.an, out, dds, ddt);
+        n = aniso(c, &a->queries[i], &pl->u.an, at, out, dds, ddt);
         if (a->stats) {
             fp_aniso_stats(&pl->u.an, &a->stats[i]);
             a->stats[i].texels = n;
@@ -346,6 +372,103 @@ SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format f
     return run_level(c, fmt, nc, tb, SAMPLE_LINEAR, lv, &tp, out, dds, ddt);
 }
 
+/* ---- Anisotropic probes addressed ahead ---------------------------------
+ * plan_level's LINEAR addressing for all of a query's probes at once, as
+ * loops over arrays of ANISO_LANES-multiple length that the compiler turns
+ * into vector code (lane-wise IEEE operations: the same bits as one probe
+ * at a time). Only the common case is taken: both wraps without a
+ * wrap_coord transform and every block inside both levels, where
+ * axis_index maps the block to itself whatever the wrap mode; the floor is
+ * then a truncation (a ≥ 0) and the inside test is 0 ≤ a < w − 1
+ * (⌊a⌋ ≤ w − 2). Anything else returns 0 and the query's probes are read
+ * by fp_aniso_probes. */
+static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an, size_t tb,
+                         aniso_taps *at)
+{
+    float s[ANISO_FAST_PROBES], t[ANISO_FAST_PROBES];
+    int ii[ANISO_FAST_PROBES], jj[ANISO_FAST_PROBES];
+    const int n = an->n, lanes = (n + ANISO_LANES - 1) / ANISO_LANES * ANISO_LANES;
+    int lv, k;
+    at->n = 0;
+    if (n > ANISO_FAST_PROBES || c->smp->wrap_s >= SAMPLE_WRAP_CLAMP || c->smp->wrap_t >= SAMPLE_WRAP_CLAMP)
+        return 0;
+    /* Lanes past n hold probes beyond the footprint's end: computed, never
+     * read. */
+    for (k = 0; k < lanes; ++k) fp_aniso_probe(q, an, k + 1, &s[k], &t[k]);
+    for (lv = 0; lv < 1 + (an->l1 != an->l0); ++lv) {
+        const struct sample_level *L = &c->tex->level[lv ? an->l1 : an->l0];
+        const float wm = (float)(L->w - 1), hm = (float)(L->h - 1);
+        uintptr_t last0 = 0, last1 = 0;
+        int out = 0;
+        for (k = 0; k < lanes; ++k) {
+            /* Modes below CLAMP leave s as it is (recon_texel_coord). */
+            float a = recon_texel_coord(SAMPLE_WRAP_REPEAT, s[k], L->w) - 0.5f;
+            float b = recon_texel_coord(SAMPLE_WRAP_REPEAT, t[k], L->h) - 0.5f;
+            int in = (a >= 0.0f) & (a < wm) & (b >= 0.0f) & (b < hm);
+            a = in ? a : 0.0f;
+            b = in ? b : 0.0f;
+            ii[k] = (int)a;
+            jj[k] = (int)b;
+            at->fu[lv][k] = a - (float)ii[k];
+            at->fv[lv][k] = b - (float)jj[k];
+            out |= !in & (k < n);
+        }
+        if (out) return 0;
+        /* Each block's lines, a line asked for by the probe before not
+         * asked for again (prefetch_run). */
+        for (k = 0; k < n; ++k) {
+            const unsigned char *p = L->data + (size_t)jj[k] * L->stride + (size_t)ii[k] * tb;
+            uintptr_t a0 = (uintptr_t)p >> 6, a1 = (uintptr_t)(p + 2 * tb - 1) >> 6;
+            at->p[lv][k] = p;
+            if (a0 != last0 && a0 != last1) {
+                SAMPLE_PREFETCH(p);
+                SAMPLE_PREFETCH(p + L->stride);
+            }
+            if (a1 != a0 && a1 != last0 && a1 != last1) {
+                SAMPLE_PREFETCH(p + 2 * tb - 1);
+                SAMPLE_PREFETCH(p + L->stride + 2 * tb - 1);
+            }
+            last0 = a0;
+            last1 = a1;
+        }
+    }
+    at->n = n;
+    return 1;
+}
+
+/* fp_aniso_probes on addressed probes, without derivatives. */
+SAMPLE_FORCE_INLINE uint32_t aniso_read(const sample_ctx *c, sample_format fmt, int nc,
+                                        const fp_aniso_setup *an, const aniso_taps *at, float out[4])
+{
+    const size_t tb = texel_bytes(fmt, nc);
+    const size_t st0 = c->tex->level[an->l0].stride, st1 = c->tex->level[an->l1].stride;
+    const int two = an->l1 != an->l0;
+    double acc[4] = {0, 0, 0, 0};
+    int k;
+    for (k = 0; k < at->n; ++k) {
+        float o0[4], o1[4];
+        bilerp_block(fmt, nc, tb, at->p[0][k], st0, at->fu[0][k], at->fv[0][k], o0, NULL, NULL);
+        if (two)
+            bilerp_block(fmt, nc, tb, at->p[1][k], st1, at->fu[1][k], at->fv[1][k], o1, NULL, NULL);
+        else
+            memcpy(o1, o0, sizeof o1);
+        fp_aniso_add(acc, (double)an->f, o0, o1);
+    }
+    fp_aniso_mean(acc, an->n, out);
+    return (uint32_t)(4 * at->n * (1 + two));
+}
+
+/* plan_query for the anisotropic filter's pipeline: a minified query's
+ * probes addressed and their lines asked for. */
+SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args *a, size_t i, size_t tb,
+                                    fast_plan *pl, aniso_taps *at)
+{
+    plan_query(c, a, i, NULL, tb, 0, 0, pl);
+    at->n = 0;
+    if (pl->kind == PLAN_ANISO && !aniso_address(c, &a->queries[i], &pl->u.an, tb, at))
+        fp_aniso_prefetch(c, &a->queries[i], &pl->u.an);
+}
+
 #define TEX_READERS(fmt, nc)                                                   \
     static void row_##fmt##_##nc(const unsigned char *p, int n, float (*out)[4]) \
     {                                                                          \
@@ -362,11 +485,14 @@ SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format f
     {                                                                          \
         return bilinear_inline_##fmt##_##nc(c, lv, s, t, out, dds, ddt);      \
     }                                                                          \
-    /* fp_anisotropic's probes with this format's bilinear inlined. */         \
+    /* fp_anisotropic's probes: those addressed ahead read from their      \
+     * addresses, the others with this format's bilinear inlined. */         \
     static SAMPLE_NOINLINE uint32_t aniso_##fmt##_##nc(const sample_ctx *c, const sample_query *q, \
-                                                       const fp_aniso_setup *an, float out[4], \
-                                                       float dds[4], float ddt[4]) \
+                                                       const fp_aniso_setup *an,            \
+                                                       const aniso_taps *at, float out[4],  \
+                                                       float dds[4], float ddt[4])          \
     {                                                                          \
+        if (at->n && !dds && !ddt) return aniso_read(c, SAMPLE_FORMAT_##fmt, nc, an, at, out); \
         return fp_aniso_probes(c, q, an, bilinear_inline_##fmt##_##nc, out, dds, ddt); \
     }
 #define TEX_READERS_FMT(fmt)                                                   \
@@ -406,7 +532,7 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
         fast_plan plan[FAST_BLOCK];
         size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
         for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed, tb, 1, linear, &plan[k]);
-        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, fmt, nc, tb, 1, linear, NULL);
+        for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, NULL, fmt, nc, tb, 1, linear, NULL);
     }
 }
 
@@ -435,12 +561,13 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
          * prefetches than the miss queue holds and then leave memory idle
          * while the block computes. */
         fast_plan ring[FAST_AHEAD_ANISO];
+        aniso_taps taps[FAST_AHEAD_ANISO];
         size_t ahead = a->count < FAST_AHEAD_ANISO ? a->count : FAST_AHEAD_ANISO;
-        for (i = 0; i < ahead; ++i) plan_query(c, a, i, NULL, tb, 0, 0, &ring[i]);
+        for (i = 0; i < ahead; ++i) plan_aniso(c, a, i, tb, &ring[i], &taps[i]);
         for (i = 0; i < a->count; ++i) {
-            fast_plan *pl = &ring[i % FAST_AHEAD_ANISO];
-            run_query(c, a, i, pl, NULL, fmt, nc, tb, 0, 0, aniso);
-            if (i + FAST_AHEAD_ANISO < a->count) plan_query(c, a, i + FAST_AHEAD_ANISO, NULL, tb, 0, 0, pl);
+            size_t r = i % FAST_AHEAD_ANISO;
+            run_query(c, a, i, &ring[r], NULL, &taps[r], fmt, nc, tb, 0, 0, aniso);
+            if (i + FAST_AHEAD_ANISO < a->count) plan_aniso(c, a, i + FAST_AHEAD_ANISO, tb, &ring[r], &taps[r]);
         }
         return;
     }
@@ -460,7 +587,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         for (i = 0; i < a->count; ++i) {
             fast_plan *pl = &ring[i % FAST_AHEAD_FP];
             if (i + 1 < a->count) plan_fp_query(c, a, i + 1, &ring[(i + 1) % FAST_AHEAD_FP], &fpl[(i + 1) & 1]);
-            run_query(c, a, i, pl, &fpl[i & 1], fmt, nc, tb, 0, 0, aniso);
+            run_query(c, a, i, pl, &fpl[i & 1], NULL, fmt, nc, tb, 0, 0, aniso);
             if (i + FAST_AHEAD_FP < a->count) plan_query(c, a, i + FAST_AHEAD_FP, NULL, tb, 0, 0, pl);
         }
         return;

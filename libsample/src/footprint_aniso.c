@@ -128,11 +128,9 @@ SAMPLE_FORCE_INLINE void prefetch_probes(const sample_ctx *c, int lv, float s0, 
     }
 }
 
-void fp_aniso_plan(const sample_ctx *c, const sample_query *q, const double rho2[2], double log2_rho,
-                   float call_bias, fp_aniso_setup *a)
+void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a)
 {
     float s0, t0, s1, t1;
-    fp_aniso_setup_of(c, q, rho2, log2_rho, call_bias, a);
     fp_aniso_probe(q, a, 1, &s0, &t0);
     fp_aniso_probe(q, a, a->n, &s1, &t1);
     prefetch_probes(c, a->l0, s0, t0, s1, t1, a->n);
@@ -146,7 +144,7 @@ uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_b
     double rho2[2], lr = lod_log2_rho(c, q, rho2);
     fp_aniso_setup a;
     uint32_t texels;
-    fp_aniso_plan(c, q, rho2, lr, call_bias, &a);
+    fp_aniso_setup_of(c, q, rho2, lr, call_bias, &a);
     /* recon_level's bilinear, the fast path's way (same bits). */
     texels = fp_aniso_probes(c, q, &a, tex_readers_of(c->tex)->bilinear, out, dds, ddt);
     if (st) fp_aniso_stats(&a, st);

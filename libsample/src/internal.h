@@ -523,11 +523,10 @@ typedef struct fp_aniso_setup {
 /* From lod_log2_rho's ρx², ρy² and log2 ρ of the query. */
 void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double rho2[2],
                        double log2_rho, float call_bias, fp_aniso_setup *a);
-/* fp_aniso_setup_of, then a prefetch of every probe's rows (a hint): the
- * fast path's planning step. Out of line, so that the planning loop of the
- * other filters stays small. */
-void fp_aniso_plan(const sample_ctx *c, const sample_query *q, const double rho2[2], double log2_rho,
-                   float call_bias, fp_aniso_setup *a);
+/* A prefetch of every probe's rows (a hint), from positions stepped in
+ * float: the fast path's planning step for the queries whose probes it does
+ * not address exactly ahead (fast_gl.c, aniso_address). */
+void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a);
 
 /* Probe i (1 … N) of a query: offsets i/(N + 1) − ½ of the major column. */
 SAMPLE_FORCE_INLINE void fp_aniso_probe(const sample_query *q, const fp_aniso_setup *a, int i, float *s,
@@ -536,6 +535,22 @@ SAMPLE_FORCE_INLINE void fp_aniso_probe(const sample_query *q, const fp_aniso_se
     double off = (double)i / (a->n + 1) - 0.5;
     *s = (float)(q->s + off * a->ms);
     *t = (float)(q->t + off * a->mt);
+}
+
+/* One probe's trilinear value (1 − f)·a + f·b added to the sums: equal
+ * weights, summed in double so that the mean of N equal probes is that
+ * probe exactly. */
+SAMPLE_FORCE_INLINE void fp_aniso_add(double acc[4], double f, const float a[4], const float b[4])
+{
+    int k;
+    for (k = 0; k < 4; ++k) acc[k] += (1.0 - f) * a[k] + f * b[k];
+}
+
+/* The mean of n probes' sums. */
+SAMPLE_FORCE_INLINE void fp_aniso_mean(const double acc[4], int n, float out[4])
+{
+    int k;
+    for (k = 0; k < 4; ++k) out[k] = (float)(acc[k] / n);
 }
 
 /* One level's bilinear value at (s, t), as recon_level computes it; the
@@ -553,7 +568,7 @@ SAMPLE_FORCE_INLINE uint32_t fp_aniso_probes(const sample_ctx *c, const sample_q
     double acc[4] = {0, 0, 0, 0}, as[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
     double f = (double)a->f;
     uint32_t texels = 0;
-    int i, k;
+    int i;
     for (i = 1; i <= a->n; ++i) {
         float s, t, o0[4], s0[4], t0[4], o1[4], s1[4], t1[4];
         fp_aniso_probe(q, a, i, &s, &t);
@@ -566,19 +581,13 @@ SAMPLE_FORCE_INLINE uint32_t fp_aniso_probes(const sample_ctx *c, const sample_q
             if (dds) memcpy(s1, s0, sizeof s1);
             if (ddt) memcpy(t1, t0, sizeof t1);
         }
-        /* Equal weights, summed in double so the mean of N equal probes is
-         * that probe exactly. */
-        for (k = 0; k < 4; ++k) acc[k] += (1.0 - f) * o0[k] + f * o1[k];
-        if (dds)
-            for (k = 0; k < 4; ++k) as[k] += (1.0 - f) * s0[k] + f * s1[k];
-        if (ddt)
-            for (k = 0; k < 4; ++k) at[k] += (1.0 - f) * t0[k] + f * t1[k];
+        fp_aniso_add(acc, f, o0, o1);
+        if (dds) fp_aniso_add(as, f, s0, s1);
+        if (ddt) fp_aniso_add(at, f, t0, t1);
     }
-    for (k = 0; k < 4; ++k) {
-        out[k] = (float)(acc[k] / a->n);
-        if (dds) dds[k] = (float)(as[k] / a->n);
-        if (ddt) ddt[k] = (float)(at[k] / a->n);
-    }
+    fp_aniso_mean(acc, a->n, out);
+    if (dds) fp_aniso_mean(as, a->n, dds);
+    if (ddt) fp_aniso_mean(at, a->n, ddt);
     return texels;
 }
 
