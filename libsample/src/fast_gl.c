@@ -374,45 +374,68 @@ SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format f
 
 /* ---- Anisotropic probes addressed ahead ---------------------------------
  * plan_level's LINEAR addressing for all of a query's probes at once, as
- * loops over arrays of ANISO_LANES-multiple length that the compiler turns
- * into vector code (lane-wise IEEE operations: the same bits as one probe
- * at a time). Only the common case is taken: both wraps without a
- * wrap_coord transform and every block inside both levels, where
+ * loops of ANISO_LANES iterations without branches, which GCC turns into
+ * vector code at -O2 and -O3 (lane-wise IEEE operations: the same bits as
+ * one probe at a time). Only the common case is taken: both wraps without
+ * a wrap_coord transform and every block inside both levels, where
  * axis_index maps the block to itself whatever the wrap mode; the floor is
- * then a truncation (a ≥ 0) and the inside test is 0 ≤ a < w − 1
- * (⌊a⌋ ≤ w − 2). Anything else returns 0 and the query's probes are read
- * by fp_aniso_probes. */
+ * then a truncation (a ≥ 0), the inside test is 0 ≤ a < w − 1
+ * (⌊a⌋ ≤ w − 2), and recon_texel_coord's clamp of u to ±FLT_MAX cannot
+ * apply (an infinite u fails the test). Anything else returns 0 and the
+ * query's probes are read by fp_aniso_probes. */
+
+/* Before each loop over one vector's lanes: GCC -O3 would unroll the 8
+ * iterations completely and then vectorize poorly across them. */
+#if defined(__GNUC__)
+#define ANISO_LANE_LOOP _Pragma("GCC unroll 1")
+#else
+#define ANISO_LANE_LOOP
+#endif
+
+/* x where in is 1, +0 where it is 0: a select written as a mask, because
+ * GCC 12 does not if-convert `in ? x : 0.0f` in these loops. */
+SAMPLE_FORCE_INLINE float keep_if(float x, int in)
+{
+    uint32_t b;
+    memcpy(&b, &x, sizeof b);
+    b &= (uint32_t)-in;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
+
 static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an, size_t tb,
                          aniso_taps *at)
 {
     float s[ANISO_FAST_PROBES], t[ANISO_FAST_PROBES];
     int ii[ANISO_FAST_PROBES], jj[ANISO_FAST_PROBES];
     const int n = an->n, lanes = (n + ANISO_LANES - 1) / ANISO_LANES * ANISO_LANES;
-    int lv, k;
+    int lv, k, b0;
     at->n = 0;
     if (n > ANISO_FAST_PROBES || c->smp->wrap_s >= SAMPLE_WRAP_CLAMP || c->smp->wrap_t >= SAMPLE_WRAP_CLAMP)
         return 0;
     /* Lanes past n hold probes beyond the footprint's end: computed, never
      * read. */
-    for (k = 0; k < lanes; ++k) fp_aniso_probe(q, an, k + 1, &s[k], &t[k]);
+    for (b0 = 0; b0 < lanes; b0 += ANISO_LANES)
+        ANISO_LANE_LOOP
+        for (k = b0; k < b0 + ANISO_LANES; ++k) fp_aniso_probe(q, an, k + 1, &s[k], &t[k]);
     for (lv = 0; lv < 1 + (an->l1 != an->l0); ++lv) {
         const struct sample_level *L = &c->tex->level[lv ? an->l1 : an->l0];
-        const float wm = (float)(L->w - 1), hm = (float)(L->h - 1);
+        const float w = (float)L->w, h = (float)L->h, wm = w - 1.0f, hm = h - 1.0f;
         uintptr_t last0 = 0, last1 = 0;
         int out = 0;
-        for (k = 0; k < lanes; ++k) {
-            /* Modes below CLAMP leave s as it is (recon_texel_coord). */
-            float a = recon_texel_coord(SAMPLE_WRAP_REPEAT, s[k], L->w) - 0.5f;
-            float b = recon_texel_coord(SAMPLE_WRAP_REPEAT, t[k], L->h) - 0.5f;
-            int in = (a >= 0.0f) & (a < wm) & (b >= 0.0f) & (b < hm);
-            a = in ? a : 0.0f;
-            b = in ? b : 0.0f;
-            ii[k] = (int)a;
-            jj[k] = (int)b;
-            at->fu[lv][k] = a - (float)ii[k];
-            at->fv[lv][k] = b - (float)jj[k];
-            out |= !in & (k < n);
-        }
+        for (b0 = 0; b0 < lanes; b0 += ANISO_LANES)
+            ANISO_LANE_LOOP
+            for (k = b0; k < b0 + ANISO_LANES; ++k) {
+                float a = s[k] * w - 0.5f, b = t[k] * h - 0.5f;
+                int in = (a >= 0.0f) & (a < wm) & (b >= 0.0f) & (b < hm);
+                a = keep_if(a, in);
+                b = keep_if(b, in);
+                ii[k] = (int)a;
+                jj[k] = (int)b;
+                at->fu[lv][k] = a - (float)ii[k];
+                at->fv[lv][k] = b - (float)jj[k];
+                out |= (in ^ 1) & (k < n);
+            }
         if (out) return 0;
         /* Each block's lines, a line asked for by the probe before not
          * asked for again (prefetch_run). */

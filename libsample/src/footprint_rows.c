@@ -33,17 +33,17 @@
 #if defined(__AVX__)
 #include <immintrin.h>
 #endif
-typedef double v4d __attribute__((vector_size(32)));
-typedef float v4s __attribute__((vector_size(16)));
-typedef int64_t v4l __attribute__((vector_size(32)));
-typedef int32_t v4i __attribute__((vector_size(16)));
+typedef double d4 __attribute__((vector_size(32)));
+typedef float f4 __attribute__((vector_size(16)));
+typedef int64_t l4 __attribute__((vector_size(32)));
+typedef int32_t i4 __attribute__((vector_size(16)));
 
-static inline v4d v4d_set1(double x) { return (v4d){x, x, x, x}; }
+static inline d4 d4_set1(double x) { return (d4){x, x, x, x}; }
 /* |x|: the sign bit cleared, as fabs. */
-static inline v4l v4l_set1(int64_t x) { return (v4l){x, x, x, x}; }
-static inline v4d v4d_abs(v4d x) { return (v4d)((v4l)x & INT64_MAX); }
+static inline l4 l4_set1(int64_t x) { return (l4){x, x, x, x}; }
+static inline d4 d4_abs(d4 x) { return (d4)((l4)x & INT64_MAX); }
 /* x > 0 ? x : +0 on each lane (NaN gives +0). */
-static inline v4d v4d_pos(v4d x) { return (v4d)((v4l)x & (x > 0.0)); }
+static inline d4 d4_pos(d4 x) { return (d4)((l4)x & (x > 0.0)); }
 #endif
 
 /* Texel p's weighted channels added to the sums when w > 0 (fp_sums_add);
@@ -51,7 +51,7 @@ static inline v4d v4d_pos(v4d x) { return (v4d)((v4l)x & (x > 0.0)); }
  * NaN. */
 #if FP_ROWS_VECTOR
 typedef struct sums_reg {
-    v4d t;
+    d4 t;
     double w;
     uint32_t n;
 } sums_reg;
@@ -76,20 +76,20 @@ static inline void sums_store(fp_sums *s, const sums_reg *r)
  * started at +0 leaves it unchanged (round-to-nearest never makes −0 from a
  * +0 start), and so does adding its weight to Σw. The result is
  * fp_sums_add's on the texels with w > 0, in order, without a branch. */
-static inline void sums_chunk(sums_reg *r, v4d w, const unsigned char *p, int e)
+static inline void sums_chunk(sums_reg *r, d4 w, const unsigned char *p, int e)
 {
-    v4l in = w > 0.0;
+    l4 in = w > 0.0;
     int j;
     for (j = 0; j < e; ++j) {
-        v4d wv = v4d_set1(w[j]), t;
+        d4 wv = d4_set1(w[j]), t;
 #if defined(__AVX__)
         t = _mm256_cvtps_pd(_mm_loadu_ps((const float *)(const void *)(p + 16 * (size_t)j)));
 #else
-        v4s f;
+        f4 f;
         memcpy(&f, p + 16 * (size_t)j, sizeof f);
-        t = __builtin_convertvector(f, v4d);
+        t = __builtin_convertvector(f, d4);
 #endif
-        r->t += (v4d)((v4l)(wv * t) & v4l_set1(in[j]));
+        r->t += (d4)((l4)(wv * t) & l4_set1(in[j]));
         r->w += w[j];
         r->n -= (uint32_t)in[j];
     }
@@ -107,15 +107,15 @@ static void bn_row(fp_sums *s, const unsigned char *p, int n, double ilo, double
 {
     int k;
 #if FP_ROWS_VECTOR
-    const v4d m0 = v4d_set1(m[0]), m1 = v4d_set1(m[1]), m2 = v4d_set1(m[2]), m3 = v4d_set1(m[3]);
-    v4d kk = {0.0, 1.0, 2.0, 3.0};
+    const d4 m0 = d4_set1(m[0]), m1 = d4_set1(m[1]), m2 = d4_set1(m[2]), m3 = d4_set1(m[3]);
+    d4 kk = {0.0, 1.0, 2.0, 3.0};
     sums_reg r;
     sums_load(&r, s);
     for (k = 0; k < n; k += 4, kk += 4.0) {
-        v4d du = (ilo + kk) - u0, w;
+        d4 du = (ilo + kk) - u0, w;
         int e = n - k < 4 ? n - k : 4;
         /* Both factors in [+0, 1]: w is ≥ +0 and not NaN (sums_chunk). */
-        w = v4d_pos(1.0 - v4d_abs(m0 * du + m1)) * v4d_pos(1.0 - v4d_abs(m2 * du + m3));
+        w = d4_pos(1.0 - d4_abs(m0 * du + m1)) * d4_pos(1.0 - d4_abs(m2 * du + m3));
         sums_chunk(&r, w, p + 16 * (size_t)k, e);
     }
     sums_store(s, &r);
@@ -142,25 +142,25 @@ static void ewa_row(fp_sums *s, const unsigned char *p, int n, double ilo, doubl
     const double A = abc[0], B = abc[1], cvv = abc[2] * dv * dv;
     int k;
 #if FP_ROWS_VECTOR
-    v4d kk = {0.0, 1.0, 2.0, 3.0};
+    d4 kk = {0.0, 1.0, 2.0, 3.0};
     sums_reg r;
     sums_load(&r, s);
     for (k = 0; k < n; k += 4, kk += 4.0) {
-        v4d du = (ilo + kk) - u0, r2 = A * du * du + B * du * dv + cvv, w;
-        v4l in = r2 < 1.0;
+        d4 du = (ilo + kk) - u0, r2 = A * du * du + B * du * dv + cvv, w;
+        l4 in = r2 < 1.0;
         int e = n - k < 4 ? n - k : 4;
-        v4d x, lo, hi;
-        v4i ie;
+        d4 x, lo, hi;
+        i4 ie;
         /* fp_ewa_weight on four lanes; lanes outside read the table at 0
          * and are masked out after. r² < 1 keeps the index ≤ 127. */
-        r2 = (v4d)((v4l)v4d_pos(r2) & in);
+        r2 = (d4)((l4)d4_pos(r2) & in);
         x = r2 * 128.0;
-        ie = __builtin_convertvector(x, v4i);
-        lo = (v4d){fp_ewa_lut[ie[0]], fp_ewa_lut[ie[1]], fp_ewa_lut[ie[2]], fp_ewa_lut[ie[3]]};
-        hi = (v4d){fp_ewa_lut[ie[0] + 1], fp_ewa_lut[ie[1] + 1], fp_ewa_lut[ie[2] + 1], fp_ewa_lut[ie[3] + 1]};
-        w = lo + (x - __builtin_convertvector(ie, v4d)) * (hi - lo);
+        ie = __builtin_convertvector(x, i4);
+        lo = (d4){fp_ewa_lut[ie[0]], fp_ewa_lut[ie[1]], fp_ewa_lut[ie[2]], fp_ewa_lut[ie[3]]};
+        hi = (d4){fp_ewa_lut[ie[0] + 1], fp_ewa_lut[ie[1] + 1], fp_ewa_lut[ie[2] + 1], fp_ewa_lut[ie[3] + 1]};
+        w = lo + (x - __builtin_convertvector(ie, d4)) * (hi - lo);
         /* Table values are in [0, 1): w is ≥ +0 and not NaN. */
-        w = (v4d)((v4l)w & in);
+        w = (d4)((l4)w & in);
         sums_chunk(&r, w, p + 16 * (size_t)k, e);
     }
     sums_store(s, &r);

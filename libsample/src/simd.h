@@ -119,4 +119,93 @@ static inline v4f v4_from_f16x4(const unsigned char *p)
 }
 #endif
 
+/* Four doubles: sums of four-channel float values kept in double (the
+ * anisotropic filter's probes, fp_aniso_add). The same three builds: one
+ * AVX register, two SSE2 ones, or a plain array; lane-wise IEEE add and
+ * mul, and the exact float → double widening. */
+#if defined(SAMPLE_SIMD_SSE2) && defined(__AVX__)
+typedef __m256d v4d;
+static inline v4d v4d_load(const double *p) { return _mm256_loadu_pd(p); }
+static inline void v4d_store(double *p, v4d a) { _mm256_storeu_pd(p, a); }
+static inline v4d v4d_set1(double x) { return _mm256_set1_pd(x); }
+static inline v4d v4d_of(v4f a) { return _mm256_cvtps_pd(a); }
+static inline v4d v4d_add(v4d a, v4d b) { return _mm256_add_pd(a, b); }
+static inline v4d v4d_mul(v4d a, v4d b) { return _mm256_mul_pd(a, b); }
+#elif defined(SAMPLE_SIMD_SSE2)
+typedef struct v4d {
+    __m128d lo, hi;
+} v4d;
+static inline v4d v4d_load(const double *p)
+{
+    v4d r;
+    r.lo = _mm_loadu_pd(p);
+    r.hi = _mm_loadu_pd(p + 2);
+    return r;
+}
+static inline void v4d_store(double *p, v4d a)
+{
+    _mm_storeu_pd(p, a.lo);
+    _mm_storeu_pd(p + 2, a.hi);
+}
+static inline v4d v4d_set1(double x)
+{
+    v4d r;
+    r.lo = r.hi = _mm_set1_pd(x);
+    return r;
+}
+static inline v4d v4d_of(v4f a)
+{
+    v4d r;
+    r.lo = _mm_cvtps_pd(a);
+    r.hi = _mm_cvtps_pd(_mm_movehl_ps(a, a));
+    return r;
+}
+static inline v4d v4d_add(v4d a, v4d b)
+{
+    a.lo = _mm_add_pd(a.lo, b.lo);
+    a.hi = _mm_add_pd(a.hi, b.hi);
+    return a;
+}
+static inline v4d v4d_mul(v4d a, v4d b)
+{
+    a.lo = _mm_mul_pd(a.lo, b.lo);
+    a.hi = _mm_mul_pd(a.hi, b.hi);
+    return a;
+}
+#else
+typedef struct v4d {
+    double v[4];
+} v4d;
+static inline v4d v4d_load(const double *p)
+{
+    v4d r;
+    memcpy(r.v, p, sizeof r.v);
+    return r;
+}
+static inline void v4d_store(double *p, v4d a) { memcpy(p, a.v, sizeof a.v); }
+static inline v4d v4d_set1(double x)
+{
+    v4d r;
+    r.v[0] = r.v[1] = r.v[2] = r.v[3] = x;
+    return r;
+}
+static inline v4d v4d_of(v4f a)
+{
+    v4d r;
+    int k;
+    for (k = 0; k < 4; ++k) r.v[k] = a.v[k];
+    return r;
+}
+#define SAMPLE_V4D_LANEWISE(name, op)                                          \
+    static inline v4d name(v4d a, v4d b)                                       \
+    {                                                                          \
+        int k;                                                                 \
+        for (k = 0; k < 4; ++k) a.v[k] = a.v[k] op b.v[k];                     \
+        return a;                                                              \
+    }
+SAMPLE_V4D_LANEWISE(v4d_add, +)
+SAMPLE_V4D_LANEWISE(v4d_mul, *)
+#undef SAMPLE_V4D_LANEWISE
+#endif
+
 #endif /* SAMPLE_SIMD_H */
