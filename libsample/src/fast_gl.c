@@ -129,16 +129,16 @@ SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, i
     return 0;
 }
 
-/* Prefetch the lines of texels c0 … c1 of a row (either may be −1, the
- * border). A second prefetch of a line already asked for still takes a slot
- * in the miss queue, so the last texel's line is only asked for when it
- * differs. */
-SAMPLE_FORCE_INLINE void prefetch_run(const unsigned char *r, int c0, int c1, size_t tb)
+/* Prefetch the lines of the n texels c0 … c1 of a row (either may be −1,
+ * the border): the first texel's first byte and the last one's last byte.
+ * Both are asked for even when they share a line. Testing for that (a
+ * second prefetch of a line in flight takes a slot in the miss queue) cost
+ * more than it saved: the test depends on where the query falls, and its
+ * mispredictions made trilinear 27 % slower (doc/performance.md). */
+SAMPLE_FORCE_INLINE void prefetch_run(const unsigned char *r, int c0, int c1, int n, size_t tb)
 {
-    uintptr_t a = c0 >= 0 ? (uintptr_t)(r + (size_t)c0 * tb) : 0;
-    if (a) SAMPLE_PREFETCH(r + (size_t)c0 * tb);
-    if (c1 >= 0 && ((uintptr_t)(r + (size_t)c1 * tb + (tb - 1)) >> 6) != a >> 6)
-        SAMPLE_PREFETCH(r + (size_t)c1 * tb + (tb - 1));
+    if (c0 >= 0) SAMPLE_PREFETCH(r + (size_t)c0 * tb);
+    if (n > 1 && c1 >= 0) SAMPLE_PREFETCH(r + (size_t)c1 * tb + (tb - 1));
 }
 
 /* Addresses of one query on level lv (recon_level's coordinate rules) and,
@@ -171,7 +171,7 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
         const unsigned char *r = L->data + (size_t)y[0] * L->stride;
         for (k = 0; k < n; ++k, r += L->stride) {
             tp->row[k] = r;
-            if (prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], tb);
+            if (prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], n, tb);
         }
         return;
     }
@@ -179,7 +179,7 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
     for (k = 0; k < n; ++k) {
         const unsigned char *r = y[k] < 0 ? NULL : L->data + (size_t)y[k] * L->stride;
         tp->row[k] = r;
-        if (r && prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], tb);
+        if (r && prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], n, tb);
     }
 }
 
@@ -421,7 +421,6 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
     for (lv = 0; lv < 1 + (an->l1 != an->l0); ++lv) {
         const struct sample_level *L = &c->tex->level[lv ? an->l1 : an->l0];
         const float w = (float)L->w, h = (float)L->h, wm = w - 1.0f, hm = h - 1.0f;
-        uintptr_t last0 = 0, last1 = 0;
         int out = 0;
         for (b0 = 0; b0 < lanes; b0 += ANISO_LANES)
             ANISO_LANE_LOOP
@@ -437,22 +436,17 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
                 out |= (in ^ 1) & (k < n);
             }
         if (out) return 0;
-        /* Each block's lines, a line asked for by the probe before not
-         * asked for again (prefetch_run). */
+        /* Each block's lines, the first and last byte of both rows. No
+         * test for a line asked for already (prefetch_run): which lines
+         * repeat depends on the data, and the branches mispredicted so
+         * often that the query took 45 % longer (doc/performance.md). */
         for (k = 0; k < n; ++k) {
             const unsigned char *p = L->data + (size_t)jj[k] * L->stride + (size_t)ii[k] * tb;
-            uintptr_t a0 = (uintptr_t)p >> 6, a1 = (uintptr_t)(p + 2 * tb - 1) >> 6;
             at->p[lv][k] = p;
-            if (a0 != last0 && a0 != last1) {
-                SAMPLE_PREFETCH(p);
-                SAMPLE_PREFETCH(p + L->stride);
-            }
-            if (a1 != a0 && a1 != last0 && a1 != last1) {
-                SAMPLE_PREFETCH(p + 2 * tb - 1);
-                SAMPLE_PREFETCH(p + L->stride + 2 * tb - 1);
-            }
-            last0 = a0;
-            last1 = a1;
+            SAMPLE_PREFETCH(p);
+            SAMPLE_PREFETCH(p + L->stride);
+            SAMPLE_PREFETCH(p + 2 * tb - 1);
+            SAMPLE_PREFETCH(p + L->stride + 2 * tb - 1);
         }
     }
     at->n = n;
