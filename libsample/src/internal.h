@@ -895,14 +895,15 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, floa
     int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
     size_t tb = c->tex->texel_bytes;
     const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
-    /* The pair of texels may straddle a line: then ask for both. */
+    /* The pair's first and last byte (they may straddle a line), asked
+     * for without testing whether they share one: that test mispredicts
+     * (fast_gl.c, prefetch_run). */
     size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
-    int two = ((uintptr_t)p >> 6) != ((uintptr_t)(p + e) >> 6);
     SAMPLE_PREFETCH(p);
-    if (two) SAMPLE_PREFETCH(p + e);
+    SAMPLE_PREFETCH(p + e);
     if (j + 1 < L->h) {
         SAMPLE_PREFETCH(p + L->stride);
-        if (two) SAMPLE_PREFETCH(p + L->stride + e);
+        SAMPLE_PREFETCH(p + L->stride + e);
     }
 }
 
