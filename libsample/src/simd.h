@@ -20,6 +20,27 @@
 #include <stdint.h>
 #include <string.h>
 
+/* The plain builds' vector V of four T: a struct, loads and stores by
+ * memcpy, and lane-wise operations as loops (v4f and v4d below). */
+#define SAMPLE_PLAIN_LANES(V, T, load, store)                                  \
+    typedef struct V {                                                         \
+        T v[4];                                                                \
+    } V;                                                                       \
+    static inline V load(const T *p)                                           \
+    {                                                                          \
+        V r;                                                                   \
+        memcpy(r.v, p, sizeof r.v);                                            \
+        return r;                                                              \
+    }                                                                          \
+    static inline void store(T *p, V a) { memcpy(p, a.v, sizeof a.v); }
+#define SAMPLE_PLAIN_LANEWISE(V, name, op)                                     \
+    static inline V name(V a, V b)                                             \
+    {                                                                          \
+        int k;                                                                 \
+        for (k = 0; k < 4; ++k) a.v[k] = a.v[k] op b.v[k];                     \
+        return a;                                                              \
+    }
+
 #if defined(__SSE2__) && !defined(SAMPLE_NO_SIMD)
 #define SAMPLE_SIMD_SSE2 1
 #include <emmintrin.h>
@@ -82,16 +103,7 @@ static inline v4f v4_from_f16x4(const unsigned char *p)
 }
 #endif /* __F16C__ */
 #else
-typedef struct v4f {
-    float v[4];
-} v4f;
-static inline v4f v4_load(const float *p)
-{
-    v4f r;
-    memcpy(r.v, p, sizeof r.v);
-    return r;
-}
-static inline void v4_store(float *p, v4f a) { memcpy(p, a.v, sizeof a.v); }
+SAMPLE_PLAIN_LANES(v4f, float, v4_load, v4_store)
 static inline v4f v4_set(float x, float y, float z, float w)
 {
     v4f r;
@@ -99,17 +111,9 @@ static inline v4f v4_set(float x, float y, float z, float w)
     return r;
 }
 static inline v4f v4_set1(float x) { return v4_set(x, x, x, x); }
-#define SAMPLE_V4_LANEWISE(name, op)                                           \
-    static inline v4f name(v4f a, v4f b)                                       \
-    {                                                                          \
-        int k;                                                                 \
-        for (k = 0; k < 4; ++k) a.v[k] = a.v[k] op b.v[k];                     \
-        return a;                                                              \
-    }
-SAMPLE_V4_LANEWISE(v4_add, +)
-SAMPLE_V4_LANEWISE(v4_sub, -)
-SAMPLE_V4_LANEWISE(v4_mul, *)
-#undef SAMPLE_V4_LANEWISE
+SAMPLE_PLAIN_LANEWISE(v4f, v4_add, +)
+SAMPLE_PLAIN_LANEWISE(v4f, v4_sub, -)
+SAMPLE_PLAIN_LANEWISE(v4f, v4_mul, *)
 static inline v4f v4_from_f16x4(const unsigned char *p)
 {
     uint16_t h[4];
@@ -173,16 +177,7 @@ static inline v4d v4d_mul(v4d a, v4d b)
     return a;
 }
 #else
-typedef struct v4d {
-    double v[4];
-} v4d;
-static inline v4d v4d_load(const double *p)
-{
-    v4d r;
-    memcpy(r.v, p, sizeof r.v);
-    return r;
-}
-static inline void v4d_store(double *p, v4d a) { memcpy(p, a.v, sizeof a.v); }
+SAMPLE_PLAIN_LANES(v4d, double, v4d_load, v4d_store)
 static inline v4d v4d_set1(double x)
 {
     v4d r;
@@ -196,16 +191,8 @@ static inline v4d v4d_of(v4f a)
     for (k = 0; k < 4; ++k) r.v[k] = a.v[k];
     return r;
 }
-#define SAMPLE_V4D_LANEWISE(name, op)                                          \
-    static inline v4d name(v4d a, v4d b)                                       \
-    {                                                                          \
-        int k;                                                                 \
-        for (k = 0; k < 4; ++k) a.v[k] = a.v[k] op b.v[k];                     \
-        return a;                                                              \
-    }
-SAMPLE_V4D_LANEWISE(v4d_add, +)
-SAMPLE_V4D_LANEWISE(v4d_mul, *)
-#undef SAMPLE_V4D_LANEWISE
+SAMPLE_PLAIN_LANEWISE(v4d, v4d_add, +)
+SAMPLE_PLAIN_LANEWISE(v4d, v4d_mul, *)
 #endif
 
 #endif /* SAMPLE_SIMD_H */
