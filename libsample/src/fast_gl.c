@@ -2,8 +2,9 @@
  * The fast path of sample_batch for the OpenGL filters: NEAREST, LINEAR and
  * CUBIC per level, with or without mipmaps; with a footprint filter, the
  * magnified queries (λ ≤ 0, the mag filter); the anisotropic filter's
- * minified queries (planned with their probes a few queries ahead, the
- * probes read with this format's bilinear inlined); Blinn–Newell and EWA
+ * minified queries (their probes addressed and prefetched a few queries
+ * ahead, aniso_address, and read from those addresses; the rare others
+ * with this format's bilinear inlined); Blinn–Newell and EWA
  * planned one query ahead (fp_footprint_plan: geometry, counting pass and
  * row prefetches) and accumulated by the filter (sample_run_footprint). Also the
  * per-format readers the footprint filters use (tex_readers).
