@@ -205,30 +205,52 @@ static sample_query qs[NQ];
 static float biases[NQ];
 static sample_quad quads[NQ];
 
+/* Run `body` on a texture of every format and channel count at each of
+ * the sizes; it returns how many configurations differed (it stops after
+ * a few). One CHECK per texture, naming `what`. */
+typedef int (*texture_body)(const sample_texture *tex, int w, int h);
+
+static void for_each_texture(const int (*sizes)[2], int nsizes, texture_body body, const char *what)
+{
+    int f, nc, z;
+    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
+        for (nc = 1; nc <= 4; ++nc)
+            for (z = 0; z < nsizes; ++z) {
+                sample_texture *tex = make_texture((sample_format)f, nc, sizes[z][0], sizes[z][1]);
+                int fails;
+                if (!tex) continue;
+                fails = body(tex, sizes[z][0], sizes[z][1]);
+                CHECK(fails == 0, "%d %s differ (format %d, %d channels, %d x %d)", fails, what, f, nc,
+                      sizes[z][0], sizes[z][1]);
+                sample_texture_destroy(tex);
+            }
+}
+
+/* Every wrap mode and min filter, random mag filter and extras. */
+static int all_combinations(const sample_texture *tex, int w, int h)
+{
+    int wrap, min, fails = 0;
+    (void)w;
+    (void)h;
+    for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
+        for (min = 0; min < SAMPLE_FILTER_COUNT; ++min) {
+            sample_sampler s;
+            unsigned what = rnd() & 31;
+            random_sampler(&s, wrap, min);
+            fill_queries(qs, biases, quads);
+            run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
+            run(tex, s, 0, qs, biases, quads, what, NQ, &got);
+            if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) return fails;
+        }
+    return fails;
+}
+
 static void test_identical_all_combinations(void)
 {
     /* Sizes: an odd non-power-of-two pyramid, a power-of-two one, and a
      * one-texel-wide strip (every bilinear footprint wraps). */
     static const int sizes[3][2] = {{13, 7}, {16, 8}, {1, 5}};
-    int f, nc, z, wrap, min, fails = 0;
-    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
-        for (nc = 1; nc <= 4; ++nc)
-            for (z = 0; z < 3; ++z) {
-                sample_texture *tex = make_texture((sample_format)f, nc, sizes[z][0], sizes[z][1]);
-                if (!tex) continue;
-                for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
-                    for (min = 0; min < SAMPLE_FILTER_COUNT; ++min) {
-                        sample_sampler s;
-                        unsigned what = rnd() & 31;
-                        random_sampler(&s, wrap, min);
-                        fill_queries(qs, biases, quads);
-                        run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
-                        run(tex, s, 0, qs, biases, quads, what, NQ, &got);
-                        if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) break;
-                    }
-                CHECK(fails == 0, "%d configurations differ (format %d, %d channels)", fails, f, nc);
-                sample_texture_destroy(tex);
-            }
+    for_each_texture(sizes, 3, all_combinations, "configurations");
 }
 
 static void test_batch_sizes(void)
@@ -295,78 +317,76 @@ static void test_threads(void)
     sample_texture_destroy(tex);
 }
 
+/* Each wrap mode with each footprint filter: the fast path takes their
+ * λ ≤ 0 queries (the mag filter) and hands the others to the filter. */
+static int footprint_samplers(const sample_texture *tex, int w, int h)
+{
+    int wrap, fp, fails = 0;
+    (void)w;
+    (void)h;
+    for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
+        for (fp = 1; fp < SAMPLE_FOOTPRINT_COUNT; ++fp) {
+            sample_sampler s;
+            unsigned what = rnd() & 31;
+            random_sampler(&s, wrap, SAMPLE_LINEAR_MIPMAP_LINEAR);
+            s.footprint = (sample_footprint)fp;
+            s.max_anisotropy = 16.0f;
+            fill_queries(qs, biases, quads);
+            run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
+            run(tex, s, 0, qs, biases, quads, what, NQ, &got);
+            if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) return fails;
+        }
+    return fails;
+}
+
 static void test_footprint_samplers(void)
 {
-    /* Footprint filters: the fast path takes their λ ≤ 0 queries (the mag
-     * filter) and hands the others to the filter; both paths must agree. */
     static const int sizes[2][2] = {{13, 7}, {16, 8}};
-    int f, nc, z, wrap, fp, fails = 0;
-    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
-        for (nc = 1; nc <= 4; ++nc)
-            for (z = 0; z < 2; ++z) {
-                sample_texture *tex = make_texture((sample_format)f, nc, sizes[z][0], sizes[z][1]);
-                if (!tex) continue;
-                for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
-                    for (fp = 1; fp < SAMPLE_FOOTPRINT_COUNT; ++fp) {
-                        sample_sampler s;
-                        unsigned what = rnd() & 31;
-                        random_sampler(&s, wrap, SAMPLE_LINEAR_MIPMAP_LINEAR);
-                        s.footprint = (sample_footprint)fp;
-                        s.max_anisotropy = 16.0f;
-                        fill_queries(qs, biases, quads);
-                        run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
-                        run(tex, s, 0, qs, biases, quads, what, NQ, &got);
-                        if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) break;
-                    }
-                CHECK(fails == 0, "%d footprint configurations differ (format %d, %d channels)", fails,
-                      f, nc);
-                sample_texture_destroy(tex);
-            }
+    for_each_texture(sizes, 2, footprint_samplers, "footprint configurations");
+}
+
+/* The anisotropic filter's common case, which the fast path addresses
+ * when it plans the query (fast_gl.c, aniso_address): every probe's block
+ * inside both levels of a texture larger than the footprint. Footprints of
+ * 1 to 24 probes (above 16 the probes are read one at a time), at random
+ * angles and λ', on wraps with and without a coordinate transform; values
+ * only, values with stats, and with derivatives (read one probe at a
+ * time). */
+static int aniso_addressed(const sample_texture *tex, int w, int h)
+{
+    int rep, i, fails = 0;
+    (void)h;
+    for (rep = 0; rep < 6; ++rep) {
+        sample_sampler s;
+        unsigned what = rep < 3 ? 0u : (rep == 3 ? 4u : (unsigned)(rnd() & 7));
+        sample_sampler_init(&s);
+        s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+        s.footprint = SAMPLE_FOOTPRINT_ANISOTROPIC;
+        s.max_anisotropy = rep == 2 ? 32.0f : 16.0f;
+        s.wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
+        s.wrap_t = rep == 1 ? SAMPLE_WRAP_CLAMP : SAMPLE_WRAP_REPEAT;
+        for (i = 0; i < NQ; ++i) {
+            /* Minor axis 0.6–3 texels, major up to 16 (24) times that. */
+            float ang = frand(0.0f, 6.2831853f), minor = frand(0.6f, 3.0f) / (float)w;
+            float major = minor * frand(1.0f, rep == 2 ? 24.0f : 16.0f);
+            qs[i].s = frand(0.25f, 0.75f);
+            qs[i].t = frand(0.25f, 0.75f);
+            qs[i].dsdx = major * cosf(ang);
+            qs[i].dtdx = major * sinf(ang);
+            qs[i].dsdy = -minor * sinf(ang);
+            qs[i].dtdy = minor * cosf(ang);
+        }
+        run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
+        run(tex, s, 0, qs, biases, quads, what, NQ, &got);
+        if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) return fails;
+    }
+    return fails;
 }
 
 static void test_aniso_addressed(void)
 {
-    /* The anisotropic filter's common case, which the fast path addresses
-     * when it plans the query (fast_gl.c, aniso_address): every probe's
-     * block inside both levels of a texture larger than the footprint.
-     * Footprints of 1 to 24 probes (above 16 the probes are read one at a
-     * time), at random angles and λ', on wraps with and without a
-     * coordinate transform; values only, values with stats, and with
-     * derivatives (read one probe at a time). */
     static const int sizes[2][2] = {{64, 64}, {61, 37}};
-    int f, nc, z, rep, i, fails = 0;
-    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
-        for (nc = 1; nc <= 4; ++nc)
-            for (z = 0; z < 2; ++z) {
-                sample_texture *tex = make_texture((sample_format)f, nc, sizes[z][0], sizes[z][1]);
-                for (rep = 0; rep < 6; ++rep) {
-                    sample_sampler s;
-                    unsigned what = rep < 3 ? 0u : (rep == 3 ? 4u : (unsigned)(rnd() & 7));
-                    sample_sampler_init(&s);
-                    s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
-                    s.footprint = SAMPLE_FOOTPRINT_ANISOTROPIC;
-                    s.max_anisotropy = rep == 2 ? 32.0f : 16.0f;
-                    s.wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-                    s.wrap_t = rep == 1 ? SAMPLE_WRAP_CLAMP : SAMPLE_WRAP_REPEAT;
-                    for (i = 0; i < NQ; ++i) {
-                        /* Minor axis 0.6–3 texels, major up to 24 times that. */
-                        float ang = frand(0.0f, 6.2831853f), minor = frand(0.6f, 3.0f) / (float)sizes[z][0];
-                        float major = minor * frand(1.0f, rep == 2 ? 24.0f : 16.0f);
-                        qs[i].s = frand(0.25f, 0.75f);
-                        qs[i].t = frand(0.25f, 0.75f);
-                        qs[i].dsdx = major * cosf(ang);
-                        qs[i].dtdx = major * sinf(ang);
-                        qs[i].dsdy = -minor * sinf(ang);
-                        qs[i].dtdy = minor * cosf(ang);
-                    }
-                    run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
-                    run(tex, s, 0, qs, biases, quads, what, NQ, &got);
-                    if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) break;
-                }
-                CHECK(fails == 0, "%d anisotropic configurations differ (format %d, %d channels)", fails, f,
-                      nc);
-                sample_texture_destroy(tex);
-            }
+    for_each_texture(sizes, 2, aniso_addressed, "anisotropic configurations");
 }
 
 static void test_scalar_option_value(void)

@@ -97,33 +97,18 @@ void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double 
  * misses overlap (the queries whose probes fast_gl.c's aniso_address does
  * not address: more than 16 probes, clamping wraps, blocks across an edge).
  * Only a hint, so the probes' texel positions are stepped along the major
- * axis in float (no per-probe division or double), and each is clamped
- * into the level, so no invalid address is formed. Every probe's lines are
- * asked for, repeats included: a test for a line asked for already
- * mispredicts more than the repeats cost (fast_gl.c, prefetch_run).
- * Inline: GCC deletes calls to a function whose only effect is a prefetch
+ * axis in float (no per-probe division or double); every probe's block is
+ * asked for, repeats included (ctx_prefetch_block). Inline: GCC deletes
+ * calls to a function whose only effect is a prefetch
  * (doc/performance.md). */
 SAMPLE_FORCE_INLINE void prefetch_probes(const sample_ctx *c, int lv, float s0, float t0, float s1, float t1, int n)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    const size_t tb = c->tex->texel_bytes;
     float u = s0 * (float)L->w - 0.5f, v = t0 * (float)L->h - 0.5f;
     float du = n > 1 ? (s1 - s0) * (float)L->w / (float)(n - 1) : 0.0f;
     float dv = n > 1 ? (t1 - t0) * (float)L->h / (float)(n - 1) : 0.0f;
     int k;
-    for (k = 0; k < n; ++k, u += du, v += dv) {
-        int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
-        int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
-        const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
-        /* Texels i and i + 1 may straddle a line. */
-        size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
-        SAMPLE_PREFETCH(p);
-        SAMPLE_PREFETCH(p + e);
-        if (j + 1 < L->h) {
-            SAMPLE_PREFETCH(p + L->stride);
-            SAMPLE_PREFETCH(p + L->stride + e);
-        }
-    }
+    for (k = 0; k < n; ++k, u += du, v += dv) ctx_prefetch_block(c, L, u, v);
 }
 
 void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a)

@@ -884,20 +884,18 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const sample_ctx *c, int
     return (const unsigned char *)buf;
 }
 
-/* Prefetch the two rows a bilinear read near (s, t) on level lv needs.
- * Wrapping is ignored (a hint), but the address is kept inside the level so
- * that no invalid pointer is ever formed. */
-SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, float s, float t)
+/* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
+ * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
+ * address is kept inside the level so that no invalid pointer is ever
+ * formed. The pair's first and last byte (they may straddle a line) are
+ * asked for without testing whether they share one: that test mispredicts
+ * (fast_gl.c, prefetch_run). */
+SAMPLE_FORCE_INLINE void ctx_prefetch_block(const sample_ctx *c, const struct sample_level *L, float u, float v)
 {
-    const struct sample_level *L = &c->tex->level[lv];
-    float u = s * (float)L->w - 0.5f, v = t * (float)L->h - 0.5f;
     int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
     int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
     size_t tb = c->tex->texel_bytes;
     const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
-    /* The pair's first and last byte (they may straddle a line), asked
-     * for without testing whether they share one: that test mispredicts
-     * (fast_gl.c, prefetch_run). */
     size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
     SAMPLE_PREFETCH(p);
     SAMPLE_PREFETCH(p + e);
@@ -905,6 +903,13 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, floa
         SAMPLE_PREFETCH(p + L->stride);
         SAMPLE_PREFETCH(p + L->stride + e);
     }
+}
+
+/* The same for a bilinear read near (s, t) on level lv. */
+SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, float s, float t)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    ctx_prefetch_block(c, L, s * (float)L->w - 0.5f, t * (float)L->h - 0.5f);
 }
 
 /* One level of a footprint filter: when `count_only`, returns (as a double,
