@@ -205,6 +205,15 @@ static sample_query qs[NQ];
 static float biases[NQ];
 static sample_quad quads[NQ];
 
+/* The reference and the fast path on the query set qs, in one batch:
+ * nonzero (and a line on stderr) when they differ. */
+static int differs(const sample_texture *tex, const sample_sampler *s, unsigned what)
+{
+    run(tex, *s, 1, qs, biases, quads, what, NQ, &ref);
+    run(tex, *s, 0, qs, biases, quads, what, NQ, &got);
+    return !same(&ref, &got, tex, s, qs);
+}
+
 /* Run `body` on a texture of every format and channel count at each of
  * the sizes; it returns how many configurations differed (it stops after
  * a few). One CHECK per texture, naming `what`. */
@@ -226,23 +235,33 @@ static void for_each_texture(const int (*sizes)[2], int nsizes, texture_body bod
             }
 }
 
-/* Every wrap mode and min filter, random mag filter and extras. */
-static int all_combinations(const sample_texture *tex, int w, int h)
+/* Every wrap mode with every min filter (no footprint filter), or with
+ * every footprint filter (min LINEAR_MIPMAP_LINEAR, max_anisotropy 16: the
+ * fast path takes their λ ≤ 0 queries, the mag filter, and hands the
+ * others to the filter); random mag filter and extras. */
+static int wrap_cases(const sample_texture *tex, int footprints)
 {
-    int wrap, min, fails = 0;
-    (void)w;
-    (void)h;
+    int wrap, k, fails = 0, n = footprints ? SAMPLE_FOOTPRINT_COUNT - 1 : SAMPLE_FILTER_COUNT;
     for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
-        for (min = 0; min < SAMPLE_FILTER_COUNT; ++min) {
+        for (k = 0; k < n; ++k) {
             sample_sampler s;
             unsigned what = rnd() & 31;
-            random_sampler(&s, wrap, min);
+            random_sampler(&s, wrap, footprints ? SAMPLE_LINEAR_MIPMAP_LINEAR : k);
+            if (footprints) {
+                s.footprint = (sample_footprint)(k + 1);
+                s.max_anisotropy = 16.0f;
+            }
             fill_queries(qs, biases, quads);
-            run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
-            run(tex, s, 0, qs, biases, quads, what, NQ, &got);
-            if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) return fails;
+            if (differs(tex, &s, what) && ++fails > 5) return fails;
         }
     return fails;
+}
+
+static int all_combinations(const sample_texture *tex, int w, int h)
+{
+    (void)w;
+    (void)h;
+    return wrap_cases(tex, 0);
 }
 
 static void test_identical_all_combinations(void)
@@ -317,26 +336,11 @@ static void test_threads(void)
     sample_texture_destroy(tex);
 }
 
-/* Each wrap mode with each footprint filter: the fast path takes their
- * λ ≤ 0 queries (the mag filter) and hands the others to the filter. */
 static int footprint_samplers(const sample_texture *tex, int w, int h)
 {
-    int wrap, fp, fails = 0;
     (void)w;
     (void)h;
-    for (wrap = 0; wrap < SAMPLE_WRAP_COUNT; ++wrap)
-        for (fp = 1; fp < SAMPLE_FOOTPRINT_COUNT; ++fp) {
-            sample_sampler s;
-            unsigned what = rnd() & 31;
-            random_sampler(&s, wrap, SAMPLE_LINEAR_MIPMAP_LINEAR);
-            s.footprint = (sample_footprint)fp;
-            s.max_anisotropy = 16.0f;
-            fill_queries(qs, biases, quads);
-            run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
-            run(tex, s, 0, qs, biases, quads, what, NQ, &got);
-            if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) return fails;
-        }
-    return fails;
+    return wrap_cases(tex, 1);
 }
 
 static void test_footprint_samplers(void)
@@ -376,9 +380,7 @@ static int aniso_addressed(const sample_texture *tex, int w, int h)
             qs[i].dsdy = -minor * sinf(ang);
             qs[i].dtdy = minor * cosf(ang);
         }
-        run(tex, s, 1, qs, biases, quads, what, NQ, &ref);
-        run(tex, s, 0, qs, biases, quads, what, NQ, &got);
-        if (!same(&ref, &got, tex, &s, qs) && ++fails > 5) return fails;
+        if (differs(tex, &s, what) && ++fails > 5) return fails;
     }
     return fails;
 }
