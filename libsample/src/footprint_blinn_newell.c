@@ -30,7 +30,7 @@ typedef struct bn_level_geom {
     int fail; /* the level cannot be filtered (unbounded or singular) */
     double u0, v0, ku, kv, jlo, nrows;
     double M[2][2];    /* parallelogram: J′⁻¹ (texel offset → screen) */
-    double sa[2], sb[2]; /* parallelogram: |M₀₀|, |M₁₀| and M₀₁, M₁₁ times their signs */
+    double P[4];       /* parallelogram: |M₀₀|, ±M₀₁, |M₁₀|, ±M₁₁ (the sign of M·₀) */
     double G[3][3];    /* quad: the pulled-back inverse homography */
     double V[4][2];    /* quad: the widened support's corners */
     fp_spans spans;    /* rows found by the counting pass */
@@ -109,10 +109,10 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     e->M[0][1] = -Jw[0][1] / det;
     e->M[1][0] = -Jw[1][0] / det;
     e->M[1][1] = Jw[0][0] / det;
-    e->sa[0] = fabs(e->M[0][0]);
-    e->sb[0] = e->M[0][0] < 0.0 ? -e->M[0][1] : e->M[0][1];
-    e->sa[1] = fabs(e->M[1][0]);
-    e->sb[1] = e->M[1][0] < 0.0 ? -e->M[1][1] : e->M[1][1];
+    e->P[0] = fabs(e->M[0][0]);
+    e->P[1] = e->M[0][0] < 0.0 ? -e->M[0][1] : e->M[0][1];
+    e->P[2] = fabs(e->M[1][0]);
+    e->P[3] = e->M[1][0] < 0.0 ? -e->M[1][1] : e->M[1][1];
     /* Rows: the parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v. */
     ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
     e->jlo = ceil(e->v0 - ext);
@@ -120,27 +120,17 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     e->spans.n = 0;
 }
 
-/* Row dv's span: the intersection of the slabs |x| ≤ 1 and |y| ≤ 1. With
- * a = |M₀₀| > 0 and b = ±M₀₁·dv (the sign of M₀₀) the x slab is
- * [(−1 − b)/a, (1 − b)/a]: slab()'s bounds to the bit (negation is exact),
- * without its branches; a zero M₀₀ or M₁₀ (a row parallel to a side) takes
- * slab(). */
+/* Row dv's span: the intersection of the slabs |x| ≤ 1 and |y| ≤ 1
+ * (footprint_rows.c, bn_bounds); a zero M₀₀ or M₁₀ (a row parallel to a
+ * side) takes slab(). */
+static int bn_affine_sliced(const bn_level_geom *e) { return e->P[0] > 0.0 && e->P[2] > 0.0; }
+
 static double bn_affine_span(const bn_level_geom *e, double dv, double *ilo)
 {
-    double lo = -INFINITY, hi = INFINITY, b0, b1, l0, h0, l1, h1;
-    if (!(e->sa[0] > 0.0 && e->sa[1] > 0.0)) {
-        slab(e->M[0][0], e->M[0][1] * dv, &lo, &hi);
-        slab(e->M[1][0], e->M[1][1] * dv, &lo, &hi);
-        return row_span(e->u0, lo, hi, ilo);
-    }
-    b0 = e->sb[0] * dv;
-    b1 = e->sb[1] * dv;
-    l0 = (-1.0 - b0) / e->sa[0];
-    h0 = (1.0 - b0) / e->sa[0];
-    l1 = (-1.0 - b1) / e->sa[1];
-    h1 = (1.0 - b1) / e->sa[1];
-    lo = l0 > l1 ? l0 : l1;
-    hi = h0 < h1 ? h0 : h1;
+    double lo = -INFINITY, hi = INFINITY;
+    if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_span(e->P, e->u0, dv, ilo);
+    slab(e->M[0][0], e->M[0][1] * dv, &lo, &hi);
+    slab(e->M[1][0], e->M[1][1] * dv, &lo, &hi);
     return row_span(e->u0, lo, hi, ilo);
 }
 
@@ -155,9 +145,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     bn_level_geom *e = &g->memo[lv & 1];
     double u0, v0, M[2][2], jlo, total = 0.0, ku, kv;
     int r, k, nrows;
-    fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
-    const fp_row_kernels *rows;
 
     if (e->lv != lv) bn_affine_setup(c, g, lv, e);
     if (!(e->nrows <= cap)) return INFINITY;
@@ -168,8 +156,22 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     memcpy(M, e->M, sizeof M);
     jlo = e->jlo;
     nrows = (int)e->nrows;
-    if (count_only) return fp_count_rows(c, lv, &e->spans, bn_affine_span_fn, e, jlo, v0, nrows, cap);
-    rows = isa_kernels_active()->rows;
+    if (count_only) {
+        fp_level_rows lr = {c, &e->spans, bn_affine_span_fn, e, lv, nrows, jlo, u0, v0};
+        if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_count(&lr, &e->spans, e->P);
+        return fp_count_rows(c, lv, &e->spans, bn_affine_span_fn, e, jlo, v0, nrows, cap);
+    }
+    if (!acc->deriv) {
+        /* The pyramid alone, the level at once (footprint_rows.c), sums in
+         * registers. With |x|, |y| < 1 both factors are at least 2^−53, so
+         * w > 0 there (M and du are finite, fp_shape_reshape: det J′ =
+         * ±t0·t1, t ≥ 1). */
+        fp_level_rows lr = {c, &e->spans, bn_affine_span_fn, e, lv, nrows, jlo, u0, v0};
+        fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
+        isa_kernels_active()->rows->bn_level(&sm, &lr, (const double(*)[2])M);
+        fp_accum_fold(acc, &sm);
+        return sm.n;
+    }
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
         const unsigned char *p, *at;
@@ -177,15 +179,6 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
-        if (!acc->deriv) {
-            /* The pyramid alone, the row at once (footprint_rows.c), sums
-             * in registers. With |x|, |y| < 1 both factors are at least
-             * 2^−53, so w > 0 there (M and du are finite, fp_shape_reshape:
-             * det J′ = ±t0·t1, t ≥ 1). */
-            const double m[4] = {M[0][0], M[0][1] * dv, M[1][0], M[1][1] * dv};
-            rows->bn_row(&sm, p, (int)ncol, ilo, u0, m);
-            continue;
-        }
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, gx = 0.0, gy = 0.0, w;
             float t4[4];
@@ -197,9 +190,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
             total += 1.0;
         }
     }
-    if (acc->deriv) return total;
-    fp_accum_fold(acc, &sm);
-    return total + sm.n;
+    return total;
 }
 
 /* ---- General quadrilateral (exact corners): the projective map --------- */

@@ -61,7 +61,7 @@ const double fp_ewa_lut[129] = {
 typedef struct ewa_level_geom {
     int lv; /* −1: empty */
     int fs, ft;
-    double u0, v0, A, B, C, jlo, nrows, ku, kv;
+    double u0, v0, abc[3], jlo, nrows, ku, kv; /* abc: A, B, C normalized */
     fp_spans spans; /* rows found by the counting pass */
 } ewa_level_geom;
 
@@ -98,22 +98,17 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
      * [[C, −B/2], [−B/2, A]] before scaling, so |dv| ≤ √A. */
     e->jlo = ceil(e->v0 - sqrt(A));
     e->nrows = floor(e->v0 + sqrt(A)) - e->jlo + 1.0;
-    e->A = A / F;
-    e->B = B / F;
-    e->C = C / F;
+    e->abc[0] = A / F;
+    e->abc[1] = B / F;
+    e->abc[2] = C / F;
     e->spans.n = 0;
 }
 
-/* Row dv's span: the columns where A·du² + B·dv·du + C·dv² < 1. */
+/* Row dv's span: the columns where A·du² + B·dv·du + C·dv² < 1
+ * (footprint_rows.c, ewa_bounds). */
 static double ewa_span(const ewa_level_geom *m, double dv, double *ilo)
 {
-    double disc = m->B * m->B * dv * dv - 4.0 * m->A * (m->C * dv * dv - 1.0), sq, a, b;
-    if (!(disc > 0.0)) return 0.0;
-    sq = sqrt(disc);
-    a = fp_ceil(m->u0 + (-m->B * dv - sq) / (2.0 * m->A));
-    b = fp_floor(m->u0 + (-m->B * dv + sq) / (2.0 * m->A));
-    *ilo = a;
-    return b >= a ? b - a + 1.0 : 0.0;
+    return isa_kernels_active()->rows->ewa_span(m->abc, m->u0, dv, ilo);
 }
 
 /* ewa_span as an fp_span_fn. */
@@ -126,27 +121,30 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     ewa_level_geom *m = &g->memo[lv & 1];
     double u0, v0, A, B, C, jlo, total = 0.0, ku, kv;
     int r, k, nrows;
-    fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
-    const fp_row_kernels *rows;
-    double abc[3];
+    fp_level_rows lr;
 
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
     if (!(m->nrows <= cap)) return INFINITY;
     u0 = m->u0;
     v0 = m->v0;
-    A = m->A;
-    B = m->B;
-    C = m->C;
+    A = m->abc[0];
+    B = m->abc[1];
+    C = m->abc[2];
     jlo = m->jlo;
     nrows = (int)m->nrows;
     ku = m->ku;
     kv = m->kv;
-    abc[0] = A;
-    abc[1] = B;
-    abc[2] = C;
-    if (count_only) return fp_count_rows(c, lv, &m->spans, ewa_span_fn, m, jlo, v0, nrows, cap);
-    rows = isa_kernels_active()->rows;
+    lr = (fp_level_rows){c, &m->spans, ewa_span_fn, m, lv, nrows, jlo, u0, v0};
+    if (count_only) return isa_kernels_active()->rows->ewa_count(&lr, &m->spans, m->abc);
+    if (!acc->deriv) {
+        /* The weight alone, the level at once (footprint_rows.c), sums in
+         * registers. */
+        fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
+        isa_kernels_active()->rows->ewa_level(&sm, &lr, m->abc);
+        fp_accum_fold(acc, &sm);
+        return sm.n;
+    }
     for (r = 0; r < nrows; ++r) {
         double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
         const unsigned char *p, *at;
@@ -154,12 +152,6 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
-        if (!acc->deriv) {
-            /* The weight alone, the row at once (footprint_rows.c), sums
-             * in registers. */
-            rows->ewa_row(&sm, p, (int)ncol, ilo, u0, dv, abc);
-            continue;
-        }
         for (k = 0; k < (int)ncol; ++k) {
             double ii = ilo + k, du = ii - u0, r2, w, dw;
             float t4[4];
@@ -173,9 +165,7 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
             total += 1.0;
         }
     }
-    if (acc->deriv) return total;
-    fp_accum_fold(acc, &sm);
-    return total + sm.n;
+    return total;
 }
 
 /* A plan's geometry: the query's, and its two levels' memos. */

@@ -70,16 +70,29 @@ static inline void sums_store(fp_sums *s, const sums_reg *r)
     s->n = r->n;
 }
 
+/* Whether any lane of a mask is set. */
+static inline int l4_any(l4 m)
+{
+#if defined(__AVX__)
+    return !_mm256_testz_si256((__m256i)m, (__m256i)m);
+#else
+    return (m[0] | m[1] | m[2] | m[3]) != 0;
+#endif
+}
+
 /* Texels k < e of a chunk whose weights (lanes of w) are ≥ +0 and never
- * NaN. A texel of weight 0 must add nothing (it may be ±inf or NaN), so its
- * product is masked to +0 rather than skipped: +0 added to a sum that
- * started at +0 leaves it unchanged (round-to-nearest never makes −0 from a
- * +0 start), and so does adding its weight to Σw. The result is
- * fp_sums_add's on the texels with w > 0, in order, without a branch. */
+ * NaN, added to the sums in order: fp_sums_add's on the texels with w > 0.
+ * Inside a span nearly every texel has w > 0 (the spans are the filters'
+ * own bounds), and then the chunk needs no mask. A texel of weight 0 must
+ * add nothing (it may be ±inf or NaN); where the chunk has one, products
+ * are masked to +0 rather than skipped: +0 added to a sum that started at
+ * +0 leaves it unchanged (round-to-nearest never makes −0 from a +0
+ * start), and so does adding its weight to Σw. */
 static inline void sums_chunk(sums_reg *r, d4 w, const unsigned char *p, int e)
 {
+    const l4 live = (l4){0, 1, 2, 3} < l4_set1(e);
     l4 in = w > 0.0;
-    int j;
+    int j, all = !l4_any(live & ~in);
     for (j = 0; j < e; ++j) {
         d4 wv = d4_set1(w[j]), t;
 #if defined(__AVX__)
@@ -89,94 +102,272 @@ static inline void sums_chunk(sums_reg *r, d4 w, const unsigned char *p, int e)
         memcpy(&f, p + 16 * (size_t)j, sizeof f);
         t = __builtin_convertvector(f, d4);
 #endif
-        r->t += (d4)((l4)(wv * t) & l4_set1(in[j]));
+        if (all)
+            r->t += wv * t;
+        else
+            r->t += (d4)((l4)(wv * t) & l4_set1(in[j]));
         r->w += w[j];
-        r->n -= (uint32_t)in[j];
     }
+    r->n += all ? (uint32_t)e : (uint32_t)-(in[0] & live[0]) - (uint32_t)(in[1] & live[1]) -
+                                    (uint32_t)(in[2] & live[2]) - (uint32_t)(in[3] & live[3]);
 }
 #endif
 
-/* ---- Blinn–Newell (footprint_blinn_newell.c, the parallelogram) --------- */
+/* ---- Each filter's weights, four texels (or one) at a time ------------- */
 
-/* The pyramid at texel ilo + k, k < n, of a row: with du = (ilo + k) − u0,
- * x = m₀·du + m₁ and y = m₂·du + m₃ (the row's offset folded into m₁, m₃),
- * w = (1 − |x|)(1 − |y|) where both are inside (−1, 1), else 0. Each
- * factor is clamped at 0 instead of testing |x| < 1: 1 − |x| ≤ 0 exactly
- * when |x| ≥ 1. ilo is integral, so ilo + k is exact. */
-static void bn_row(fp_sums *s, const unsigned char *p, int n, double ilo, double u0, const double m[4])
-{
-    int k;
+/* The kernels below are written once over `lanes`: four doubles (one texel
+ * each) where the vector extensions exist, one double in the portable
+ * build, with the same operations lane by lane. */
 #if FP_ROWS_VECTOR
-    const d4 m0 = d4_set1(m[0]), m1 = d4_set1(m[1]), m2 = d4_set1(m[2]), m3 = d4_set1(m[3]);
-    d4 kk = {0.0, 1.0, 2.0, 3.0};
+typedef d4 lanes;
+#define LANES 4
+static inline lanes lanes_iota(void) { return (d4){0.0, 1.0, 2.0, 3.0}; }
+static inline lanes lanes_abs(lanes x) { return d4_abs(x); }
+static inline lanes lanes_pos(lanes x) { return d4_pos(x); }
+/* x where r2 < 1, else +0 (x is ≥ +0 and not NaN there). */
+static inline lanes lanes_inside(lanes r2, lanes x) { return (d4)((l4)x & (r2 < 1.0)); }
+/* fp_ceil and fp_floor on each lane (+ 0.0: a zero result is +0, as
+ * theirs; every other value is unchanged by it). */
+static inline lanes lanes_ceil(lanes x)
+{
+#if defined(__AVX__)
+    return _mm256_round_pd(x, _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC) + 0.0;
+#else
+    return (d4){fp_ceil(x[0]), fp_ceil(x[1]), fp_ceil(x[2]), fp_ceil(x[3])};
+#endif
+}
+static inline lanes lanes_floor(lanes x)
+{
+#if defined(__AVX__)
+    return _mm256_round_pd(x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC) + 0.0;
+#else
+    return (d4){fp_floor(x[0]), fp_floor(x[1]), fp_floor(x[2]), fp_floor(x[3])};
+#endif
+}
+static inline lanes lanes_set1(double x) { return d4_set1(x); }
+static inline lanes lanes_sqrt(lanes x)
+{
+#if defined(__AVX__)
+    return _mm256_sqrt_pd(x);
+#else
+    return (d4){sqrt(x[0]), sqrt(x[1]), sqrt(x[2]), sqrt(x[3])};
+#endif
+}
+/* c ? a : b on each lane. */
+static inline lanes lanes_select(l4 c, lanes a, lanes b) { return (d4)(((l4)a & c) | ((l4)b & ~c)); }
+#define LANE(x, k) ((x)[k])
+/* fp_ewa_weight's interpolation on each lane; x = 128·r² ∈ [0, 128). */
+static inline lanes lanes_ewa_lut(lanes x)
+{
+    i4 ie = __builtin_convertvector(x, i4);
+#if defined(__AVX2__)
+    /* The same loads as below, gathered (exact copies: the same bits). */
+    d4 lo = _mm256_i32gather_pd(fp_ewa_lut, (__m128i)ie, 8), hi = _mm256_i32gather_pd(fp_ewa_lut + 1, (__m128i)ie, 8);
+#else
+    d4 lo = {fp_ewa_lut[ie[0]], fp_ewa_lut[ie[1]], fp_ewa_lut[ie[2]], fp_ewa_lut[ie[3]]};
+    d4 hi = {fp_ewa_lut[ie[0] + 1], fp_ewa_lut[ie[1] + 1], fp_ewa_lut[ie[2] + 1], fp_ewa_lut[ie[3] + 1]};
+#endif
+    return lo + (x - __builtin_convertvector(ie, d4)) * (hi - lo);
+}
+#else
+typedef double lanes;
+#define LANES 1
+typedef fp_sums sums_reg;
+static inline lanes lanes_iota(void) { return 0.0; }
+static inline lanes lanes_abs(lanes x) { return fabs(x); }
+static inline lanes lanes_pos(lanes x) { return x > 0.0 ? x : 0.0; }
+static inline lanes lanes_inside(lanes r2, lanes x) { return r2 < 1.0 ? x : 0.0; }
+static inline lanes lanes_ceil(lanes x) { return fp_ceil(x); }
+static inline lanes lanes_floor(lanes x) { return fp_floor(x); }
+static inline lanes lanes_select(int c, lanes a, lanes b) { return c ? a : b; }
+static inline lanes lanes_set1(double x) { return x; }
+static inline lanes lanes_sqrt(lanes x) { return sqrt(x); }
+#define LANE(x, k) ((void)(k), (x))
+static inline lanes lanes_ewa_lut(lanes x)
+{
+    int e = (int)x;
+    return fp_ewa_lut[e] + (x - e) * (fp_ewa_lut[e + 1] - fp_ewa_lut[e]);
+}
+static inline void sums_load(sums_reg *r, const fp_sums *s) { *r = *s; }
+static inline void sums_store(fp_sums *s, const sums_reg *r) { *s = *r; }
+/* The one texel at p when w > 0 (w is ≥ +0 and not NaN). */
+static inline void sums_chunk(sums_reg *r, lanes w, const unsigned char *p, int e)
+{
+    float t4[4];
+    (void)e;
+    if (!(w > 0.0)) return;
+    memcpy(t4, p, sizeof t4);
+    fp_sums_add(r, w, t4);
+}
+#endif
+
+/* A row's constants: Blinn–Newell's x = m₀·du + m₁, y = m₂·du + m₃ (the
+ * row's offset dv folded into m₁, m₃); EWA's r² = A·du² + B·dv·du + C·dv²
+ * (A, B·dv, C·dv²). */
+typedef struct row_consts {
+    double k[4];
+} row_consts;
+
+/* Blinn–Newell (footprint_blinn_newell.c, the parallelogram): the pyramid
+ * w = (1 − |x|)(1 − |y|) where both are inside (−1, 1), else 0. Each factor
+ * is clamped at 0 instead of testing |x| < 1: 1 − |x| ≤ 0 exactly when
+ * |x| ≥ 1. Both factors lie in [+0, 1], so w is ≥ +0 and not NaN. */
+static inline void bn_consts(const double *par, double dv, row_consts *rc)
+{
+    rc->k[0] = par[0];
+    rc->k[1] = par[1] * dv;
+    rc->k[2] = par[2];
+    rc->k[3] = par[3] * dv;
+}
+
+static inline lanes bn_weights(const row_consts *rc, lanes du)
+{
+    return lanes_pos(1.0 - lanes_abs(rc->k[0] * du + rc->k[1])) * lanes_pos(1.0 - lanes_abs(rc->k[2] * du + rc->k[3]));
+}
+
+/* EWA (footprint_ewa.c): the truncated Gaussian fp_ewa_weight(r²) where
+ * r² < 1 (r² < 0, rounding, as 0), else 0. Lanes outside read the table
+ * at 0 and are masked to +0 after; r² < 1 keeps the index ≤ 127. Table
+ * values are in [0, 1), so w is ≥ +0 and not NaN. */
+static inline void ewa_consts(const double *par, double dv, row_consts *rc)
+{
+    rc->k[0] = par[0];
+    rc->k[1] = par[1];
+    rc->k[2] = par[2] * dv * dv;
+    rc->k[3] = dv;
+}
+
+static inline lanes ewa_weights(const row_consts *rc, lanes du)
+{
+    lanes r2 = rc->k[0] * du * du + rc->k[1] * du * rc->k[3] + rc->k[2];
+    return lanes_inside(r2, lanes_ewa_lut(lanes_inside(r2, lanes_pos(r2)) * 128.0));
+}
+
+/* ---- Row spans ------------------------------------------------------------ */
+
+/* Each filter's span on rows dv texels from the centre, before rounding:
+ * the columns lo ≤ c − u0 ≤ hi, NaN where the row is empty.
+ *
+ * Blinn–Newell (P = |M₀₀|, ±M₀₁, |M₁₀|, ±M₁₁, both |M·₀| > 0,
+ * footprint_blinn_newell.c): the intersection of the slabs |x| ≤ 1 and
+ * |y| ≤ 1; with a = |M₀₀| and b = ±M₀₁·dv (the sign of M₀₀) the x slab is
+ * [(−1 − b)/a, (1 − b)/a]. An empty intersection (lo > hi) needs no NaN:
+ * the rounding below finds no column in it. */
+static inline void bn_bounds(const double *P, lanes dv, lanes *lo, lanes *hi)
+{
+    lanes b0 = P[1] * dv, b1 = P[3] * dv;
+    lanes l0 = (-1.0 - b0) / P[0], h0 = (1.0 - b0) / P[0], l1 = (-1.0 - b1) / P[2], h1 = (1.0 - b1) / P[2];
+    *lo = lanes_select(l0 > l1, l0, l1);
+    *hi = lanes_select(h0 < h1, h0, h1);
+}
+
+/* EWA (P = A, B, C of the normalized ellipse, footprint_ewa.c): the roots of
+ * A·du² + B·dv·du + C·dv² = 1; none (NaN) unless the discriminant is > 0. */
+static inline void ewa_bounds(const double *P, lanes dv, lanes *lo, lanes *hi)
+{
+    lanes disc = P[1] * P[1] * dv * dv - 4.0 * P[0] * (P[2] * dv * dv - 1.0), sq;
+    sq = lanes_sqrt(lanes_select(disc > 0.0, disc, lanes_set1(NAN)));
+    *lo = (-P[1] * dv - sq) / (2.0 * P[0]);
+    *hi = (-P[1] * dv + sq) / (2.0 * P[0]);
+}
+
+/* The texel columns of rows dv: the count (0 if none) and the first, as
+ * integers in double (fp_ceil/fp_floor of u0 + lo, u0 + hi). */
+SAMPLE_FORCE_INLINE lanes spans_of(const double *P, double u0, lanes dv, lanes *ilo,
+                                   void (*bounds)(const double *P, lanes dv, lanes *lo, lanes *hi))
+{
+    lanes lo, hi, a, b;
+    bounds(P, dv, &lo, &hi);
+    a = lanes_ceil(u0 + lo);
+    b = lanes_floor(u0 + hi);
+    *ilo = a;
+    return lanes_select((lo <= hi) & (b >= a), b - a + 1.0, lanes_set1(0.0));
+}
+
+/* The counting pass of a level (fp_count_rows with the spans of LANES rows
+ * at once): each row's span kept, prefetched and added up (fp_span_count);
+ * the texels, or INFINITY once over the cap. */
+SAMPLE_FORCE_INLINE double count_level(const fp_level_rows *lr, fp_spans *sp, const double *P,
+                                       void (*bounds)(const double *P, lanes dv, lanes *lo, lanes *hi))
+{
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
+    double total = 0.0;
+    int r, k;
+    sp->n = 0;
+    for (r = 0; r < lr->nrows; r += LANES) {
+        lanes j = lr->jlo + ((double)r + lanes_iota()), ilo, ncol = spans_of(P, lr->u0, j - lr->v0, &ilo, bounds);
+        for (k = 0; k < LANES && r + k < lr->nrows; ++k)
+            if (fp_span_count(lr->c, lr->lv, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), cap, &total))
+                return INFINITY;
+    }
+    sp->n = lr->nrows < FP_SPAN_MEMO ? lr->nrows : FP_SPAN_MEMO;
+    return total;
+}
+
+/* One row's span (the counting pass's, bit for bit), for rows past
+ * FP_SPAN_MEMO. */
+SAMPLE_FORCE_INLINE double span_one(const double *P, double u0, double dv, double *ilo,
+                                    void (*bounds)(const double *P, lanes dv, lanes *lo, lanes *hi))
+{
+    lanes a, n = spans_of(P, u0, lanes_set1(dv), &a, bounds);
+    *ilo = LANE(a, 0);
+    return LANE(n, 0);
+}
+
+static double bn_count(const fp_level_rows *lr, fp_spans *sp, const double P[4]) { return count_level(lr, sp, P, bn_bounds); }
+static double ewa_count(const fp_level_rows *lr, fp_spans *sp, const double P[3]) { return count_level(lr, sp, P, ewa_bounds); }
+static double bn_span(const double P[4], double u0, double dv, double *ilo) { return span_one(P, u0, dv, ilo, bn_bounds); }
+static double ewa_span(const double P[3], double u0, double dv, double *ilo) { return span_one(P, u0, dv, ilo, ewa_bounds); }
+
+/* ---- A level's rows ------------------------------------------------------ */
+
+/* Every row of one level (the counting pass's spans, fp_row_span), its
+ * texels (fp_span_texels) weighted by the filter's weights, added texel by
+ * texel in row order into sums kept in registers for the whole level.
+ * Generic over the filter, inlined with it (zstd style). Row offsets and
+ * texel positions are the scalar filters' to the bit: dv = (jlo + r) − v0,
+ * du = (ilo + k) − u0 (ilo and k integral, so ilo + k is exact). */
+SAMPLE_FORCE_INLINE void walk_level(fp_sums *s, const fp_level_rows *lr, const double *par,
+                                    void (*consts)(const double *par, double dv, row_consts *rc),
+                                    lanes (*weights)(const row_consts *rc, lanes du))
+{
+    const sample_ctx *c = lr->c;
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS, u0 = lr->u0;
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
     sums_reg r;
+    int row, k;
+
     sums_load(&r, s);
-    for (k = 0; k < n; k += 4, kk += 4.0) {
-        d4 du = (ilo + kk) - u0, w;
-        int e = n - k < 4 ? n - k : 4;
-        /* Both factors in [+0, 1]: w is ≥ +0 and not NaN (sums_chunk). */
-        w = d4_pos(1.0 - d4_abs(m0 * du + m1)) * d4_pos(1.0 - d4_abs(m2 * du + m3));
-        sums_chunk(&r, w, p + 16 * (size_t)k, e);
+    for (row = 0; row < lr->nrows; ++row) {
+        double j = lr->jlo + row, dv = j - lr->v0, ilo = 0.0, ncol;
+        const unsigned char *p, *at;
+        row_consts rc;
+        lanes kk = lanes_iota();
+        int n;
+        ncol = fp_row_span(c, lr->lv, lr->sp, lr->span, lr->lg, row, j, dv, cap, &ilo, &at);
+        if (ncol > cap) break; /* unreachable after a successful count */
+        if (!(ncol > 0.0)) continue;
+        n = (int)ncol;
+        p = fp_span_texels(c, lr->lv, j, ilo, n, at, T);
+        consts(par, dv, &rc);
+        for (k = 0; k < n; k += LANES, kk += (double)LANES)
+            sums_chunk(&r, weights(&rc, (ilo + kk) - u0), p + 16 * (size_t)k, n - k < LANES ? n - k : LANES);
     }
     sums_store(s, &r);
-#else
-    for (k = 0; k < n; ++k) {
-        double du = (ilo + k) - u0, fx = 1.0 - fabs(m[0] * du + m[1]), fy = 1.0 - fabs(m[2] * du + m[3]);
-        float t4[4];
-        fx = fx > 0.0 ? fx : 0.0;
-        fy = fy > 0.0 ? fy : 0.0;
-        if (!(fx * fy > 0.0)) continue;
-        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-        fp_sums_add(s, fx * fy, t4);
-    }
-#endif
 }
 
-/* ---- EWA (footprint_ewa.c) ---------------------------------------------- */
-
-/* The truncated Gaussian at texel ilo + k, k < n, of the row dv texels from
- * the centre: r² = A·du² + B·du·dv + C·dv² (abc = A, B, C), weight
- * fp_ewa_weight(r²) where r² < 1 (r² < 0, rounding, as 0), else 0. */
-static void ewa_row(fp_sums *s, const unsigned char *p, int n, double ilo, double u0, double dv, const double abc[3])
+/* m = M (the parallelogram's J′⁻¹, row-major). */
+static void bn_level(fp_sums *s, const fp_level_rows *lr, const double M[2][2])
 {
-    const double A = abc[0], B = abc[1], cvv = abc[2] * dv * dv;
-    int k;
-#if FP_ROWS_VECTOR
-    d4 kk = {0.0, 1.0, 2.0, 3.0};
-    sums_reg r;
-    sums_load(&r, s);
-    for (k = 0; k < n; k += 4, kk += 4.0) {
-        d4 du = (ilo + kk) - u0, r2 = A * du * du + B * du * dv + cvv, w;
-        l4 in = r2 < 1.0;
-        int e = n - k < 4 ? n - k : 4;
-        d4 x, lo, hi;
-        i4 ie;
-        /* fp_ewa_weight on four lanes; lanes outside read the table at 0
-         * and are masked out after. r² < 1 keeps the index ≤ 127. */
-        r2 = (d4)((l4)d4_pos(r2) & in);
-        x = r2 * 128.0;
-        ie = __builtin_convertvector(x, i4);
-        lo = (d4){fp_ewa_lut[ie[0]], fp_ewa_lut[ie[1]], fp_ewa_lut[ie[2]], fp_ewa_lut[ie[3]]};
-        hi = (d4){fp_ewa_lut[ie[0] + 1], fp_ewa_lut[ie[1] + 1], fp_ewa_lut[ie[2] + 1], fp_ewa_lut[ie[3] + 1]};
-        w = lo + (x - __builtin_convertvector(ie, d4)) * (hi - lo);
-        /* Table values are in [0, 1): w is ≥ +0 and not NaN. */
-        w = (d4)((l4)w & in);
-        sums_chunk(&r, w, p + 16 * (size_t)k, e);
-    }
-    sums_store(s, &r);
-#else
-    for (k = 0; k < n; ++k) {
-        double du = (ilo + k) - u0, r2 = A * du * du + B * du * dv + cvv, w;
-        float t4[4];
-        if (!(r2 < 1.0)) continue;
-        w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, NULL);
-        if (!(w > 0.0)) continue;
-        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-        fp_sums_add(s, w, t4);
-    }
-#endif
+    walk_level(s, lr, &M[0][0], bn_consts, bn_weights);
 }
 
-/* ---- This build's row kernels (isa.c) ----------------------------------- */
+/* abc = A, B, C of the normalized ellipse. */
+static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double abc[3])
+{
+    walk_level(s, lr, abc, ewa_consts, ewa_weights);
+}
 
-const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels) = {bn_row, ewa_row};
+/* ---- This build's level kernels (isa.c) --------------------------------- */
+
+const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels) = {bn_level, ewa_level, bn_count, ewa_count, bn_span, ewa_span};

@@ -237,16 +237,24 @@ typedef enum sample_isa {
     SAMPLE_ISA_COUNT
 } sample_isa;
 
-/* The footprint filters' rows without derivatives (footprint_rows.c, the
- * same build per instruction set): Blinn–Newell's parallelogram and EWA,
- * each adding the weighted texels k < n at p (float RGBA, 16 bytes apart,
- * fp_span_texels) of the row's texels ilo + k to *s. */
+/* The footprint filters' levels without derivatives (footprint_rows.c, the
+ * same build per instruction set): every row of one level of Blinn–Newell's
+ * parallelogram (M = J′⁻¹) or of EWA (abc = A, B, C), each texel's weight
+ * and the weighted texels added to *s (fp_level_rows says which rows). */
 struct fp_sums;
+struct fp_spans;
+struct fp_level_rows;
 typedef struct fp_row_kernels {
-    void (*bn_row)(struct fp_sums *s, const unsigned char *p, int n, double ilo, double u0,
-                   const double m[4]);
-    void (*ewa_row)(struct fp_sums *s, const unsigned char *p, int n, double ilo, double u0, double dv,
-                    const double abc[3]);
+    void (*bn_level)(struct fp_sums *s, const struct fp_level_rows *lr, const double M[2][2]);
+    void (*ewa_level)(struct fp_sums *s, const struct fp_level_rows *lr, const double abc[3]);
+    /* The counting pass (fp_count_rows) over the level's rows, spans of
+     * several rows at once: Blinn–Newell's with P = |M₀₀|, ±M₀₁, |M₁₀|,
+     * ±M₁₁ (both |M·₀| > 0), EWA's with P = abc. */
+    double (*bn_count)(const struct fp_level_rows *lr, struct fp_spans *sp, const double P[4]);
+    double (*ewa_count)(const struct fp_level_rows *lr, struct fp_spans *sp, const double P[3]);
+    /* One row's span, the counting pass's to the bit (fp_span_fn). */
+    double (*bn_span)(const double P[4], double u0, double dv, double *ilo);
+    double (*ewa_span)(const double P[3], double u0, double dv, double *ilo);
 } fp_row_kernels;
 
 typedef struct isa_kernels {
@@ -883,6 +891,18 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const sample_ctx *c, int
     }
     return (const unsigned char *)buf;
 }
+
+/* One level's rows as the level kernels (fp_row_kernels) walk them: nrows
+ * rows from jlo, spans from the counting pass (sp; span and lg find those
+ * past FP_SPAN_MEMO again, fp_row_span), centre (u0, v0) on level lv. */
+typedef struct fp_level_rows {
+    const sample_ctx *c;
+    const fp_spans *sp;
+    fp_span_fn span;
+    const void *lg;
+    int lv, nrows;
+    double jlo, u0, v0;
+} fp_level_rows;
 
 /* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
  * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
