@@ -156,6 +156,7 @@ static inline lanes lanes_sqrt(lanes x)
 /* c ? a : b on each lane. */
 static inline lanes lanes_select(l4 c, lanes a, lanes b) { return (d4)(((l4)a & c) | ((l4)b & ~c)); }
 #define LANE(x, k) ((x)[k])
+#define LANES_MASK l4
 /* fp_ewa_weight's interpolation on each lane; x = 128·r² ∈ [0, 128). */
 static inline lanes lanes_ewa_lut(lanes x)
 {
@@ -183,6 +184,7 @@ static inline lanes lanes_select(int c, lanes a, lanes b) { return c ? a : b; }
 static inline lanes lanes_set1(double x) { return x; }
 static inline lanes lanes_sqrt(lanes x) { return sqrt(x); }
 #define LANE(x, k) ((void)(k), (x))
+#define LANES_MASK int
 static inline lanes lanes_ewa_lut(lanes x)
 {
     int e = (int)x;
@@ -205,7 +207,7 @@ static inline void sums_chunk(sums_reg *r, lanes w, const unsigned char *p, int 
  * row's offset dv folded into m₁, m₃); EWA's r² = A·du² + B·dv·du + C·dv²
  * (A, B·dv, C·dv²). */
 typedef struct row_consts {
-    double k[4];
+    lanes k[4]; /* on every lane */
 } row_consts;
 
 /* Blinn–Newell (footprint_blinn_newell.c, the parallelogram): the pyramid
@@ -214,10 +216,10 @@ typedef struct row_consts {
  * |x| ≥ 1. Both factors lie in [+0, 1], so w is ≥ +0 and not NaN. */
 static inline void bn_consts(const double *par, double dv, row_consts *rc)
 {
-    rc->k[0] = par[0];
-    rc->k[1] = par[1] * dv;
-    rc->k[2] = par[2];
-    rc->k[3] = par[3] * dv;
+    rc->k[0] = lanes_set1(par[0]);
+    rc->k[1] = lanes_set1(par[1] * dv);
+    rc->k[2] = lanes_set1(par[2]);
+    rc->k[3] = lanes_set1(par[3] * dv);
 }
 
 static inline lanes bn_weights(const row_consts *rc, lanes du)
@@ -231,10 +233,10 @@ static inline lanes bn_weights(const row_consts *rc, lanes du)
  * values are in [0, 1), so w is ≥ +0 and not NaN. */
 static inline void ewa_consts(const double *par, double dv, row_consts *rc)
 {
-    rc->k[0] = par[0];
-    rc->k[1] = par[1];
-    rc->k[2] = par[2] * dv * dv;
-    rc->k[3] = dv;
+    rc->k[0] = lanes_set1(par[0]);
+    rc->k[1] = lanes_set1(par[1]);
+    rc->k[2] = lanes_set1(par[2] * dv * dv);
+    rc->k[3] = lanes_set1(dv);
 }
 
 static inline lanes ewa_weights(const row_consts *rc, lanes du)
@@ -284,21 +286,30 @@ SAMPLE_FORCE_INLINE lanes spans_of(const double *P, double u0, lanes dv, lanes *
     return lanes_select((lo <= hi) & (b >= a), b - a + 1.0, lanes_set1(0.0));
 }
 
-/* The counting pass of a level (fp_count_rows with the spans of LANES rows
- * at once): each row's span kept, prefetched and added up (fp_span_count);
- * the texels, or INFINITY once over the cap. */
+/* The counting pass of a level (fp_count_rows with LANES rows at once):
+ * each row's span, whether it lies inside the level (fp_span_at's test),
+ * kept and prefetched (fp_span_keep), the texels added up; INFINITY once
+ * over the cap. */
 SAMPLE_FORCE_INLINE double count_level(const fp_level_rows *lr, fp_spans *sp, const double *P,
                                        void (*bounds)(const double *P, lanes dv, lanes *lo, lanes *hi))
 {
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
+    const struct sample_level *L = &lr->c->tex->level[lr->lv];
+    const double w = (double)L->w, h = (double)L->h;
+    const size_t tb = lr->c->tex->texel_bytes;
     double total = 0.0;
     int r, k;
     sp->n = 0;
     for (r = 0; r < lr->nrows; r += LANES) {
         lanes j = lr->jlo + ((double)r + lanes_iota()), ilo, ncol = spans_of(P, lr->u0, j - lr->v0, &ilo, bounds);
-        for (k = 0; k < LANES && r + k < lr->nrows; ++k)
-            if (fp_span_count(lr->c, lr->lv, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), cap, &total))
-                return INFINITY;
+        /* In the level, and at most the cap (fp_span_count). */
+        LANES_MASK in = (ncol > 0.0) & (ncol <= cap) & (j >= 0.0) & (j < h) & (ilo >= 0.0) & (ilo + ncol <= w);
+        for (k = 0; k < LANES && r + k < lr->nrows; ++k) {
+            const unsigned char *at = LANE(in, k) ? L->data + (size_t)(long)LANE(j, k) * L->stride + (size_t)(long)LANE(ilo, k) * tb : NULL;
+            fp_span_keep(lr->c, lr->lv, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), at);
+            total += LANE(ncol, k);
+        }
+        if (total > cap) return INFINITY;
     }
     sp->n = lr->nrows < FP_SPAN_MEMO ? lr->nrows : FP_SPAN_MEMO;
     return total;

@@ -807,15 +807,11 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const sample_ctx *c, int lv,
     return NULL;
 }
 
-/* The counting pass's step for row r (row j, texels ilo … ilo + ncol − 1):
- * keep the span and its address, prefetch its lines, add it to *total;
- * nonzero once the total is over the cap (the caller then moves to a
- * coarser level). Every row is bounded by the cap before any texel is
- * read. */
-SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
-                                      double ncol, double cap, double *total)
+/* Keep row r's span (row j, texels ilo … ilo + ncol − 1, address at or
+ * NULL: fp_span_at) for the accumulating pass and prefetch its lines. */
+SAMPLE_FORCE_INLINE void fp_span_keep(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
+                                      double ncol, const unsigned char *at)
 {
-    const unsigned char *at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL;
     if (r < FP_SPAN_MEMO) {
         sp->ilo[r] = ilo;
         sp->ncol[r] = ncol;
@@ -830,6 +826,16 @@ SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp,
     } else {
         fp_prefetch_span(c, lv, j, ilo, ncol);
     }
+}
+
+/* The counting pass's step for row r: keep the span (fp_span_keep), add it
+ * to *total; nonzero once the total is over the cap (the caller then moves
+ * to a coarser level). Every row is bounded by the cap before any texel is
+ * read. */
+SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
+                                      double ncol, double cap, double *total)
+{
+    fp_span_keep(c, lv, sp, r, j, ilo, ncol, ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL);
     *total += ncol;
     return *total > cap;
 }
