@@ -1,21 +1,23 @@
 /*
- * The inner loops of Blinn–Newell and EWA without derivatives: one row of
- * the footprint, its weights and their weighted sums (fp_sums). Built once
- * per instruction set next to fast_gl.c (libsample/CMakeLists.txt, isa.c)
- * and reached through isa_kernels (bn_row, ewa_row).
+ * The footprint filters' levels without derivatives: Blinn–Newell's
+ * parallelogram and EWA, every row's span in the counting pass and every
+ * row's weights and weighted sums (fp_sums) in the accumulating pass. Built
+ * once per instruction set next to fast_gl.c (libsample/CMakeLists.txt,
+ * isa.c) and reached through isa_kernels (fp_row_kernels).
  *
- * Footprint rows are short — about four texels on a 2.5-texel minification,
- * a handful more on 8:1 footprints — so a loop of scalar weights plus a
- * call per texel spends most of its time on overhead. Here the weights of
- * four texels come from one pass of 4-lane double vectors (GCC/Clang vector
- * extensions: AVX in the AVX2 and AVX-512 builds, SSE2 pairs in the SSE2
- * one), and each texel's four channels are added as one vector. The
- * portable build (SAMPLE_NO_SIMD, or a compiler without the extensions)
- * runs the same formulas one lane at a time.
+ * Footprint rows are short — about four texels on a 2.5-texel
+ * minification, a handful more on 8:1 footprints — and many: the work is
+ * per row and per four texels as much as per texel. With AVX (the AVX2 and
+ * AVX-512 builds) the spans of four rows come from one pass of 4-lane
+ * double vectors (GCC/Clang vector extensions), so do the weights of four
+ * texels of a row, and each texel's four channels are added as one vector.
+ * The other builds (portable, SSE2) run the same formulas one lane at a
+ * time: 4-lane doubles on SSE2 are register pairs, and measured slower
+ * there than one lane (doc/performance.md, seventh pass).
  *
  * Every operation is lane-wise IEEE (no FMA: -ffp-contract=off, and none
- * is written), weights are formed by the same expressions in the same
- * order as the scalar form, and the sums are added texel by texel in row
+ * is written), spans and weights are formed by the same expressions in the
+ * same order in every build, and the sums are added texel by texel in row
  * order, so every build returns the same bits (tests/test_fastpath.c).
  */
 #include "internal.h"
@@ -24,32 +26,23 @@
 #error "footprint_rows.c is built once per instruction set with SAMPLE_ISA set (libsample/CMakeLists.txt)"
 #endif
 
-#if defined(__GNUC__) && !defined(SAMPLE_NO_SIMD)
+#if defined(__GNUC__) && !defined(SAMPLE_NO_SIMD) && defined(__AVX__)
 #define FP_ROWS_VECTOR 1
-/* 32-byte vectors in the SSE2 build: GCC warns that passing them by value
- * would differ from an AVX caller's ABI; every function here that does is
- * static and inlined, so no such call exists. */
-#pragma GCC diagnostic ignored "-Wpsabi"
-#if defined(__AVX__)
 #include <immintrin.h>
-#endif
 typedef double d4 __attribute__((vector_size(32)));
-typedef float f4 __attribute__((vector_size(16)));
 typedef int64_t l4 __attribute__((vector_size(32)));
 typedef int32_t i4 __attribute__((vector_size(16)));
 
 static inline d4 d4_set1(double x) { return (d4){x, x, x, x}; }
-/* |x|: the sign bit cleared, as fabs. */
 static inline l4 l4_set1(int64_t x) { return (l4){x, x, x, x}; }
+/* |x|: the sign bit cleared, as fabs. */
 static inline d4 d4_abs(d4 x) { return (d4)((l4)x & INT64_MAX); }
 /* x > 0 ? x : +0 on each lane (NaN gives +0). */
 static inline d4 d4_pos(d4 x) { return (d4)((l4)x & (x > 0.0)); }
-#endif
 
 /* Texel p's weighted channels added to the sums when w > 0 (fp_sums_add);
  * w ≤ 0 (outside the footprint) adds nothing: a texel there may be ±inf or
  * NaN. */
-#if FP_ROWS_VECTOR
 typedef struct sums_reg {
     d4 t;
     double w;
@@ -70,16 +63,6 @@ static inline void sums_store(fp_sums *s, const sums_reg *r)
     s->n = r->n;
 }
 
-/* Whether any lane of a mask is set. */
-static inline int l4_any(l4 m)
-{
-#if defined(__AVX__)
-    return !_mm256_testz_si256((__m256i)m, (__m256i)m);
-#else
-    return (m[0] | m[1] | m[2] | m[3]) != 0;
-#endif
-}
-
 /* Texels k < e of a chunk whose weights (lanes of w) are ≥ +0 and never
  * NaN, added to the sums in order: fp_sums_add's on the texels with w > 0.
  * Inside a span nearly every texel has w > 0 (the spans are the filters'
@@ -90,18 +73,10 @@ static inline int l4_any(l4 m)
  * start), and so does adding its weight to Σw. */
 static inline void sums_chunk(sums_reg *r, d4 w, const unsigned char *p, int e)
 {
-    const l4 live = (l4){0, 1, 2, 3} < l4_set1(e);
-    l4 in = w > 0.0;
-    int j, all = !l4_any(live & ~in);
+    const l4 live = (d4){0.0, 1.0, 2.0, 3.0} < d4_set1((double)e), in = w > 0.0, out = live & ~in;
+    int j, all = _mm256_testz_si256((__m256i)out, (__m256i)out);
     for (j = 0; j < e; ++j) {
-        d4 wv = d4_set1(w[j]), t;
-#if defined(__AVX__)
-        t = _mm256_cvtps_pd(_mm_loadu_ps((const float *)(const void *)(p + 16 * (size_t)j)));
-#else
-        f4 f;
-        memcpy(&f, p + 16 * (size_t)j, sizeof f);
-        t = __builtin_convertvector(f, d4);
-#endif
+        d4 wv = d4_set1(w[j]), t = _mm256_cvtps_pd(_mm_loadu_ps((const float *)(const void *)(p + 16 * (size_t)j)));
         if (all)
             r->t += wv * t;
         else
@@ -113,50 +88,31 @@ static inline void sums_chunk(sums_reg *r, d4 w, const unsigned char *p, int e)
 }
 #endif
 
-/* ---- Each filter's weights, four texels (or one) at a time ------------- */
+/* ---- Lanes: four texels or rows (AVX), or one ---------------------------- */
 
-/* The kernels below are written once over `lanes`: four doubles (one texel
- * each) where the vector extensions exist, one double in the portable
- * build, with the same operations lane by lane. */
+/* The kernels below are written once over `lanes`: four doubles where the
+ * vectors are used, one double otherwise, with the same operations lane by
+ * lane. LANES_MASK is a comparison's result (all ones or 0 per lane). */
 #if FP_ROWS_VECTOR
 typedef d4 lanes;
 #define LANES 4
+#define LANES_MASK l4
+#define LANE(x, k) ((x)[k])
+static inline lanes lanes_set1(double x) { return d4_set1(x); }
 static inline lanes lanes_iota(void) { return (d4){0.0, 1.0, 2.0, 3.0}; }
 static inline lanes lanes_abs(lanes x) { return d4_abs(x); }
 static inline lanes lanes_pos(lanes x) { return d4_pos(x); }
+static inline LANES_MASK lanes_lt(lanes a, lanes b) { return a < b; }
+static inline LANES_MASK lanes_le(lanes a, lanes b) { return a <= b; }
+static inline lanes lanes_sqrt(lanes x) { return _mm256_sqrt_pd(x); }
+/* c ? a : b on each lane. */
+static inline lanes lanes_select(LANES_MASK c, lanes a, lanes b) { return (d4)(((l4)a & c) | ((l4)b & ~c)); }
 /* x where r2 < 1, else +0 (x is ≥ +0 and not NaN there). */
 static inline lanes lanes_inside(lanes r2, lanes x) { return (d4)((l4)x & (r2 < 1.0)); }
-/* fp_ceil and fp_floor on each lane (+ 0.0: a zero result is +0, as
- * theirs; every other value is unchanged by it). */
-static inline lanes lanes_ceil(lanes x)
-{
-#if defined(__AVX__)
-    return _mm256_round_pd(x, _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC) + 0.0;
-#else
-    return (d4){fp_ceil(x[0]), fp_ceil(x[1]), fp_ceil(x[2]), fp_ceil(x[3])};
-#endif
-}
-static inline lanes lanes_floor(lanes x)
-{
-#if defined(__AVX__)
-    return _mm256_round_pd(x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC) + 0.0;
-#else
-    return (d4){fp_floor(x[0]), fp_floor(x[1]), fp_floor(x[2]), fp_floor(x[3])};
-#endif
-}
-static inline lanes lanes_set1(double x) { return d4_set1(x); }
-static inline lanes lanes_sqrt(lanes x)
-{
-#if defined(__AVX__)
-    return _mm256_sqrt_pd(x);
-#else
-    return (d4){sqrt(x[0]), sqrt(x[1]), sqrt(x[2]), sqrt(x[3])};
-#endif
-}
-/* c ? a : b on each lane. */
-static inline lanes lanes_select(l4 c, lanes a, lanes b) { return (d4)(((l4)a & c) | ((l4)b & ~c)); }
-#define LANE(x, k) ((x)[k])
-#define LANES_MASK l4
+/* fp_ceil and fp_floor: the rounding instruction (+ 0.0 turns its −0 into
+ * +0, as theirs, and leaves every other value as it is). */
+static inline lanes lanes_ceil(lanes x) { return _mm256_round_pd(x, _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC) + 0.0; }
+static inline lanes lanes_floor(lanes x) { return _mm256_round_pd(x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC) + 0.0; }
 /* fp_ewa_weight's interpolation on each lane; x = 128·r² ∈ [0, 128). */
 static inline lanes lanes_ewa_lut(lanes x)
 {
@@ -173,18 +129,20 @@ static inline lanes lanes_ewa_lut(lanes x)
 #else
 typedef double lanes;
 #define LANES 1
+#define LANES_MASK int
+#define LANE(x, k) ((void)(k), (x))
 typedef fp_sums sums_reg;
+static inline lanes lanes_set1(double x) { return x; }
 static inline lanes lanes_iota(void) { return 0.0; }
 static inline lanes lanes_abs(lanes x) { return fabs(x); }
 static inline lanes lanes_pos(lanes x) { return x > 0.0 ? x : 0.0; }
+static inline LANES_MASK lanes_lt(lanes a, lanes b) { return a < b; }
+static inline LANES_MASK lanes_le(lanes a, lanes b) { return a <= b; }
+static inline lanes lanes_sqrt(lanes x) { return sqrt(x); }
+static inline lanes lanes_select(LANES_MASK c, lanes a, lanes b) { return c ? a : b; }
 static inline lanes lanes_inside(lanes r2, lanes x) { return r2 < 1.0 ? x : 0.0; }
 static inline lanes lanes_ceil(lanes x) { return fp_ceil(x); }
 static inline lanes lanes_floor(lanes x) { return fp_floor(x); }
-static inline lanes lanes_select(int c, lanes a, lanes b) { return c ? a : b; }
-static inline lanes lanes_set1(double x) { return x; }
-static inline lanes lanes_sqrt(lanes x) { return sqrt(x); }
-#define LANE(x, k) ((void)(k), (x))
-#define LANES_MASK int
 static inline lanes lanes_ewa_lut(lanes x)
 {
     int e = (int)x;
@@ -259,8 +217,8 @@ static inline void bn_bounds(const double *P, lanes dv, lanes *lo, lanes *hi)
 {
     lanes b0 = P[1] * dv, b1 = P[3] * dv;
     lanes l0 = (-1.0 - b0) / P[0], h0 = (1.0 - b0) / P[0], l1 = (-1.0 - b1) / P[2], h1 = (1.0 - b1) / P[2];
-    *lo = lanes_select(l0 > l1, l0, l1);
-    *hi = lanes_select(h0 < h1, h0, h1);
+    *lo = lanes_select(lanes_lt(l1, l0), l0, l1);
+    *hi = lanes_select(lanes_lt(h0, h1), h0, h1);
 }
 
 /* EWA (P = A, B, C of the normalized ellipse, footprint_ewa.c): the roots of
@@ -268,7 +226,7 @@ static inline void bn_bounds(const double *P, lanes dv, lanes *lo, lanes *hi)
 static inline void ewa_bounds(const double *P, lanes dv, lanes *lo, lanes *hi)
 {
     lanes disc = P[1] * P[1] * dv * dv - 4.0 * P[0] * (P[2] * dv * dv - 1.0), sq;
-    sq = lanes_sqrt(lanes_select(disc > 0.0, disc, lanes_set1(NAN)));
+    sq = lanes_sqrt(lanes_select(lanes_lt(lanes_set1(0.0), disc), disc, lanes_set1(NAN)));
     *lo = (-P[1] * dv - sq) / (2.0 * P[0]);
     *hi = (-P[1] * dv + sq) / (2.0 * P[0]);
 }
@@ -283,7 +241,7 @@ SAMPLE_FORCE_INLINE lanes spans_of(const double *P, double u0, lanes dv, lanes *
     a = lanes_ceil(u0 + lo);
     b = lanes_floor(u0 + hi);
     *ilo = a;
-    return lanes_select((lo <= hi) & (b >= a), b - a + 1.0, lanes_set1(0.0));
+    return lanes_select(lanes_le(lo, hi) & lanes_le(a, b), b - a + 1.0, lanes_set1(0.0));
 }
 
 /* The counting pass of a level (fp_count_rows with LANES rows at once):
@@ -303,7 +261,8 @@ SAMPLE_FORCE_INLINE double count_level(const fp_level_rows *lr, fp_spans *sp, co
     for (r = 0; r < lr->nrows; r += LANES) {
         lanes j = lr->jlo + ((double)r + lanes_iota()), ilo, ncol = spans_of(P, lr->u0, j - lr->v0, &ilo, bounds);
         /* In the level, and at most the cap (fp_span_count). */
-        LANES_MASK in = (ncol > 0.0) & (ncol <= cap) & (j >= 0.0) & (j < h) & (ilo >= 0.0) & (ilo + ncol <= w);
+        LANES_MASK in = lanes_lt(lanes_set1(0.0), ncol) & lanes_le(ncol, lanes_set1(cap)) & lanes_le(lanes_set1(0.0), j) &
+                        lanes_lt(j, lanes_set1(h)) & lanes_le(lanes_set1(0.0), ilo) & lanes_le(ilo + ncol, lanes_set1(w));
         for (k = 0; k < LANES && r + k < lr->nrows; ++k) {
             const unsigned char *at = LANE(in, k) ? L->data + (size_t)(long)LANE(j, k) * L->stride + (size_t)(long)LANE(ilo, k) * tb : NULL;
             fp_span_keep(lr->c, lr->lv, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), at);
