@@ -137,60 +137,65 @@ static double bn_affine_span(const bn_level_geom *e, double dv, double *ilo)
 /* bn_affine_span as an fp_span_fn. */
 static double bn_affine_span_fn(const void *lg, double dv, double *ilo) { return bn_affine_span((const bn_level_geom *)lg, dv, ilo); }
 
+/* The derivative pass of a parallelogram level: each texel's pyramid
+ * weight and its gradient (fp_level_walk's row). */
+typedef struct bn_affine_deriv {
+    fp_accum *acc;
+    double M[2][2], u0, ku, kv, total;
+} bn_affine_deriv;
+
+static void bn_affine_deriv_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
+{
+    bn_affine_deriv *d = (bn_affine_deriv *)dp;
+    double(*M)[2] = d->M;
+    int k;
+    for (k = 0; k < n; ++k) {
+        double du = (ilo + k) - d->u0, gx = 0.0, gy = 0.0, w;
+        float t4[4];
+        w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
+        if (w <= 0.0) continue;
+        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+        /* w depends on c − u0: ∂w/∂u0 = −(gx·M₀₀ + gy·M₁₀). */
+        fp_accum_add(d->acc, w, -(gx * M[0][0] + gy * M[1][0]) * d->ku, -(gx * M[0][1] + gy * M[1][1]) * d->kv, t4);
+        d->total += 1.0;
+    }
+}
+
 static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc,
                               int count_only)
 {
     const bn_geom *g = (const bn_geom *)gp;
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     bn_level_geom *e = &g->memo[lv & 1];
-    double u0, v0, M[2][2], jlo, total = 0.0, ku, kv;
-    int r, k, nrows;
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
+    fp_level_rows lr;
+    bn_affine_deriv d;
 
     if (e->lv != lv) bn_affine_setup(c, g, lv, e);
     if (!(e->nrows <= cap)) return INFINITY;
-    u0 = e->u0;
-    v0 = e->v0;
-    ku = e->ku;
-    kv = e->kv;
-    memcpy(M, e->M, sizeof M);
-    jlo = e->jlo;
-    nrows = (int)e->nrows;
+    lr = (fp_level_rows){c, &e->spans, bn_affine_span_fn, e, lv, (int)e->nrows, e->jlo, e->u0, e->v0};
     if (count_only) {
-        fp_level_rows lr = {c, &e->spans, bn_affine_span_fn, e, lv, nrows, jlo, u0, v0};
         if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_count(&lr, &e->spans, e->P);
-        return fp_count_rows(c, lv, &e->spans, bn_affine_span_fn, e, jlo, v0, nrows, cap);
+        return fp_count_rows(c, lv, &e->spans, bn_affine_span_fn, e, e->jlo, e->v0, lr.nrows, cap);
     }
     if (!acc->deriv) {
         /* The pyramid alone, the level at once (footprint_rows.c), sums in
          * registers. With |x|, |y| < 1 both factors are at least 2^−53, so
          * w > 0 there (M and du are finite, fp_shape_reshape: det J′ =
          * ±t0·t1, t ≥ 1). */
-        fp_level_rows lr = {c, &e->spans, bn_affine_span_fn, e, lv, nrows, jlo, u0, v0};
         fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-        isa_kernels_active()->rows->bn_level(&sm, &lr, (const double(*)[2])M);
+        isa_kernels_active()->rows->bn_level(&sm, &lr, (const double(*)[2])e->M);
         fp_accum_fold(acc, &sm);
         return sm.n;
     }
-    for (r = 0; r < nrows; ++r) {
-        double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
-        const unsigned char *p, *at;
-        ncol = fp_row_span(c, lv, &e->spans, bn_affine_span_fn, e, r, j, dv, cap, &ilo, &at);
-        if (ncol > cap) break; /* unreachable after a successful count */
-        if (!(ncol > 0.0)) continue;
-        p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
-        for (k = 0; k < (int)ncol; ++k) {
-            double ii = ilo + k, du = ii - u0, gx = 0.0, gy = 0.0, w;
-            float t4[4];
-            w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
-            if (w <= 0.0) continue;
-            memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-            /* w depends on c − u0: ∂w/∂u0 = −(gx·M₀₀ + gy·M₁₀). */
-            fp_accum_add(acc, w, -(gx * M[0][0] + gy * M[1][0]) * ku, -(gx * M[0][1] + gy * M[1][1]) * kv, t4);
-            total += 1.0;
-        }
-    }
-    return total;
+    d.acc = acc;
+    memcpy(d.M, e->M, sizeof d.M);
+    d.u0 = e->u0;
+    d.ku = e->ku;
+    d.kv = e->kv;
+    d.total = 0.0;
+    fp_level_walk(&lr, T, &d, bn_affine_deriv_row);
+    return d.total;
 }
 
 /* ---- General quadrilateral (exact corners): the projective map --------- */
@@ -305,26 +310,73 @@ static double bn_quad_span(const bn_level_geom *e, double dv, double *ilo)
 /* bn_quad_span as an fp_span_fn. */
 static double bn_quad_span_fn(const void *lg, double dv, double *ilo) { return bn_quad_span((const bn_level_geom *)lg, dv, ilo); }
 
+/* The pass over a quad level (values, and derivatives when asked for):
+ * each texel's pulled-back pyramid weight (fp_level_walk's row). */
+typedef struct bn_quad_pass {
+    fp_accum *acc;
+    double G[3][3], u0, ku, kv, wlo, whi, total;
+    int area;
+} bn_quad_pass;
+
+static void bn_quad_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
+{
+    bn_quad_pass *d = (bn_quad_pass *)dp;
+    double(*G)[3] = d->G;
+    int k;
+    for (k = 0; k < n; ++k) {
+        double du = ilo + k - d->u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
+        float t4[4];
+        /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
+         * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
+         * quad, where the pyramid is 0 anyway. */
+        W = G[2][0] * du + G[2][1] * dv + G[2][2];
+        if (!(W > 0.0)) continue;
+        iw = 1.0 / W;
+        x = (G[0][0] * du + G[0][1] * dv + G[0][2]) * iw;
+        y = (G[1][0] * du + G[1][1] * dv + G[1][2]) * iw;
+        w = pyramid(x, y, &gx, &gy);
+        if (w <= 0.0) continue;
+        /* ∂w/∂(x, y) = ∇pyr; ∂x/∂u = (G₀₀ − x·G₂₀)/W etc. (quotient
+         * rule on X/W); the centre moves opposite to (du, dv). */
+        ax = gx;
+        ay = gy;
+        wu = (ax * (G[0][0] - x * G[2][0]) + ay * (G[1][0] - y * G[2][0])) * iw;
+        wv = (ax * (G[0][1] - x * G[2][1]) + ay * (G[1][1] - y * G[2][1])) * iw;
+        if (d->area) {
+            /* w ← w·m, m = w_h³ (w_h = 1/W clamped): ∇m = 3w_h²·∇w_h,
+             * ∇w_h = −(G₂₀, G₂₁)·w_h², 0 where the clamp holds. */
+            double wh = iw, m, mu = 0.0, mv = 0.0;
+            if (wh < d->wlo) wh = d->wlo;
+            else if (wh > d->whi) wh = d->whi;
+            else {
+                double k4 = -3.0 * wh * wh * wh * wh;
+                mu = k4 * G[2][0];
+                mv = k4 * G[2][1];
+            }
+            m = wh * wh * wh;
+            wu = m * wu + w * mu;
+            wv = m * wv + w * mv;
+            w *= m;
+        }
+        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+        fp_accum_add(d->acc, w, -wu * d->ku, -wv * d->kv, t4);
+        d->total += 1.0;
+    }
+}
+
 static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
 {
     const bn_geom *g = (const bn_geom *)gp;
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     bn_level_geom *e = &g->memo[lv & 1];
-    double u0, v0, ku, kv, G[3][3], jlo;
-    double total = 0.0;
-    int r, k, area, nrows;
     float tx[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
+    fp_level_rows lr;
+    bn_quad_pass d;
 
     if (e->lv != lv) bn_quad_setup(c, g, lv, e);
     if (e->fail || !(e->nrows <= cap)) return INFINITY;
-    u0 = e->u0;
-    v0 = e->v0;
-    ku = e->ku;
-    kv = e->kv;
-    memcpy(G, e->G, sizeof G);
-    jlo = e->jlo;
-    nrows = (int)e->nrows;
-    if (count_only) return fp_count_rows(c, lv, &e->spans, bn_quad_span_fn, e, jlo, v0, nrows, cap);
+    if (count_only) return fp_count_rows(c, lv, &e->spans, bn_quad_span_fn, e, e->jlo, e->v0, (int)e->nrows, cap);
+    lr = (fp_level_rows){c, &e->spans, bn_quad_span_fn, e, lv, (int)e->nrows, e->jlo, e->u0, e->v0};
     /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
      * ∫ pyr(x, y)·T(H(x, y)) dx dy = ∫ pyr(H⁻¹(u))·T(u) / |det DH| du, so
      * each texel's weight is divided by |det DH| at its preimage. For a
@@ -335,55 +387,17 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
      * points with nonzero weight lie in the quad, so the clamp to that
      * range (|det DH| to its range on the quad) only guards rounding. The
      * entry keeps (whi/wlo)³ ≤ 2²⁰, so weights span at most 2²⁰. */
-    area = (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT) != 0;
-    for (r = 0; r < nrows; ++r) {
-        double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
-        const unsigned char *p, *at;
-        ncol = fp_row_span(c, lv, &e->spans, bn_quad_span_fn, e, r, j, dv, cap, &ilo, &at);
-        if (ncol > cap) break; /* unreachable after a successful count */
-        if (!(ncol > 0.0)) continue;
-        p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, tx);
-        for (k = 0; k < (int)ncol; ++k) {
-            double du = ilo + k - u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
-            float t4[4];
-            /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
-             * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
-             * quad, where the pyramid is 0 anyway. */
-            W = G[2][0] * du + G[2][1] * dv + G[2][2];
-            if (!(W > 0.0)) continue;
-            iw = 1.0 / W;
-            x = (G[0][0] * du + G[0][1] * dv + G[0][2]) * iw;
-            y = (G[1][0] * du + G[1][1] * dv + G[1][2]) * iw;
-            w = pyramid(x, y, &gx, &gy);
-            if (w <= 0.0) continue;
-            /* ∂w/∂(x, y) = ∇pyr; ∂x/∂u = (G₀₀ − x·G₂₀)/W etc. (quotient
-             * rule on X/W); the centre moves opposite to (du, dv). */
-            ax = gx;
-            ay = gy;
-            wu = (ax * (G[0][0] - x * G[2][0]) + ay * (G[1][0] - y * G[2][0])) * iw;
-            wv = (ax * (G[0][1] - x * G[2][1]) + ay * (G[1][1] - y * G[2][1])) * iw;
-            if (area) {
-                /* w ← w·m, m = w_h³ (w_h = 1/W clamped): ∇m = 3w_h²·∇w_h,
-                 * ∇w_h = −(G₂₀, G₂₁)·w_h², 0 where the clamp holds. */
-                double wh = iw, m, mu = 0.0, mv = 0.0;
-                if (wh < g->wlo) wh = g->wlo;
-                else if (wh > g->whi) wh = g->whi;
-                else {
-                    double k4 = -3.0 * wh * wh * wh * wh;
-                    mu = k4 * G[2][0];
-                    mv = k4 * G[2][1];
-                }
-                m = wh * wh * wh;
-                wu = m * wu + w * mu;
-                wv = m * wv + w * mv;
-                w *= m;
-            }
-            memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-            fp_accum_add(acc, w, -wu * ku, -wv * kv, t4);
-            total += 1.0;
-        }
-    }
-    return total;
+    d.area = (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT) != 0;
+    d.acc = acc;
+    memcpy(d.G, e->G, sizeof d.G);
+    d.u0 = e->u0;
+    d.ku = e->ku;
+    d.kv = e->kv;
+    d.wlo = g->wlo;
+    d.whi = g->whi;
+    d.total = 0.0;
+    fp_level_walk(&lr, tx, &d, bn_quad_row);
+    return d.total;
 }
 
 /* ---- Entry --------------------------------------------------------------- */

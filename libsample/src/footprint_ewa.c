@@ -114,28 +114,44 @@ static double ewa_span(const ewa_level_geom *m, double dv, double *ilo)
 /* ewa_span as an fp_span_fn. */
 static double ewa_span_fn(const void *lg, double dv, double *ilo) { return ewa_span((const ewa_level_geom *)lg, dv, ilo); }
 
+/* The derivative pass of an ellipse level: each texel's weight and its
+ * gradient (fp_level_walk's row). */
+typedef struct ewa_deriv {
+    fp_accum *acc;
+    double A, B, C, u0, ku, kv, total;
+} ewa_deriv;
+
+static void ewa_deriv_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
+{
+    ewa_deriv *d = (ewa_deriv *)dp;
+    const double A = d->A, B = d->B, C = d->C;
+    int k;
+    for (k = 0; k < n; ++k) {
+        double du = (ilo + k) - d->u0, r2, w, dw;
+        float t4[4];
+        r2 = A * du * du + B * du * dv + C * dv * dv;
+        if (!(r2 < 1.0)) continue;
+        w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, &dw);
+        if (w <= 0.0) continue;
+        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+        /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */
+        fp_accum_add(d->acc, w, -dw * (2.0 * A * du + B * dv) * d->ku, -dw * (B * du + 2.0 * C * dv) * d->kv, t4);
+        d->total += 1.0;
+    }
+}
+
 static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
 {
     const ewa_geom *g = (const ewa_geom *)gp;
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     ewa_level_geom *m = &g->memo[lv & 1];
-    double u0, v0, A, B, C, jlo, total = 0.0, ku, kv;
-    int r, k, nrows;
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
     fp_level_rows lr;
+    ewa_deriv d;
 
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
     if (!(m->nrows <= cap)) return INFINITY;
-    u0 = m->u0;
-    v0 = m->v0;
-    A = m->abc[0];
-    B = m->abc[1];
-    C = m->abc[2];
-    jlo = m->jlo;
-    nrows = (int)m->nrows;
-    ku = m->ku;
-    kv = m->kv;
-    lr = (fp_level_rows){c, &m->spans, ewa_span_fn, m, lv, nrows, jlo, u0, v0};
+    lr = (fp_level_rows){c, &m->spans, ewa_span_fn, m, lv, (int)m->nrows, m->jlo, m->u0, m->v0};
     if (count_only) return isa_kernels_active()->rows->ewa_count(&lr, &m->spans, m->abc);
     if (!acc->deriv) {
         /* The weight alone, the level at once (footprint_rows.c), sums in
@@ -145,27 +161,16 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         fp_accum_fold(acc, &sm);
         return sm.n;
     }
-    for (r = 0; r < nrows; ++r) {
-        double j = jlo + r, dv = j - v0, ilo = 0.0, ncol;
-        const unsigned char *p, *at;
-        ncol = fp_row_span(c, lv, &m->spans, ewa_span_fn, m, r, j, dv, cap, &ilo, &at);
-        if (ncol > cap) break; /* unreachable after a successful count */
-        if (!(ncol > 0.0)) continue;
-        p = fp_span_texels(c, lv, j, ilo, (int)ncol, at, T);
-        for (k = 0; k < (int)ncol; ++k) {
-            double ii = ilo + k, du = ii - u0, r2, w, dw;
-            float t4[4];
-            r2 = A * du * du + B * du * dv + C * dv * dv;
-            if (!(r2 < 1.0)) continue;
-            w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, &dw);
-            if (w <= 0.0) continue;
-            memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-            /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */
-            fp_accum_add(acc, w, -dw * (2.0 * A * du + B * dv) * ku, -dw * (B * du + 2.0 * C * dv) * kv, t4);
-            total += 1.0;
-        }
-    }
-    return total;
+    d.acc = acc;
+    d.A = m->abc[0];
+    d.B = m->abc[1];
+    d.C = m->abc[2];
+    d.u0 = m->u0;
+    d.ku = m->ku;
+    d.kv = m->kv;
+    d.total = 0.0;
+    fp_level_walk(&lr, T, &d, ewa_deriv_row);
+    return d.total;
 }
 
 /* A plan's geometry: the query's, and its two levels' memos. */

@@ -291,52 +291,57 @@ static double ewa_span(const double P[3], double u0, double dv, double *ilo) { r
 
 /* ---- A level's rows ------------------------------------------------------ */
 
-/* Every row of one level (the counting pass's spans, fp_row_span), its
- * texels (fp_span_texels) weighted by the filter's weights, added texel by
- * texel in row order into sums kept in registers for the whole level.
- * Generic over the filter, inlined with it (zstd style). Row offsets and
- * texel positions are the scalar filters' to the bit: dv = (jlo + r) − v0,
- * du = (ilo + k) − u0 (ilo and k integral, so ilo + k is exact). */
-SAMPLE_FORCE_INLINE void walk_level(fp_sums *s, const fp_level_rows *lr, const double *par,
-                                    void (*consts)(const double *par, double dv, row_consts *rc),
-                                    lanes (*weights)(const row_consts *rc, lanes du))
-{
-    const sample_ctx *c = lr->c;
-    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS, u0 = lr->u0;
-    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
+/* The sums of a level being walked (kept in registers: the walk and the
+ * rows are inlined into bn_level / ewa_level) and the level's constants. */
+typedef struct walk_state {
     sums_reg r;
-    int row, k;
+    const double *par;
+    double u0;
+} walk_state;
 
-    sums_load(&r, s);
-    for (row = 0; row < lr->nrows; ++row) {
-        double j = lr->jlo + row, dv = j - lr->v0, ilo = 0.0, ncol;
-        const unsigned char *p, *at;
-        row_consts rc;
-        lanes kk = lanes_iota();
-        int n;
-        ncol = fp_row_span(c, lr->lv, lr->sp, lr->span, lr->lg, row, j, dv, cap, &ilo, &at);
-        if (ncol > cap) break; /* unreachable after a successful count */
-        if (!(ncol > 0.0)) continue;
-        n = (int)ncol;
-        p = fp_span_texels(c, lr->lv, j, ilo, n, at, T);
-        consts(par, dv, &rc);
-        for (k = 0; k < n; k += LANES, kk += (double)LANES)
-            sums_chunk(&r, weights(&rc, (ilo + kk) - u0), p + 16 * (size_t)k, n - k < LANES ? n - k : LANES);
-    }
-    sums_store(s, &r);
+/* One row's texels weighted by the filter's weights and added texel by
+ * texel in row order. Texel positions are the scalar filters' to the bit:
+ * du = (ilo + k) − u0 (ilo and k integral, so ilo + k is exact). */
+SAMPLE_FORCE_INLINE void weigh_row(walk_state *ws, const unsigned char *p, int n, double ilo, double dv,
+                                   void (*consts)(const double *par, double dv, row_consts *rc),
+                                   lanes (*weights)(const row_consts *rc, lanes du))
+{
+    row_consts rc;
+    lanes kk = lanes_iota();
+    int k;
+    consts(ws->par, dv, &rc);
+    for (k = 0; k < n; k += LANES, kk += (double)LANES)
+        sums_chunk(&ws->r, weights(&rc, (ilo + kk) - ws->u0), p + 16 * (size_t)k, n - k < LANES ? n - k : LANES);
+}
+
+static inline void bn_row(void *ws, const unsigned char *p, int n, double ilo, double dv)
+{
+    weigh_row((walk_state *)ws, p, n, ilo, dv, bn_consts, bn_weights);
+}
+
+static inline void ewa_row(void *ws, const unsigned char *p, int n, double ilo, double dv)
+{
+    weigh_row((walk_state *)ws, p, n, ilo, dv, ewa_consts, ewa_weights);
+}
+
+/* Every row of one level (fp_level_walk) into *s, with sums in registers
+ * for the whole level. */
+SAMPLE_FORCE_INLINE void walk_level(fp_sums *s, const fp_level_rows *lr, const double *par, fp_row_fn row)
+{
+    float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
+    walk_state ws;
+    ws.par = par;
+    ws.u0 = lr->u0;
+    sums_load(&ws.r, s);
+    fp_level_walk(lr, T, &ws, row);
+    sums_store(s, &ws.r);
 }
 
 /* m = M (the parallelogram's J′⁻¹, row-major). */
-static void bn_level(fp_sums *s, const fp_level_rows *lr, const double M[2][2])
-{
-    walk_level(s, lr, &M[0][0], bn_consts, bn_weights);
-}
+static void bn_level(fp_sums *s, const fp_level_rows *lr, const double M[2][2]) { walk_level(s, lr, &M[0][0], bn_row); }
 
 /* abc = A, B, C of the normalized ellipse. */
-static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double abc[3])
-{
-    walk_level(s, lr, abc, ewa_consts, ewa_weights);
-}
+static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double abc[3]) { walk_level(s, lr, abc, ewa_row); }
 
 /* ---- This build's level kernels (isa.c) --------------------------------- */
 

@@ -910,6 +910,26 @@ typedef struct fp_level_rows {
     double jlo, u0, v0;
 } fp_level_rows;
 
+/* The accumulating pass's walk over a level's rows: each row with texels
+ * (fp_row_span) handed to row() with its texels as float RGBA 16 bytes
+ * apart (fp_span_texels, decoded into buf where needed), their count, the
+ * first one's column ilo and the row's offset dv = (jlo + r) − v0 from the
+ * centre. Generic over row(), inlined with it (zstd style). */
+typedef void (*fp_row_fn)(void *ctx, const unsigned char *p, int n, double ilo, double dv);
+SAMPLE_FORCE_INLINE void fp_level_walk(const fp_level_rows *lr, float (*buf)[4], void *ctx, fp_row_fn row)
+{
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
+    int r;
+    for (r = 0; r < lr->nrows; ++r) {
+        double j = lr->jlo + r, dv = j - lr->v0, ilo = 0.0, ncol;
+        const unsigned char *at;
+        ncol = fp_row_span(lr->c, lr->lv, lr->sp, lr->span, lr->lg, r, j, dv, cap, &ilo, &at);
+        if (ncol > cap) break; /* unreachable after a successful count */
+        if (!(ncol > 0.0)) continue;
+        row(ctx, fp_span_texels(lr->c, lr->lv, j, ilo, (int)ncol, at, buf), (int)ncol, ilo, dv);
+    }
+}
+
 /* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
  * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
  * address is kept inside the level so that no invalid pointer is ever
