@@ -115,8 +115,8 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     e->P[3] = e->M[1][0] < 0.0 ? -e->M[1][1] : e->M[1][1];
     /* Rows: the parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v. */
     ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
-    e->jlo = ceil(e->v0 - ext);
-    e->nrows = floor(e->v0 + ext) - e->jlo + 1.0;
+    e->jlo = fp_ceil(e->v0 - ext);
+    e->nrows = fp_floor(e->v0 + ext) - e->jlo + 1.0;
     e->spans.n = 0;
 }
 
@@ -293,8 +293,8 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
         vmin = fmin(vmin, e->V[k][1]);
         vmax = fmax(vmax, e->V[k][1]);
     }
-    e->jlo = ceil(e->v0 + vmin);
-    e->nrows = floor(e->v0 + vmax) - e->jlo + 1.0;
+    e->jlo = fp_ceil(e->v0 + vmin);
+    e->nrows = fp_floor(e->v0 + vmax) - e->jlo + 1.0;
     e->spans.n = 0;
     e->fail = 0;
 }

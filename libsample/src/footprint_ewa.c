@@ -96,8 +96,8 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     F = A * C - 0.25 * B * B;
     /* Row extent: the inverse of the normalized quadratic form is
      * [[C, −B/2], [−B/2, A]] before scaling, so |dv| ≤ √A. */
-    e->jlo = ceil(e->v0 - sqrt(A));
-    e->nrows = floor(e->v0 + sqrt(A)) - e->jlo + 1.0;
+    e->jlo = fp_ceil(e->v0 - sqrt(A));
+    e->nrows = fp_floor(e->v0 + sqrt(A)) - e->jlo + 1.0;
     e->abc[0] = A / F;
     e->abc[1] = B / F;
     e->abc[2] = C / F;
