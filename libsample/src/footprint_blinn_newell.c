@@ -140,8 +140,8 @@ static double bn_affine_span_fn(const void *lg, double dv, double *ilo) { return
 /* The derivative pass of a parallelogram level: each texel's pyramid
  * weight and its gradient (fp_level_walk's row). */
 typedef struct bn_affine_deriv {
-    fp_accum *acc;
-    double M[2][2], u0, ku, kv, total;
+    fp_pass ps; /* first */
+    double M[2][2];
 } bn_affine_deriv;
 
 static void bn_affine_deriv_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
@@ -150,14 +150,15 @@ static void bn_affine_deriv_row(void *dp, const unsigned char *p, int n, double 
     double(*M)[2] = d->M;
     int k;
     for (k = 0; k < n; ++k) {
-        double du = (ilo + k) - d->u0, gx = 0.0, gy = 0.0, w;
+        double du = (ilo + k) - d->ps.u0, gx = 0.0, gy = 0.0, w;
         float t4[4];
         w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
         if (w <= 0.0) continue;
         memcpy(t4, p + 16 * (size_t)k, sizeof t4);
         /* w depends on c − u0: ∂w/∂u0 = −(gx·M₀₀ + gy·M₁₀). */
-        fp_accum_add(d->acc, w, -(gx * M[0][0] + gy * M[1][0]) * d->ku, -(gx * M[0][1] + gy * M[1][1]) * d->kv, t4);
-        d->total += 1.0;
+        fp_accum_add(d->ps.acc, w, -(gx * M[0][0] + gy * M[1][0]) * d->ps.ku, -(gx * M[0][1] + gy * M[1][1]) * d->ps.kv,
+                     t4);
+        d->ps.total += 1.0;
     }
 }
 
@@ -188,14 +189,8 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
         fp_accum_fold(acc, &sm);
         return sm.n;
     }
-    d.acc = acc;
     memcpy(d.M, e->M, sizeof d.M);
-    d.u0 = e->u0;
-    d.ku = e->ku;
-    d.kv = e->kv;
-    d.total = 0.0;
-    fp_level_walk(&lr, T, &d, bn_affine_deriv_row);
-    return d.total;
+    return fp_pass_run(&d.ps, &lr, T, acc, e->ku, e->kv, bn_affine_deriv_row);
 }
 
 /* ---- General quadrilateral (exact corners): the projective map --------- */
@@ -313,8 +308,8 @@ static double bn_quad_span_fn(const void *lg, double dv, double *ilo) { return b
 /* The pass over a quad level (values, and derivatives when asked for):
  * each texel's pulled-back pyramid weight (fp_level_walk's row). */
 typedef struct bn_quad_pass {
-    fp_accum *acc;
-    double G[3][3], u0, ku, kv, wlo, whi, total;
+    fp_pass ps; /* first */
+    double G[3][3], wlo, whi;
     int area;
 } bn_quad_pass;
 
@@ -324,7 +319,7 @@ static void bn_quad_row(void *dp, const unsigned char *p, int n, double ilo, dou
     double(*G)[3] = d->G;
     int k;
     for (k = 0; k < n; ++k) {
-        double du = ilo + k - d->u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
+        double du = ilo + k - d->ps.u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
         float t4[4];
         /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
          * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
@@ -359,8 +354,8 @@ static void bn_quad_row(void *dp, const unsigned char *p, int n, double ilo, dou
             w *= m;
         }
         memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-        fp_accum_add(d->acc, w, -wu * d->ku, -wv * d->kv, t4);
-        d->total += 1.0;
+        fp_accum_add(d->ps.acc, w, -wu * d->ps.ku, -wv * d->ps.kv, t4);
+        d->ps.total += 1.0;
     }
 }
 
@@ -388,16 +383,10 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
      * range (|det DH| to its range on the quad) only guards rounding. The
      * entry keeps (whi/wlo)³ ≤ 2²⁰, so weights span at most 2²⁰. */
     d.area = (c->smp->options & SAMPLE_OPT_BN_AREA_WEIGHT) != 0;
-    d.acc = acc;
     memcpy(d.G, e->G, sizeof d.G);
-    d.u0 = e->u0;
-    d.ku = e->ku;
-    d.kv = e->kv;
     d.wlo = g->wlo;
     d.whi = g->whi;
-    d.total = 0.0;
-    fp_level_walk(&lr, tx, &d, bn_quad_row);
-    return d.total;
+    return fp_pass_run(&d.ps, &lr, tx, acc, e->ku, e->kv, bn_quad_row);
 }
 
 /* ---- Entry --------------------------------------------------------------- */

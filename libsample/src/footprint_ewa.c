@@ -117,8 +117,8 @@ static double ewa_span_fn(const void *lg, double dv, double *ilo) { return ewa_s
 /* The derivative pass of an ellipse level: each texel's weight and its
  * gradient (fp_level_walk's row). */
 typedef struct ewa_deriv {
-    fp_accum *acc;
-    double A, B, C, u0, ku, kv, total;
+    fp_pass ps; /* first */
+    double A, B, C;
 } ewa_deriv;
 
 static void ewa_deriv_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
@@ -127,7 +127,7 @@ static void ewa_deriv_row(void *dp, const unsigned char *p, int n, double ilo, d
     const double A = d->A, B = d->B, C = d->C;
     int k;
     for (k = 0; k < n; ++k) {
-        double du = (ilo + k) - d->u0, r2, w, dw;
+        double du = (ilo + k) - d->ps.u0, r2, w, dw;
         float t4[4];
         r2 = A * du * du + B * du * dv + C * dv * dv;
         if (!(r2 < 1.0)) continue;
@@ -135,8 +135,9 @@ static void ewa_deriv_row(void *dp, const unsigned char *p, int n, double ilo, d
         if (w <= 0.0) continue;
         memcpy(t4, p + 16 * (size_t)k, sizeof t4);
         /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */
-        fp_accum_add(d->acc, w, -dw * (2.0 * A * du + B * dv) * d->ku, -dw * (B * du + 2.0 * C * dv) * d->kv, t4);
-        d->total += 1.0;
+        fp_accum_add(d->ps.acc, w, -dw * (2.0 * A * du + B * dv) * d->ps.ku, -dw * (B * du + 2.0 * C * dv) * d->ps.kv,
+                     t4);
+        d->ps.total += 1.0;
     }
 }
 
@@ -161,16 +162,10 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         fp_accum_fold(acc, &sm);
         return sm.n;
     }
-    d.acc = acc;
     d.A = m->abc[0];
     d.B = m->abc[1];
     d.C = m->abc[2];
-    d.u0 = m->u0;
-    d.ku = m->ku;
-    d.kv = m->kv;
-    d.total = 0.0;
-    fp_level_walk(&lr, T, &d, ewa_deriv_row);
-    return d.total;
+    return fp_pass_run(&d.ps, &lr, T, acc, m->ku, m->kv, ewa_deriv_row);
 }
 
 /* A plan's geometry: the query's, and its two levels' memos. */

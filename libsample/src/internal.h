@@ -930,6 +930,29 @@ SAMPLE_FORCE_INLINE void fp_level_walk(const fp_level_rows *lr, float (*buf)[4],
     }
 }
 
+/* A pass of fp_accum_add over a level (the filters' derivative passes,
+ * Blinn–Newell's quad pass): what every filter's row function needs, the
+ * first member of the filter's own state (so that a pointer to one is a
+ * pointer to the other): the sums, the centre's column u0, ∂u0/∂s and
+ * ∂v0/∂t (ku, kv: the level's size, negative where mirrored) and the
+ * texels added. fp_pass_run walks the level with row() and returns them. */
+typedef struct fp_pass {
+    fp_accum *acc;
+    double u0, ku, kv, total;
+} fp_pass;
+
+SAMPLE_FORCE_INLINE double fp_pass_run(fp_pass *ps, const fp_level_rows *lr, float (*buf)[4], fp_accum *acc,
+                                       double ku, double kv, fp_row_fn row)
+{
+    ps->acc = acc;
+    ps->u0 = lr->u0;
+    ps->ku = ku;
+    ps->kv = kv;
+    ps->total = 0.0;
+    fp_level_walk(lr, buf, ps, row);
+    return ps->total;
+}
+
 /* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
  * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
  * address is kept inside the level so that no invalid pointer is ever
