@@ -1,0 +1,438 @@
+/*
+ * Internal to libsample, included by internal.h only: what Blinn–Newell
+ * and EWA share (footprint_common.c, footprint_rows.c and the two filters'
+ * files) — the footprint's shape and level, the weighted sums, the
+ * counting pass's row spans, the walk over a level's rows and the level
+ * loop split into plan and run. DESIGN §7, doc/footprint-filters.md,
+ * doc/performance.md.
+ */
+#ifndef SAMPLE_FOOTPRINT_H
+#define SAMPLE_FOOTPRINT_H
+
+#ifndef SAMPLE_INTERNAL_H
+#error "footprint.h is included by internal.h"
+#endif
+
+/* ---- Footprint geometry shared by the filters (footprint_common.c) ----- */
+
+/* Blinn–Newell and EWA run on the level where the footprint's minor
+ * semi-axis (smaller singular value of the Jacobian, in texels) is
+ * FP_MINOR_TEXELS, i.e. the minor axis of the 2 × 2-pixel region spans four
+ * texels; eccentricity (major / minor) is clamped to FP_MAX_ECCENTRICITY by
+ * lengthening the minor axis (doc/footprint-filters.md). */
+#define FP_MINOR_TEXELS 2.0
+#define FP_MAX_ECCENTRICITY 16.0
+
+/* J = U · diag(s) · Vᵀ with s[0] ≥ s[1] ≥ 0 and U, V orthogonal;
+ * J = [[a, b], [c, d]] (row-major, a = ∂u/∂x, b = ∂u/∂y, …). */
+typedef struct fp_svd {
+    double U[2][2], s[2], V[2][2];
+} fp_svd;
+void fp_svd2(double a, double b, double c, double d, fp_svd *out);
+/* A 2 × 2 Jacobian J = [[a, b], [c, d]] in Blinn's form (fp_svd2's E, F,
+ * G, H, Q = |(E, H)|, R = |(F, G)|), its singular values σ0 = Q + R ≥
+ * σ1 = |Q − R| (fp_svd2's, bit for bit), σ1 raised to σ0 / FP_MAX_ECCENTRICITY
+ * where it was below (`clamped`). Enough to rebuild J with new singular
+ * values and the same rotations without any trigonometry. */
+typedef struct fp_shape {
+    double E, F, G, H, Q, R, s[2];
+    int clamped;
+} fp_shape;
+void fp_shape_of(double J[2][2], fp_shape *o);
+/* fp_shape_of(J) given that J = r·(the Jacobian of b), r a power of two:
+ * Q and R come from b (no hypot). */
+void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o);
+void fp_shape_finish(fp_shape *o); /* s and the clamp from Q, R */
+/* out = U·diag(√(σ0² + wid), √(σ1² + wid))·Vᵀ, with J = U·diag(σ)·Vᵀ as
+ * fp_svd2 factors it and σ1 after the clamp: wid = 0 is the clamped
+ * Jacobian (EWA), wid = 1 the unit-variance widening (Blinn–Newell).
+ * Returns det(out). */
+double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2]);
+
+/* The normalized Jacobian J (rows s, t; columns x, y) in texel units of level
+ * lv, with the rows of a mirrored axis (fp_center) negated. */
+void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
+                       double out[2][2]);
+
+/* The shape of J (level lv's Jacobian, fp_level_jacobian; `flipped` if a
+ * mirror-clamp negated a row) from `base`, the shape of the same query's
+ * Jacobian on the base level c->base, when that is a power-of-two scaling;
+ * fp_shape_of(J) otherwise. */
+void fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[2][2], int flipped,
+                    fp_shape *o);
+
+/* Weighted sums of one level: Σw, Σw·T and, for ∂/∂(u0, v0) of the centre at
+ * fixed footprint, Σ∂w and Σ∂w·T. In double so that a constant texture comes
+ * back exactly and sums over a thousand texels keep float precision. */
+typedef struct fp_accum {
+    double sw, sdu, sdv;
+    double sT[4], sTdu[4], sTdv[4];
+    uint32_t texels;
+    int deriv; /* 0: the ∂ sums are not wanted (they stay 0) */
+} fp_accum;
+
+void fp_accum_init(fp_accum *a);
+
+static inline void fp_accum_add(fp_accum *a, double w, double dwdu, double dwdv, const float T[4])
+{
+    int k;
+    a->sw += w;
+    for (k = 0; k < 4; ++k) a->sT[k] += w * T[k];
+    if (a->deriv) {
+        a->sdu += dwdu;
+        a->sdv += dwdv;
+        for (k = 0; k < 4; ++k) {
+            a->sTdu[k] += dwdu * T[k];
+            a->sTdv[k] += dwdv * T[k];
+        }
+    }
+    a->texels++;
+}
+
+/* The sums of fp_accum without the derivative ones, for the filters' inner
+ * loops when no derivatives are asked for: a local the compiler keeps in
+ * registers (the 4 channels as two double pairs), folded into the level's
+ * fp_accum once (fp_accum_fold). Same additions in the same order as
+ * fp_accum_add, so the same bits. */
+typedef struct fp_sums {
+    double sw, sT[4];
+    uint32_t n;
+} fp_sums;
+
+SAMPLE_FORCE_INLINE void fp_sums_add(fp_sums *s, double w, const float T[4])
+{
+    int k;
+    s->sw += w;
+    for (k = 0; k < 4; ++k) s->sT[k] += w * T[k];
+    s->n++;
+}
+
+/* EWA's weight, e^(−2r²) − e^(−2), interpolated in fp_ewa_lut
+ * (footprint_ewa.c) at r² ∈ [0, 1); its slope dw/dr² in *dwdr2 if asked
+ * for. */
+extern const double fp_ewa_lut[129];
+SAMPLE_FORCE_INLINE double fp_ewa_weight(double r2, double *dwdr2)
+{
+    double x = r2 * 128.0;
+    int e = (int)x;
+    if (e > 127) e = 127;
+    if (dwdr2) *dwdr2 = (fp_ewa_lut[e + 1] - fp_ewa_lut[e]) * 128.0;
+    return fp_ewa_lut[e] + (x - e) * (fp_ewa_lut[e + 1] - fp_ewa_lut[e]);
+}
+
+/* a ← a + s for an fp_accum that received nothing else (a level's sums
+ * start at 0, so this is the sums themselves). */
+SAMPLE_FORCE_INLINE void fp_accum_fold(fp_accum *a, const fp_sums *s)
+{
+    int k;
+    a->sw += s->sw;
+    for (k = 0; k < 4; ++k) a->sT[k] += s->sT[k];
+    a->texels += s->n;
+}
+
+/* Prefetch the lines of texels ilo … ilo + ncol − 1 of row j of level lv
+ * (the part inside the level; wrapped parts are left to the hardware). The
+ * footprint filters call it from their counting pass, which finds every
+ * row's span before any texel is read: the rows' misses then overlap
+ * instead of arriving one row at a time. Only a hint: results unchanged. */
+SAMPLE_FORCE_INLINE void fp_prefetch_span(const sample_ctx *c, int lv, double j, double ilo, double ncol)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    const unsigned char *row;
+    size_t o, last;
+    double lo = ilo < 0.0 ? 0.0 : ilo, hi = ilo + ncol - 1.0;
+    if (!(j >= 0.0 && j < (double)L->h) || !(ncol > 0.0)) return;
+    if (hi > (double)(L->w - 1)) hi = (double)(L->w - 1);
+    if (!(lo <= hi)) return;
+    row = L->data + (size_t)j * L->stride;
+    last = ((size_t)hi + 1) * c->tex->texel_bytes - 1;
+    for (o = (size_t)lo * c->tex->texel_bytes; o < last; o += 64) SAMPLE_PREFETCH(row + o);
+    SAMPLE_PREFETCH(row + last);
+}
+
+/* A query's Jacobian as the footprint filters hold it: rows s, t; columns
+ * x, y (J[0] = (ds/dx, ds/dy), J[1] = (dt/dx, dt/dy)). */
+static inline void fp_query_jacobian(const sample_query *q, double J[2][2])
+{
+    J[0][0] = q->dsdx;
+    J[0][1] = q->dsdy;
+    J[1][0] = q->dtdx;
+    J[1][1] = q->dtdy;
+}
+
+/* ceil and floor of the footprint filters' row and column bounds. Without
+ * SSE4.1 GCC expands ceil() into some twenty instructions, and these run
+ * twice per row. Any |x| ≥ 2^52 is already integral, NaN and ±inf pass
+ * through; the values are ceil's and floor's except that a zero result is
+ * always +0 (ceil(−0.5) = −0), which the callers' arithmetic does not see. */
+static inline double fp_ceil(double x)
+{
+    double t;
+    if (!(fabs(x) < 0x1p52)) return x;
+    t = (double)(int64_t)x;
+    return t < x ? t + 1.0 : t;
+}
+
+static inline double fp_floor(double x)
+{
+    double t;
+    if (!(fabs(x) < 0x1p52)) return x;
+    t = (double)(int64_t)x;
+    return t > x ? t - 1.0 : t;
+}
+
+/* A level's row spans, found by the counting pass and kept for the
+ * accumulating pass (the first FP_SPAN_MEMO rows; the rare taller
+ * footprints recompute the rest): each row's bounds cost a few divisions,
+ * a square root for EWA, and two rounding steps, and its address a few
+ * more steps. */
+#define FP_SPAN_MEMO 96
+typedef struct fp_spans {
+    int n; /* rows stored by the last complete count */
+    double ilo[FP_SPAN_MEMO], ncol[FP_SPAN_MEMO];
+    const unsigned char *at[FP_SPAN_MEMO]; /* fp_span_at */
+} fp_spans;
+
+/* The address of texel ilo of row j of level lv when texels ilo … ilo +
+ * ncol − 1 all lie inside the level (then every wrap mode reads them
+ * there, ctx_texel's own shortcut), NULL otherwise. */
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const sample_ctx *c, int lv, double j, double ilo, double ncol)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    if (j >= 0.0 && j < (double)L->h && ilo >= 0.0 && ilo + ncol <= (double)L->w)
+        return L->data + (size_t)(long)j * L->stride + (size_t)(long)ilo * c->tex->texel_bytes;
+    return NULL;
+}
+
+/* Keep row r's span (row j, texels ilo … ilo + ncol − 1, address at or
+ * NULL: fp_span_at) for the accumulating pass and prefetch its lines. */
+SAMPLE_FORCE_INLINE void fp_span_keep(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
+                                      double ncol, const unsigned char *at)
+{
+    if (r < FP_SPAN_MEMO) {
+        sp->ilo[r] = ilo;
+        sp->ncol[r] = ncol;
+        sp->at[r] = at;
+    }
+    if (at) {
+        /* The first texel's line, then every line start up to the last
+         * byte (all inside the span). */
+        uintptr_t o = ((uintptr_t)at & ~(uintptr_t)63) + 64, end = (uintptr_t)at + (size_t)ncol * c->tex->texel_bytes;
+        SAMPLE_PREFETCH(at);
+        for (; o < end; o += 64) SAMPLE_PREFETCH((const void *)o);
+    } else {
+        fp_prefetch_span(c, lv, j, ilo, ncol);
+    }
+}
+
+/* The counting pass's step for row r: keep the span (fp_span_keep), add it
+ * to *total; nonzero once the total is over the cap (the caller then moves
+ * to a coarser level). Every row is bounded by the cap before any texel is
+ * read. */
+SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
+                                      double ncol, double cap, double *total)
+{
+    fp_span_keep(c, lv, sp, r, j, ilo, ncol, ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL);
+    *total += ncol;
+    return *total > cap;
+}
+
+/* A filter's row bounds: the span of texel indices on the row dv texels
+ * from the level's centre (*ilo, returns the count; 0 if none). */
+typedef double (*fp_span_fn)(const void *level_geom, double dv, double *ilo);
+
+/* The counting pass of a level of nrows rows from jlo (fp_span_count on
+ * each); returns the texels, or INFINITY once over the cap. Generic over
+ * the filter's span function, inlined with it (zstd style). */
+SAMPLE_FORCE_INLINE double fp_count_rows(const sample_ctx *c, int lv, fp_spans *sp, fp_span_fn span,
+                                         const void *lg, double jlo, double v0, int nrows, double cap)
+{
+    double total = 0.0;
+    int r;
+    sp->n = 0;
+    for (r = 0; r < nrows; ++r) {
+        double j = jlo + r, ilo = 0.0, ncol = span(lg, j - v0, &ilo);
+        if (fp_span_count(c, lv, sp, r, j, ilo, ncol, cap, &total)) return INFINITY;
+    }
+    sp->n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
+    return total;
+}
+
+/* Row r's span in the accumulating pass: the one the count stored, or
+ * (past FP_SPAN_MEMO rows) found again; its address in *at (fp_span_at). */
+SAMPLE_FORCE_INLINE double fp_row_span(const sample_ctx *c, int lv, const fp_spans *sp, fp_span_fn span,
+                                       const void *lg, int r, double j, double dv, double cap, double *ilo,
+                                       const unsigned char **at)
+{
+    double ncol;
+    if (r < sp->n) {
+        *ilo = sp->ilo[r];
+        *at = sp->at[r];
+        return sp->ncol[r];
+    }
+    ncol = span(lg, dv, ilo);
+    *at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, *ilo, ncol) : NULL;
+    return ncol;
+}
+
+/* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of row j of
+ * level lv as float RGBA, 16 bytes apart from the returned pointer, exactly
+ * as ctx_texel reads them (linear rule): a float RGBA span inside the level
+ * (at, fp_span_at) in place (nothing to decode), another span inside the
+ * level decoded in one go by the format's reader (tex_readers) into buf,
+ * anything else texel by texel through ctx_texel into buf. Load with
+ * memcpy. */
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const sample_ctx *c, int lv, double j, double ilo, int n,
+                                                        const unsigned char *at, float (*buf)[4])
+{
+    int k;
+    if (at) {
+        if (c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4) return at;
+        tex_readers_of(c->tex)->row(at, n, buf);
+    } else {
+        for (k = 0; k < n; ++k) ctx_texel(c, lv, ilo + k, j, 1, buf[k]);
+    }
+    return (const unsigned char *)buf;
+}
+
+/* One level's rows as the level kernels (fp_row_kernels) walk them: nrows
+ * rows from jlo, spans from the counting pass (sp; span and lg find those
+ * past FP_SPAN_MEMO again, fp_row_span), centre (u0, v0) on level lv. */
+typedef struct fp_level_rows {
+    const sample_ctx *c;
+    const fp_spans *sp;
+    fp_span_fn span;
+    const void *lg;
+    int lv, nrows;
+    double jlo, u0, v0;
+} fp_level_rows;
+
+/* The accumulating pass's walk over a level's rows: each row with texels
+ * (fp_row_span) handed to row() with its texels as float RGBA 16 bytes
+ * apart (fp_span_texels, decoded into buf where needed), their count, the
+ * first one's column ilo and the row's offset dv = (jlo + r) − v0 from the
+ * centre. Generic over row(), inlined with it (zstd style). */
+typedef void (*fp_row_fn)(void *ctx, const unsigned char *p, int n, double ilo, double dv);
+SAMPLE_FORCE_INLINE void fp_level_walk(const fp_level_rows *lr, float (*buf)[4], void *ctx, fp_row_fn row)
+{
+    const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
+    int r;
+    for (r = 0; r < lr->nrows; ++r) {
+        double j = lr->jlo + r, dv = j - lr->v0, ilo = 0.0, ncol;
+        const unsigned char *at;
+        ncol = fp_row_span(lr->c, lr->lv, lr->sp, lr->span, lr->lg, r, j, dv, cap, &ilo, &at);
+        if (ncol > cap) break; /* unreachable after a successful count */
+        if (!(ncol > 0.0)) continue;
+        row(ctx, fp_span_texels(lr->c, lr->lv, j, ilo, (int)ncol, at, buf), (int)ncol, ilo, dv);
+    }
+}
+
+/* A pass of fp_accum_add over a level (the filters' derivative passes,
+ * Blinn–Newell's quad pass): what every filter's row function needs, the
+ * first member of the filter's own state (so that a pointer to one is a
+ * pointer to the other): the sums, the centre's column u0, ∂u0/∂s and
+ * ∂v0/∂t (ku, kv: the level's size, negative where mirrored) and the
+ * texels added. fp_pass_run walks the level with row() and returns them. */
+typedef struct fp_pass {
+    fp_accum *acc;
+    double u0, ku, kv, total;
+} fp_pass;
+
+SAMPLE_FORCE_INLINE double fp_pass_run(fp_pass *ps, const fp_level_rows *lr, float (*buf)[4], fp_accum *acc,
+                                       double ku, double kv, fp_row_fn row)
+{
+    ps->acc = acc;
+    ps->u0 = lr->u0;
+    ps->ku = ku;
+    ps->kv = kv;
+    ps->total = 0.0;
+    fp_level_walk(lr, buf, ps, row);
+    return ps->total;
+}
+
+/* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
+ * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
+ * address is kept inside the level so that no invalid pointer is ever
+ * formed. The pair's first and last byte (they may straddle a line) are
+ * asked for without testing whether they share one: that test mispredicts
+ * (fast_gl.c, prefetch_run). */
+SAMPLE_FORCE_INLINE void ctx_prefetch_block(const sample_ctx *c, const struct sample_level *L, float u, float v)
+{
+    int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
+    int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
+    size_t tb = c->tex->texel_bytes;
+    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
+    size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
+    SAMPLE_PREFETCH(p);
+    SAMPLE_PREFETCH(p + e);
+    if (j + 1 < L->h) {
+        SAMPLE_PREFETCH(p + L->stride);
+        SAMPLE_PREFETCH(p + L->stride + e);
+    }
+}
+
+/* The same for a bilinear read near (s, t) on level lv. */
+SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, float s, float t)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    ctx_prefetch_block(c, L, s * (float)L->w - 0.5f, t * (float)L->h - 0.5f);
+}
+
+/* One level of a footprint filter: when `count_only`, returns (as a double,
+ * +inf if unbounded) how many texels the level would visit, reading none;
+ * otherwise accumulates into `acc` and returns the texels read. */
+typedef double (*fp_level_fn)(const sample_ctx *c, const void *geom, int lv, fp_accum *acc,
+                              int count_only);
+
+/* The level loop shared by Blinn–Newell and EWA, in two halves.
+ * fp_run_count: levels from the minor semi-axis (base texels, after the
+ * eccentricity clamp) and the bias, the counting pass (every row's span
+ * found, kept and prefetched; no texel read), moved coarser while the two
+ * levels together would exceed SAMPLE_MAX_FOOTPRINT_TEXELS. fp_run_read:
+ * the accumulating pass on those levels, blended in double; bilinear at
+ * the coarsest level if even that did not fit. Fills out/dds/ddt/st;
+ * returns texels. The halves may run apart (another query's work in
+ * between) as long as geom stays where it is. */
+typedef struct fp_run_state {
+    const void *geom;
+    fp_level_fn level;
+    float s, t, lam, f;
+    int l0, l1, ok;
+} fp_run_state;
+void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
+                  float t, float call_bias, fp_run_state *rs);
+uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
+                     sample_stats *st);
+
+/* A Blinn–Newell or EWA query split at fp_run's halves, for a batch loop
+ * that plans query i + 1 (its rows' lines then on their way) before it
+ * runs query i: fp_footprint_plan does the geometry and the counting pass
+ * into *pl, fp_footprint_run the accumulating pass, with the results of
+ * fp_blinn_newell / fp_ewa bit for bit (they are these two calls). A plan
+ * holds the filter's geometry and both levels' row spans (FP_PLAN_BYTES)
+ * and must not be moved between the calls. */
+#define FP_PLAN_BYTES 5632
+typedef struct fp_plan {
+    fp_run_state rs;
+    union {
+        double align;
+        void *palign;
+        unsigned char bytes[FP_PLAN_BYTES];
+    } geom;
+} fp_plan;
+void fp_footprint_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+                       fp_plan *pl);
+uint32_t fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
+                          sample_stats *st);
+void fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+                          fp_plan *pl);
+void fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl);
+
+/* The footprint centre on level lv in texel units with texel centres at
+ * integers (u0 = s·w − ½), after the coordinate transform of the wrap modes
+ * that have one (wrap_coord); `flip_s`/`flip_t` say whether a mirror-clamp
+ * reflected the centre, which mirrors the footprint too. */
+void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
+               int *flip_t);
+
+#endif /* SAMPLE_FOOTPRINT_H */
