@@ -23,17 +23,13 @@
 #define FP_MINOR_TEXELS 2.0
 #define FP_MAX_ECCENTRICITY 16.0
 
-/* J = U · diag(s) · Vᵀ with s[0] ≥ s[1] ≥ 0 and U, V orthogonal;
- * J = [[a, b], [c, d]] (row-major, a = ∂u/∂x, b = ∂u/∂y, …). */
-typedef struct fp_svd {
-    double U[2][2], s[2], V[2][2];
-} fp_svd;
-void fp_svd2(double a, double b, double c, double d, fp_svd *out);
-/* A 2 × 2 Jacobian J = [[a, b], [c, d]] in Blinn's form (fp_svd2's E, F,
- * G, H, Q = |(E, H)|, R = |(F, G)|), its singular values σ0 = Q + R ≥
- * σ1 = |Q − R| (fp_svd2's, bit for bit), σ1 raised to σ0 / FP_MAX_ECCENTRICITY
+/* A 2 × 2 Jacobian J = [[a, b], [c, d]] in Blinn's closed-form SVD,
+ * J = R(φ)·diag(σ0, ±σ1)·R(θ) = U·diag(σ)·Vᵀ: its symmetric and
+ * antisymmetric parts E, F, G, H, Q = |(E, H)|, R = |(F, G)|, the singular
+ * values σ0 = Q + R ≥ σ1 = |Q − R|, σ1 raised to σ0 / FP_MAX_ECCENTRICITY
  * where it was below (`clamped`). Enough to rebuild J with new singular
- * values and the same rotations without any trigonometry. */
+ * values and the same rotations without any trigonometry (no libm: the
+ * same bits on any machine, portable_math.h). */
 typedef struct fp_shape {
     double E, F, G, H, Q, R, s[2];
     int clamped;
@@ -44,7 +40,7 @@ void fp_shape_of(double J[2][2], fp_shape *o);
 void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o);
 void fp_shape_finish(fp_shape *o); /* s and the clamp from Q, R */
 /* out = U·diag(√(σ0² + wid), √(σ1² + wid))·Vᵀ, with J = U·diag(σ)·Vᵀ as
- * fp_svd2 factors it and σ1 after the clamp: wid = 0 is the clamped
+ * fp_shape_of factors it and σ1 after the clamp: wid = 0 is the clamped
  * Jacobian (EWA), wid = 1 the unit-variance widening (Blinn–Newell).
  * Returns det(out). */
 double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2]);

@@ -222,9 +222,9 @@ static void hull_row(const double H[4][2], double dv, double *lo, double *hi)
 static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax;
+    double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax, J[2][2], Jw[2][2], dw, dj;
     int fs, ft, k, i;
-    fp_svd sv;
+    fp_shape sh;
 
     e->lv = lv;
     e->fail = 1;
@@ -247,14 +247,23 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
      * and the pulled-back point lies in the quad wherever the weight is
      * nonzero, so w stays within its range on the square. σ > 0: the
      * caller sends only projective, not too eccentric quads here. */
-    fp_svd2(g->J[0][0] * ku, g->J[0][1] * ku, g->J[1][0] * kv, g->J[1][1] * kv, &sv);
-    if (!(sv.s[1] > 0.0)) return;
-    for (i = 0; i < 2; ++i)
-        for (k = 0; k < 2; ++k) {
-            double f0 = sqrt(sv.s[0] * sv.s[0] + 1.0) / sv.s[0], f1 = sqrt(sv.s[1] * sv.s[1] + 1.0) / sv.s[1];
-            T[i][k] = sv.U[i][0] / f0 * sv.U[k][0] + sv.U[i][1] / f1 * sv.U[k][1];
-            Ti[i][k] = sv.U[i][0] * f0 * sv.U[k][0] + sv.U[i][1] * f1 * sv.U[k][1];
-        }
+    fp_level_jacobian(c, lv, g->J, fs, ft, J);
+    fp_shape_of(J, &sh);
+    /* T wants J's own σ1, not the eccentricity clamp's. */
+    sh.s[1] = fabs(sh.Q - sh.R);
+    sh.clamped = 0;
+    if (!(sh.s[1] > 0.0)) return;
+    /* Jw = U·diag(√(σ² + 1))·Vᵀ (no trigonometry: fp_shape_reshape), so
+     * T = J·Jw⁻¹ and T⁻¹ = Jw·J⁻¹, by adjugates. */
+    dw = fp_shape_reshape(&sh, 1.0, Jw);
+    dj = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+    if (!(dj != 0.0)) return;
+    for (i = 0; i < 2; ++i) {
+        T[i][0] = (J[i][0] * Jw[1][1] - J[i][1] * Jw[1][0]) / dw;
+        T[i][1] = (J[i][1] * Jw[0][0] - J[i][0] * Jw[0][1]) / dw;
+        Ti[i][0] = (Jw[i][0] * J[1][1] - Jw[i][1] * J[1][0]) / dj;
+        Ti[i][1] = (Jw[i][1] * J[0][0] - Jw[i][0] * J[0][1]) / dj;
+    }
     /* Gh = H⁻¹ (adjugate / determinant): Gh·(u, v, 1) = (x, y, 1)/w. */
     Gh[0][0] = H[1][1] * H[2][2] - H[1][2] * H[2][1];
     Gh[0][1] = H[0][2] * H[2][1] - H[0][1] * H[2][2];

@@ -6,40 +6,18 @@
 
 #include <float.h>
 
-void fp_svd2(double a, double b, double c, double d, fp_svd *o)
-{
-    /* Closed-form 2 × 2 SVD (J = R(φ) · diag(sx, sy) · R(θ), Blinn's
-     * "Consider the lowly 2×2 matrix"): with E, F, G, H the symmetric and
-     * antisymmetric parts, sx = Q + R ≥ |sy| = |Q − R|. atan2 keeps it
-     * defined for every finite input, including the zero matrix. */
-    double E = 0.5 * (a + d), F = 0.5 * (a - d), G = 0.5 * (c + b), H = 0.5 * (c - b);
-    double Q = hypot(E, H), R = hypot(F, G);
-    double a1 = atan2(G, F), a2 = atan2(H, E);
-    double th = 0.5 * (a2 - a1), ph = 0.5 * (a2 + a1);
-    double sy = Q - R;
-    o->U[0][0] = cos(ph); o->U[0][1] = -sin(ph);
-    o->U[1][0] = sin(ph); o->U[1][1] = cos(ph);
-    /* Vᵀ = R(θ), so V = R(−θ). */
-    o->V[0][0] = cos(th); o->V[0][1] = sin(th);
-    o->V[1][0] = -sin(th); o->V[1][1] = cos(th);
-    o->s[0] = Q + R;
-    o->s[1] = fabs(sy);
-    if (sy < 0.0) { /* a reflection: carry the sign in U's second column */
-        o->U[0][1] = -o->U[0][1];
-        o->U[1][1] = -o->U[1][1];
-    }
-}
-
 void fp_shape_of(double J[2][2], fp_shape *o)
 {
-    /* The same E, F, G, H, Q, R as fp_svd2, so σ (and the level choice made
-     * from it) is fp_svd2's to the bit. */
+    /* Blinn's closed-form 2 × 2 SVD ("Consider the lowly 2×2 matrix",
+     * 1996): J = R(φ)·diag(σ0, ±σ1)·R(θ) with E, F, G, H the symmetric and
+     * antisymmetric parts, Q = |(E, H)|, R = |(F, G)|, σ0 = Q + R ≥
+     * σ1 = |Q − R|; the rotations are never formed (fp_shape_reshape). */
     o->E = 0.5 * (J[0][0] + J[1][1]);
     o->F = 0.5 * (J[0][0] - J[1][1]);
     o->G = 0.5 * (J[1][0] + J[0][1]);
     o->H = 0.5 * (J[1][0] - J[0][1]);
-    o->Q = hypot(o->E, o->H);
-    o->R = hypot(o->F, o->G);
+    o->Q = sample_hypot(o->E, o->H);
+    o->R = sample_hypot(o->F, o->G);
     fp_shape_finish(o);
 }
 
@@ -71,7 +49,7 @@ void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o)
 
 double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2])
 {
-    /* J = R(φ)·diag(σ0, ±σ1)·R(θ) (fp_svd2) = Q·R(φ + θ) + R·Ref(φ − θ),
+    /* J = R(φ)·diag(σ0, ±σ1)·R(θ) (fp_shape_of) = Q·R(φ + θ) + R·Ref(φ − θ),
      * with Q·R(φ + θ) = [[E, −H], [H, E]] and R·Ref(φ − θ) = [[F, G], [G, −F]]
      * (Blinn, "Consider the lowly 2×2 matrix", 1996). The same rotations
      * with new singular values t0, ±t1 are then
@@ -82,7 +60,7 @@ double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2])
      * clamp did not act (σ0 ± σ1 = 2·max, 2·min). */
     double sx = d->s[0], s1 = d->s[1], t0 = sqrt(sx * sx + wid), t1 = sqrt(s1 * s1 + wid);
     double big = d->Q >= d->R ? d->Q : d->R, small = d->Q >= d->R ? d->R : d->Q, kb, ks, kc, ka;
-    if (!(big > 0.0)) { /* J = 0: fp_svd2 gives U = V = I */
+    if (!(big > 0.0)) { /* J = 0: take U = V = I */
         out[0][0] = t0;
         out[0][1] = out[1][0] = 0.0;
         out[1][1] = t1;
@@ -186,7 +164,7 @@ void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, doub
     /* λ of the level where the minor semi-axis spans FP_MINOR_TEXELS:
      * log2(minor) − log2(FP_MINOR_TEXELS), then the biases and the min/max
      * LOD clamps as for any λ (GL 4.6 §8.14.1). */
-    double lb = log2(minor_base) - log2(FP_MINOR_TEXELS);
+    double lb = sample_log2(minor_base) - sample_log2(FP_MINOR_TEXELS);
     float lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias);
     int l0, l1, ok = 0;
     float f;

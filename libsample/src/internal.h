@@ -23,6 +23,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "portable_math.h"
+
 /* Return early with a status and a formatted message (sample_error_set). */
 #define RETURN_ERROR_IF(cond, err, status, ...)                                \
     do {                                                                       \
@@ -381,8 +383,8 @@ static inline double lod_log2_rho(const sample_ctx *c, const sample_query *q, do
     double uy = (double)q->dsdy * L->w, vy = (double)q->dtdy * L->h;
     rho2[0] = ux * ux + vx * vx;
     rho2[1] = uy * uy + vy * vy;
-    /* log2 ρ = ½ log2 ρ². */
-    return 0.5 * log2(rho2[0] > rho2[1] ? rho2[0] : rho2[1]);
+    /* log2 ρ = ½ log2 ρ² (sample_log2: the same bits on any machine). */
+    return 0.5 * sample_log2(rho2[0] > rho2[1] ? rho2[0] : rho2[1]);
 }
 
 /* λ_base = log2 ρ (eq. 8.7 before bias and clamps), as a float. */

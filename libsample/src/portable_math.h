@@ -1,0 +1,98 @@
+/*
+ * Internal to libsample, included by internal.h only: the elementary
+ * functions the sampling path needs (log2 for λ, GL 4.6 §8.14.1; hypot for
+ * the footprint's singular values, footprint_common.c), written with IEEE
+ * 754's basic operations alone (+, −, ×, ÷, √, exact scaling by powers of
+ * two), which every conforming machine rounds the same way.
+ *
+ * Why not libm: issue 10 asks for "the same answers bit for bit on any
+ * machine", and libm's log2 and hypot are not correctly rounded — their
+ * last bit depends on the C library and its version (glibc 2.35 replaced
+ * hypot, for one). A λ one ulp apart moves a trilinear blend weight and
+ * with it the result's last bits. With these, results depend only on the
+ * compiler honouring -ffp-contract=off and evaluating double as double
+ * (FLT_EVAL_METHOD 0; the x87 unit does not), checked below.
+ * doc/performance.md, "Run-time ISA dispatch".
+ */
+#ifndef SAMPLE_PORTABLE_MATH_H
+#define SAMPLE_PORTABLE_MATH_H
+
+#ifndef SAMPLE_INTERNAL_H
+#error "portable_math.h is included by internal.h"
+#endif
+
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
+#error "libsample's bit-for-bit results need FLT_EVAL_METHOD 0 (SSE2 arithmetic on x86, not x87)"
+#endif
+
+/* log2 x with an absolute error below 2^−52·max(1, |log2 x|)
+ * (tests/test_math.c), exact where x is a power of two (subnormals
+ * included: λ = 0 at ρ = 1 decides magnification, GL 4.6 §8.14);
+ * log2 ±0 = −inf, log2 +inf = +inf, NaN for x < 0 and NaN.
+ * x = 2^e·m, m ∈ [1, 2); c = 1 + (i + ½)/128 is the centre of m's 1/128th
+ * (i: m's top seven fraction bits), so m − c is exact and |r| < 2^−8 for
+ * r = (m − c)/c, and log2 m = log2 c + log2(1 + r) with log2 c from
+ * sample_log2_table (portable_math.c) and log2(1 + r) = (r − r²/2 + … +
+ * r⁷/7)/ln 2 (what it leaves out is below 2^−67), evaluated in Estrin's
+ * order: a short dependency chain, since λ of one query waits on it. */
+extern const double sample_log2_table[128][2];
+static inline double sample_log2(double x)
+{
+    /* (−1)^(k+1)/(k·ln 2), k = 1 … 7, each the nearest double. */
+    const double k1 = 0x1.71547652b82fep+0, k2 = -0x1.71547652b82fep-1, k3 = 0x1.ec709dc3a03fdp-2,
+                 k4 = -0x1.71547652b82fep-2, k5 = 0x1.2776c50ef9bfep-2, k6 = -0x1.ec709dc3a03fdp-3,
+                 k7 = 0x1.a61762a7aded9p-3;
+    uint64_t b;
+    int e, i;
+    double m, c, r, r2, p;
+    if (!(x > 0.0)) return x == 0.0 ? -INFINITY : NAN;
+    if (!(x < INFINITY)) return x;
+    memcpy(&b, &x, sizeof b);
+    e = (int)(b >> 52) - 1023;
+    if (e == -1023) { /* subnormal: 2^54·x is normal and exact */
+        x *= 0x1p54;
+        memcpy(&b, &x, sizeof b);
+        e = (int)(b >> 52) - 1023 - 54;
+    }
+    b &= 0x000fffffffffffffull;
+    if (b == 0) return (double)e;
+    i = (int)(b >> 45);
+    /* m, and c: m's top seven fraction bits, then a one (integer steps). */
+    b |= 0x3ff0000000000000ull;
+    memcpy(&m, &b, sizeof m);
+    b = (b & ~((1ull << 45) - 1)) | (1ull << 44);
+    memcpy(&c, &b, sizeof c);
+    r = (m - c) * sample_log2_table[i][1];
+    r2 = r * r;
+    p = (k1 + r * k2) + r2 * (k3 + r * k4) + (r2 * r2) * ((k5 + r * k6) + r2 * k7);
+    return (double)e + (sample_log2_table[i][0] + r * p);
+}
+
+/* √(x² + y²) within about 1 ulp, without overflow or underflow in between
+ * (exact power-of-two scaling where the squares would leave double's
+ * range); +inf if either is ±inf (even with a NaN, as C's hypot), else NaN
+ * if either is NaN. */
+static inline double sample_hypot(double x, double y)
+{
+    double a = fabs(x), b = fabs(y), t;
+    if (a == INFINITY || b == INFINITY) return INFINITY;
+    if (a != a || b != b) return a + b;
+    if (a < b) {
+        t = a;
+        a = b;
+        b = t;
+    }
+    if (a > 0x1p500) {
+        a *= 0x1p-600;
+        b *= 0x1p-600;
+        return sqrt(a * a + b * b) * 0x1p600;
+    }
+    if (a < 0x1p-500) {
+        a *= 0x1p600;
+        b *= 0x1p600;
+        return sqrt(a * a + b * b) * 0x1p-600;
+    }
+    return sqrt(a * a + b * b);
+}
+
+#endif /* SAMPLE_PORTABLE_MATH_H */
