@@ -1,8 +1,9 @@
 /*
  * portable_math.h: sample_log2 and sample_hypot, the sampling path's only
- * elementary functions, against the C library's (which are good to about
- * half an ulp, but whose last bit is theirs: the reason ours exist), and
- * their exact and special values.
+ * elementary functions, and sample_sinpi and the sRGB encoder, the mip
+ * builder's, against the C library's (which are good to about half an
+ * ulp, but whose last bit is theirs: the reason ours exist), and their
+ * exact and special values.
  */
 #include "check.h"
 #include "internal.h"
@@ -141,6 +142,49 @@ static void test_hypot(void)
     }
 }
 
+static void test_sinpi(void)
+{
+    const double pi = 3.14159265358979323846;
+    int k;
+    /* Exact zeros at the integers, ±1 at the half-integers. */
+    for (k = -1000; k <= 1000; ++k) {
+        CHECK(sample_sinpi((double)k) == 0.0, "sinpi(%d) = %a", k, sample_sinpi((double)k));
+        CHECK(sample_sinpi(k + 0.5) == ((k & 1) ? -1.0 : 1.0), "sinpi(%d.5) = %a", k, sample_sinpi(k + 0.5));
+    }
+    CHECK(sample_sinpi(0x1p60) == 0.0, "sinpi(2^60) = %a", sample_sinpi(0x1p60));
+    CHECK(isnan(sample_sinpi(INFINITY)) && isnan(sample_sinpi(-INFINITY)) && isnan(sample_sinpi(NAN)), "sinpi(inf)");
+    CHECK(sample_sinpi(-0.25) == -sample_sinpi(0.25), "odd");
+    /* Against libm's sin on the reduced argument (π·x itself would carry
+     * a rounding error of |x| ulps): x = n + r exactly, sin(πx) =
+     * (−1)^n·sin(πr); the mip kernels' range (|x| ≤ 3) and beyond. */
+    for (k = 0; k < 200000; ++k) {
+        double x = ((double)(rnd64() >> 11) * 0x1p-53 - 0.5) * 8.0, n = nearbyint(x),
+               ref = (fmod(n, 2.0) != 0.0 ? -1.0 : 1.0) * sin(pi * (x - n));
+        CHECK(fabs(sample_sinpi(x) - ref) <= 4.0 * DBL_EPSILON, "sinpi(%a) = %a, libm %a", x, sample_sinpi(x), ref);
+    }
+}
+
+static void test_srgb_encode8(void)
+{
+    int k;
+    float v;
+    /* Every code's decoded value encodes back to the code. */
+    for (k = 0; k < 256; ++k)
+        CHECK(sample_srgb_encode8(sample_srgb_table[k]) == k, "code %d -> %d", k, sample_srgb_encode8(sample_srgb_table[k]));
+    CHECK(sample_srgb_encode8(NAN) == 0 && sample_srgb_encode8(-1.0f) == 0 && sample_srgb_encode8(-0.0f) == 0,
+          "NaN and negatives");
+    CHECK(sample_srgb_encode8(1.0f) == 255 && sample_srgb_encode8(7.5f) == 255 && sample_srgb_encode8(INFINITY) == 255,
+          "1 and above");
+    /* Monotone, and round(255·OETF(v)) as pow computes it except within
+     * 1e−6 of a tie (where pow's last bit may decide either way). */
+    for (v = 0.0f; v <= 1.0f; v += 1.0f / 65536.0f) {
+        double e = v <= 0.0031308f ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055, x = 255.0 * e;
+        int want = (int)floor(x + 0.5), got = sample_srgb_encode8(v);
+        CHECK(got == want || fabs(x - floor(x) - 0.5) < 1e-6, "encode(%a) = %d, pow says %d", v, got, want);
+        CHECK(sample_srgb_encode8(nextafterf(v, 2.0f)) >= got, "monotone at %a", v);
+    }
+}
+
 int main(void)
 {
     RUN(test_log2_powers_of_two_exact);
@@ -149,5 +193,7 @@ int main(void)
     RUN(test_log2_random);
     RUN(test_log2_monotone);
     RUN(test_hypot);
+    RUN(test_sinpi);
+    RUN(test_srgb_encode8);
     return check_finish();
 }

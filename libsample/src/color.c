@@ -65,6 +65,119 @@ const float sample_srgb_table[256] = {
 #define U8_64(c) U8_16(c), U8_16((c) + 16), U8_16((c) + 32), U8_16((c) + 48)
 const float sample_unorm8_table[256] = {U8_64(0), U8_64(64), U8_64(128), U8_64(192)};
 
+/* sample_srgb8_threshold[k] = EOTF((k + ½)/255), k = 0 … 254: the linear
+ * values half-way (in the encoded domain) between codes k and k + 1, each
+ * the double nearest the exact value. Generated with Python's decimal
+ * module (50 digits):
+ *   for k in range(255): x = (Decimal(k) + Decimal("0.5")) / 255
+ *       print(float(x / Decimal("12.92") if x <= Decimal("0.04045")
+ *             else ((x + Decimal("0.055")) / Decimal("1.055")) ** Decimal("2.4")).hex())
+ */
+static const double sample_srgb8_threshold[255] = {
+    0x1.3e45677c176f7p-13, 0x1.dd681b3a23272p-12, 0x1.8dd6c15b1d4b4p-11,
+    0x1.167cba8c94818p-10, 0x1.660e146b9a5d5p-10, 0x1.b59f6e4aa0393p-10,
+    0x1.02986414d30a8p-9, 0x1.2a61110455f87p-9, 0x1.5229bdf3d8e66p-9,
+    0x1.79f26ae35bd45p-9, 0x1.a1e5a03a8a4b5p-9, 0x1.cbf734477e0e7p-9,
+    0x1.f8680590912c1p-9, 0x1.13a0be3e98ad5p-8, 0x1.2c4665c6bc58bp-8,
+    0x1.4629793a399b0p-8, 0x1.614e607554158p-8, 0x1.7db96ca0c99d9p-8,
+    0x1.9b6ed95fb6dbap-8, 0x1.ba72cde4cb5cap-8, 0x1.dac95df183297p-8,
+    0x1.fc768ac1bd733p-8, 0x1.0fbf21f2dc489p-7, 0x1.21f234061c55cp-7,
+    0x1.34d662df32ddcp-7, 0x1.486d8e075e9d4p-7, 0x1.5cb98d9e2545fp-7,
+    0x1.71bc32a59ad46p-7, 0x1.87774749cc7c5p-7, 0x1.9dec8f23ba5bfp-7,
+    0x1.b51dc7783fa2ap-7, 0x1.cd0ca7733ec84p-7, 0x1.e5bae05f5ea99p-7,
+    0x1.ff2a1dda9da46p-7, 0x1.0cae0303fc81dp-6, 0x1.1a291cdf30864p-6,
+    0x1.28072a5a9656bp-6, 0x1.3648f6d71d8d4p-6, 0x1.44ef4b4ef6b8fp-6,
+    0x1.53faee688f616p-6, 0x1.636ca4889ebeep-6, 0x1.73452fe3532a6p-6,
+    0x1.8385508caeef9p-6, 0x1.942dc48821f75p-6, 0x1.a53f47d76ca86p-6,
+    0x1.b6ba9488d7613p-6, 0x1.c8a062c4c9086p-6, 0x1.daf168dac664fp-6,
+    0x1.edae5b4de330dp-6, 0x1.006bf67056983p-5, 0x1.0a3767504c7e3p-5,
+    0x1.1439d7f87bcfap-5, 0x1.1e739f4abdd1cp-5, 0x1.28e5135e29deap-5,
+    0x1.338e8983f0647p-5, 0x1.3e70564c063c2p-5, 0x1.498acd89a2d57p-5,
+    0x1.54de4257938ccp-5, 0x1.606b071c66583p-5, 0x1.6c316d8e6dd5ep-5,
+    0x1.7831c6b7a0a43p-5, 0x1.846c62f955ceap-5, 0x1.90e1920fdffcep-5,
+    0x1.9d91a31608f91p-5, 0x1.aa7ce4886f087p-5, 0x1.b7a3a448c57bfp-5,
+    0x1.c5062fa0f9c99p-5, 0x1.d2a4d3463e6bcp-5, 0x1.e07fdb5bfcb10p-5,
+    0x1.ee979376ae979p-5, 0x1.fcec469ea1be6p-5, 0x1.05bf1fa95233fp-4,
+    0x1.0d26e3c54ebeap-4, 0x1.14ad945d08395p-4, 0x1.1c5355e946f1ep-4,
+    0x1.24184ca308d86p-4, 0x1.2bfc9c84a7aeep-4, 0x1.3400694af6b4bp-4,
+    0x1.3c23d67658241p-4, 0x1.4467074bcad3fp-4, 0x1.4cca1ed5f04c9p-4,
+    0x1.554d3fe60b982p-4, 0x1.5df08d14f9170p-4, 0x1.66b428c41f9a1p-4,
+    0x1.6f98351e5b03cp-4, 0x1.789cd418e0ac2p-4, 0x1.81c227741dc30p-4,
+    0x1.8b0850bc8fe6bp-4, 0x1.946f714b98253p-4, 0x1.9df7aa4848998p-4,
+    0x1.a7a11ca82cd65p-4, 0x1.b16be9300d4b9p-4, 0x1.bb583074add2ep-4,
+    0x1.c56612db878dfp-4, 0x1.cf95b09b7e3e6p-4, 0x1.d9e729bd913dep-4,
+    0x1.e45a9e1d883c9p-4, 0x1.eef02d6a9be77p-4, 0x1.f9a7f7281a9a9p-4,
+    0x1.02410d57049f5p-3, 0x1.07bf5b94e038ap-3, 0x1.0d4ef5cf430b2p-3,
+    0x1.12efeb7311b79p-3, 0x1.18a24bd8bbe9dp-3, 0x1.1e6626448412fp-3,
+    0x1.243b89e6c58e7p-3, 0x1.2a2285dc393e6p-3, 0x1.301b292e38aa4p-3,
+    0x1.362582d2ffac4p-3, 0x1.3c41a1adecb7ap-3, 0x1.426f948fbfc29p-3,
+    0x1.48af6a36d7de4p-3, 0x1.4f01314f6f85fp-3, 0x1.5564f873d7af6p-3,
+    0x1.5bdace2cb1a51p-3, 0x1.6262c0f127b37p-3, 0x1.68fcdf2724b0dp-3,
+    0x1.6fa937238a68fp-3, 0x1.7667d72a66f3dp-3, 0x1.7d38cd6f28fe9p-3,
+    0x1.841c2814d30edp-3, 0x1.8b11f52e2dc70p-3, 0x1.921a42bdf9326p-3,
+    0x1.99351eb71d1f9p-3, 0x1.a06296fcd88fbp-3, 0x1.a7a2b962f040bp-3,
+    0x1.aef593addc582p-3, 0x1.b65b3392f5350p-3, 0x1.bdd3a6b89f6d8p-3,
+    0x1.c55efab676fe3p-3, 0x1.ccfd3d1579b02p-3, 0x1.d4ae7b5030ba9p-3,
+    0x1.dc72c2d2d9a5bp-3, 0x1.e44a20fb8e723p-3, 0x1.ec34a31a6d0b4p-3,
+    0x1.f4325671be069p-3, 0x1.fc4348361ab75p-3, 0x1.0233c2c7494c1p-2,
+    0x1.064f8dca68078p-2, 0x1.0a750baa9e48dp-2, 0x1.0ea442e792155p-2,
+    0x1.12dd39fa6c332p-2, 0x1.171ff755e9545p-2, 0x1.1b6c81666af86p-2,
+    0x1.1fc2de920806ap-2, 0x1.242315389d220p-2, 0x1.288d2bb3dcb8fp-2,
+    0x1.2d0128575ed1dp-2, 0x1.317f1170b096cp-2, 0x1.3606ed4763a09p-2,
+    0x1.3a98c21d1d03fp-2, 0x1.3f34962da4212p-2, 0x1.43da6faef137cp-2,
+    0x1.488a54d13bc06p-2, 0x1.4d444bbf088cap-2, 0x1.52085a9d37af4p-2,
+    0x1.56d6878b122d7p-2, 0x1.5baed8a2577aap-2, 0x1.609153f74abf5p-2,
+    0x1.657dff98bfecfp-2, 0x1.6a74e190289f3p-2, 0x1.6f75ffe1a0cbcp-2,
+    0x1.7481608bfb425p-2, 0x1.79970988cdfcap-2, 0x1.7eb700cc7e40cp-2,
+    0x1.83e14c464c956p-2, 0x1.8915f1e0608a3p-2, 0x1.8e54f77fd4542p-2,
+    0x1.939e6304c03f5p-2, 0x1.98f23a4a45f6cp-2, 0x1.9e5083269ba32p-2,
+    0x1.a3b9436b16e15p-2, 0x1.a92c80e437919p-2, 0x1.aeaa4159b27f7p-2,
+    0x1.b4328a8e7be4ap-2, 0x1.b9c56240d1c5ap-2, 0x1.bf62ce2a462a8p-2,
+    0x1.c50ad3ffc933ap-2, 0x1.cabd7971b30b4p-2, 0x1.d07ac42bcdb47p-2,
+    0x1.d642b9d55eb84p-2, 0x1.dc15601130b20p-2, 0x1.e1f2bc7d9cba5p-2,
+    0x1.e7dad4b493b27p-2, 0x1.edcdae4ba7707p-2, 0x1.f3cb4ed413cbfp-2,
+    0x1.f9d3bbdac78d2p-2, 0x1.ffe6fae86d3d6p-2, 0x1.030288c0b9edcp-1,
+    0x1.061702930bb93p-1, 0x1.0930eda934ca2p-1, 0x1.0c504cbf2cdcap-1,
+    0x1.0f75228edec22p-1, 0x1.129f71d02c75cp-1, 0x1.15cf3d38f323dp-1,
+    0x1.1904877d0f24bp-1, 0x1.1c3f534e5fea4p-1, 0x1.1f7fa35ccbe1bp-1,
+    0x1.22c57a564448bp-1, 0x1.2610dae6c8f65p-1, 0x1.2961c7b86c188p-1,
+    0x1.2cb8437355e5bp-1, 0x1.301450bdc8432p-1, 0x1.3375f23c225fbp-1,
+    0x1.36dd2a90e443cp-1, 0x1.3a49fc5cb2566p-1, 0x1.3dbc6a3e58d79p-1,
+    0x1.413476d2cf4fep-1, 0x1.44b224b53bf61p-1, 0x1.4835767ef70a2p-1,
+    0x1.4bbe6ec78e26bp-1, 0x1.4f4d1024c7882p-1, 0x1.52e15d2aa54a6p-1,
+    0x1.567b586b689cdp-1, 0x1.5a1b047794ed4p-1, 0x1.5dc063ddf3090p-1,
+    0x1.616b792b94357p-1, 0x1.651c46ebd53f4p-1, 0x1.68d2cfa861810p-1,
+    0x1.6c8f15e935e0fp-1, 0x1.70511c34a3c66p-1, 0x1.7418e50f54067p-1,
+    0x1.77e672fc49c8cp-1, 0x1.7bb9c87ce563dp-1, 0x1.7f92e810e7315p-1,
+    0x1.8371d436725abp-1, 0x1.87568f6a0f9dcp-1, 0x1.8b411c26b0098p-1,
+    0x1.8f317ce5afb3ep-1, 0x1.9327b41ed8674p-1, 0x1.9723c44864498p-1,
+    0x1.9b25afd7007afp-1, 0x1.9f2d793dcfaeep-1, 0x1.a33b22ee6cbccp-1,
+    0x1.a74eaf58ed2a5p-1, 0x1.ab6820ebe3af1p-1, 0x1.af877a1462b15p-1,
+    0x1.b3acbd3dfebbep-1, 0x1.b7d7ecd2d0ee0p-1, 0x1.bc090b3b79644p-1,
+    0x1.c0401adf219b8p-1, 0x1.c47d1e237ecd4p-1, 0x1.c8c0176cd4466p-1,
+    0x1.cd09091df5b70p-1, 0x1.d157f598497d1p-1, 0x1.d5acdf3bcae8ap-1,
+    0x1.da07c8670c7a5p-1, 0x1.de68b3773a1c6p-1, 0x1.e2cfa2c81b559p-1,
+    0x1.e73c98b41576dp-1, 0x1.ebaf97942dc33p-1, 0x1.f028a1c00b929p-1,
+    0x1.f4a7b98dfa6ebp-1, 0x1.f92ce152ec2b7p-1, 0x1.fdb81b627af90p-1,
+};
+
+unsigned char sample_srgb_encode8(float v)
+{
+    /* The code k with threshold[k − 1] ≤ v < threshold[k]: round(255·OETF(v))
+     * to the nearest, ties up, found by bisection among constants instead of
+     * through pow (whose last bit is the C library's): the same codes on
+     * any machine. NaN and v < threshold[0] (negative included) give 0. */
+    int lo = 0, hi = 255;
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if ((double)v >= sample_srgb8_threshold[mid - 1])
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return (unsigned char)lo;
+}
+
 float sample_srgb_to_linear(float v)
 {
     if (!(v > 0.04045f)) return v / 12.92f; /* also passes NaN through */

@@ -51,6 +51,10 @@ struct sample_texture {
 extern const float sample_srgb_table[256];
 /* c / 255 for each 8-bit code (color.c). */
 extern const float sample_unorm8_table[256];
+/* The 8-bit sRGB code of a linear value, rounded to nearest in the encoded
+ * domain (color.c; no libm); what the mip builder writes into sRGB8
+ * levels. */
+unsigned char sample_srgb_encode8(float v);
 
 /* For the generic functions that the fast path instantiates per format:
  * GCC otherwise keeps some of them out of line, and the constants that

@@ -39,7 +39,9 @@ static double sinc(double x)
 {
     const double pi = 3.14159265358979323846;
     if (x == 0.0) return 1.0;
-    return sin(pi * x) / (pi * x);
+    /* sample_sinpi, not libm's sin: the same weights on any machine
+     * (portable_math.h), and exact zeros at the integers. */
+    return sample_sinpi(x) / (pi * x);
 }
 
 /* Modified Bessel function of the first kind, order 0, by its power series

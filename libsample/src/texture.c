@@ -249,7 +249,7 @@ void tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst
         }
         case SAMPLE_FORMAT_UNORM8: dst[c] = to_u8(in[c]); break;
         case SAMPLE_FORMAT_SRGB8:
-            dst[c] = to_u8(c < 3 ? sample_linear_to_srgb(in[c]) : in[c]);
+            dst[c] = c < 3 ? sample_srgb_encode8(in[c]) : to_u8(in[c]);
             break;
         default: break;
         }
