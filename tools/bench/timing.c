@@ -1,7 +1,12 @@
 /*
- * Timed passes over a query set on 1 … N threads. Each thread takes a
- * contiguous slice of the queries (so the coherent set stays coherent per
- * thread, as a renderer's tiles would) and calls the engine in batches.
+ * Timed passes over a query set on 1 … N threads. The threads take tiles
+ * of up to BENCH_TILE_BATCHES consecutive batches from a shared counter, first
+ * come first served, as a renderer's workers take tiles of a frame: the
+ * coherent set stays coherent within a tile (16 scanlines of the default
+ * `plane`), and a thread that drew the cheap part of the frame takes more
+ * of it. (Fixed contiguous halves, the first version, left one thread idle
+ * on `plane`, whose half near the horizon costs many times the other:
+ * doc/benchmarks.md.) Each tile is handed to the engine in batches.
  * The threads are a pool made once per measurement, as a renderer keeps
  * its workers: a pass releases them together (a barrier) and ends when the
  * last slice is done (a second barrier), and the clock spans exactly that.
@@ -14,8 +19,15 @@
 #include "bench.h"
 
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <time.h>
+
+/* Batches per tile: at most 16 (4,096 queries at the default 256), and
+ * few enough that every thread gets at least 8 tiles of a pass (a short
+ * --quick run too), at least one. */
+#define BENCH_TILE_BATCHES 16
+#define BENCH_TILES_PER_THREAD 8
 
 typedef struct pool pool;
 
@@ -25,7 +37,7 @@ typedef struct job {
     oiio_ts *ts;
     const sample_query *q;
     float *rgba;
-    size_t lo, hi, batch;
+    size_t n, batch, tile;
     int failed;
     pool *p;
 } job;
@@ -37,15 +49,20 @@ struct pool {
     pthread_cond_t go, done;
     unsigned gen;
     int busy, quit;
+    atomic_size_t next; /* the pass's next tile's first query */
 };
 
-static void run_slice(job *j)
+/* Tiles until the pass's queries are all taken. */
+static void run_tiles(job *j)
 {
-    size_t i;
-    for (i = j->lo; i < j->hi && !j->failed; i += j->batch) {
-        size_t m = j->hi - i < j->batch ? j->hi - i : j->batch;
-        if (bench_engine_run(j->e, j->t, j->ts, j->q + i, m, j->rgba + 4 * i, NULL) != 0)
-            j->failed = 1;
+    const size_t tile = j->tile;
+    size_t lo;
+    while (!j->failed && (lo = atomic_fetch_add_explicit(&j->p->next, tile, memory_order_relaxed)) < j->n) {
+        size_t i, hi = j->n - lo < tile ? j->n : lo + tile;
+        for (i = lo; i < hi && !j->failed; i += j->batch) {
+            size_t m = hi - i < j->batch ? hi - i : j->batch;
+            if (bench_engine_run(j->e, j->t, j->ts, j->q + i, m, j->rgba + 4 * i, NULL) != 0) j->failed = 1;
+        }
     }
 }
 
@@ -60,7 +77,7 @@ static void *worker(void *arg)
         if (p->quit) break;
         seen = p->gen;
         pthread_mutex_unlock(&p->mu);
-        run_slice(j);
+        run_tiles(j);
         pthread_mutex_lock(&p->mu);
         if (--p->busy == 0) pthread_cond_signal(&p->done);
     }
@@ -75,18 +92,19 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* One pass (the calling thread runs slice 0); returns seconds, or −1 on
+/* One pass (the calling thread works too); returns seconds, or −1 on
  * failure. */
 static double pass(job *jobs, pool *p, int threads)
 {
     double t0 = now(), t1;
     int k, failed = 0;
     pthread_mutex_lock(&p->mu);
+    atomic_store_explicit(&p->next, 0, memory_order_relaxed);
     p->busy = threads - 1;
     p->gen++;
     pthread_cond_broadcast(&p->go);
     pthread_mutex_unlock(&p->mu);
-    run_slice(&jobs[0]);
+    run_tiles(&jobs[0]);
     pthread_mutex_lock(&p->mu);
     while (p->busy > 0) pthread_cond_wait(&p->done, &p->mu);
     pthread_mutex_unlock(&p->mu);
@@ -109,10 +127,13 @@ int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
     job *jobs = calloc((size_t)threads, sizeof *jobs);
     pthread_t *tid = calloc((size_t)threads, sizeof *tid);
     double *sps = calloc((size_t)runs, sizeof *sps);
-    pool p = {PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, 0, 0};
+    pool p = {PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, 0, 0, 0};
+    size_t batches, tile;
     int r, k, rc = -1, started = 1;
 
-    if (!rgba || !jobs || !tid || !sps || runs < 1 || threads < 1) goto done;
+    if (!rgba || !jobs || !tid || !sps || runs < 1 || threads < 1 || batch < 1) goto done;
+    batches = n / ((size_t)threads * BENCH_TILES_PER_THREAD * batch);
+    tile = batch * (batches < 1 ? 1 : batches > BENCH_TILE_BATCHES ? BENCH_TILE_BATCHES : batches);
     for (k = 0; k < threads; ++k) {
         job *j = &jobs[k];
         j->e = e;
@@ -121,8 +142,8 @@ int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
         j->q = q;
         j->rgba = rgba;
         j->batch = batch;
-        j->lo = n * (size_t)k / (size_t)threads;
-        j->hi = n * (size_t)(k + 1) / (size_t)threads;
+        j->n = n;
+        j->tile = tile;
         j->p = &p;
     }
     /* A pool that cannot be made whole is not the measurement asked for:
