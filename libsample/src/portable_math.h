@@ -1,7 +1,8 @@
 /*
  * Internal to libsample, included by internal.h only: the elementary
  * functions the sampling path needs (log2 for λ, GL 4.6 §8.14.1; hypot for
- * the footprint's singular values, footprint_common.c), written with IEEE
+ * the footprint's singular values, footprint_common.c) and the mip
+ * builder's sin πx (its windowed sincs, mip.c), written with IEEE
  * 754's basic operations alone (+, −, ×, ÷, √, exact scaling by powers of
  * two), which every conforming machine rounds the same way.
  *
