@@ -39,6 +39,7 @@ void fp_shape_of(double J[2][2], fp_shape *o);
  * Q and R come from b (no hypot). */
 void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o);
 void fp_shape_finish(fp_shape *o); /* s and the clamp from Q, R */
+void fp_shape_sigma(fp_shape *o);  /* s from Q, R without the clamp */
 /* out = U·diag(√(σ0² + wid), √(σ1² + wid))·Vᵀ, with J = U·diag(σ)·Vᵀ as
  * fp_shape_of factors it and σ1 after the clamp: wid = 0 is the clamped
  * Jacobian (EWA), wid = 1 the unit-variance widening (Blinn–Newell).
@@ -154,27 +155,6 @@ static inline void fp_query_jacobian(const sample_query *q, double J[2][2])
     J[0][1] = q->dsdy;
     J[1][0] = q->dtdx;
     J[1][1] = q->dtdy;
-}
-
-/* ceil and floor of the footprint filters' row and column bounds. Without
- * SSE4.1 GCC expands ceil() into some twenty instructions, and these run
- * twice per row. Any |x| ≥ 2^52 is already integral, NaN and ±inf pass
- * through; the values are ceil's and floor's except that a zero result is
- * always +0 (ceil(−0.5) = −0), which the callers' arithmetic does not see. */
-static inline double fp_ceil(double x)
-{
-    double t;
-    if (!(fabs(x) < 0x1p52)) return x;
-    t = (double)(int64_t)x;
-    return t < x ? t + 1.0 : t;
-}
-
-static inline double fp_floor(double x)
-{
-    double t;
-    if (!(fabs(x) < 0x1p52)) return x;
-    t = (double)(int64_t)x;
-    return t > x ? t - 1.0 : t;
 }
 
 /* A level's row spans, found by the counting pass and kept for the

@@ -249,9 +249,7 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
      * caller sends only projective, not too eccentric quads here. */
     fp_level_jacobian(c, lv, g->J, fs, ft, J);
     fp_shape_of(J, &sh);
-    /* T wants J's own σ1, not the eccentricity clamp's. */
-    sh.s[1] = fabs(sh.Q - sh.R);
-    sh.clamped = 0;
+    fp_shape_sigma(&sh); /* T wants J's own σ1, not the eccentricity clamp's */
     if (!(sh.s[1] > 0.0)) return;
     /* Jw = U·diag(√(σ² + 1))·Vᵀ (no trigonometry: fp_shape_reshape), so
      * T = J·Jw⁻¹ and T⁻¹ = Jw·J⁻¹, by adjugates. */

@@ -21,11 +21,17 @@ void fp_shape_of(double J[2][2], fp_shape *o)
     fp_shape_finish(o);
 }
 
+void fp_shape_sigma(fp_shape *o)
+{
+    o->s[0] = o->Q + o->R;
+    o->s[1] = fabs(o->Q - o->R);
+    o->clamped = 0;
+}
+
 void fp_shape_finish(fp_shape *o)
 {
-    double sy = o->Q - o->R, lo;
-    o->s[0] = o->Q + o->R;
-    o->s[1] = fabs(sy);
+    double lo;
+    fp_shape_sigma(o);
     /* Eccentricity clamp: lengthen the minor axis rather than shorten the
      * major one (pbrt's "clamp ellipse eccentricity"): the filter may blur
      * across, never alias along. */

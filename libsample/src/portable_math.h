@@ -96,6 +96,27 @@ static inline double sample_hypot(double x, double y)
     return sqrt(a * a + b * b);
 }
 
+/* ceil and floor, for the footprint filters' row and column bounds (twice
+ * per row; without SSE4.1 GCC expands ceil() into some twenty
+ * instructions) and sample_sinpi's argument reduction. Any |x| ≥ 2^52 is already integral, NaN and ±inf pass
+ * through; the values are ceil's and floor's except that a zero result is
+ * always +0 (ceil(−0.5) = −0), which the callers' arithmetic does not see. */
+static inline double fp_ceil(double x)
+{
+    double t;
+    if (!(fabs(x) < 0x1p52)) return x;
+    t = (double)(int64_t)x;
+    return t < x ? t + 1.0 : t;
+}
+
+static inline double fp_floor(double x)
+{
+    double t;
+    if (!(fabs(x) < 0x1p52)) return x;
+    t = (double)(int64_t)x;
+    return t > x ? t - 1.0 : t;
+}
+
 /* sin(π·x) within about 2^−53 absolute for every finite x, exactly 0 at
  * the integers (libm's sin(π·n) is not); NaN for ±inf and NaN. The mip
  * builder's windowed-sinc kernels (mip.c), not the sampling path: with it
@@ -116,8 +137,7 @@ static inline double sample_sinpi(double x)
     int k;
     if (!(fabs(x) < INFINITY)) return x - x; /* NaN */
     if (!(fabs(x) < 0x1p52)) return 0.0;     /* an integer (and even beyond 2^53) */
-    n = x + 0.5;
-    n = (double)(int64_t)n - ((double)(int64_t)n > n ? 1.0 : 0.0); /* floor(x + ½) */
+    n = fp_floor(x + 0.5);
     r = x - n;
     if (r == 0.0) return 0.0;
     if (fabs(r) == 0.5) p = 1.0; /* the series' rounding would give 1 − ulp */
