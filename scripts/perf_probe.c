@@ -1,0 +1,137 @@
+/*
+ * perf_probe: the developer's timing probe behind doc/performance.md's
+ * step tables (issue 10, sixth pass on). One filter, one of bench's query
+ * sets, one format: the best 1-thread CPU time of several passes over the
+ * queries (warm-up excluded), in batches of 256, and a hash of the
+ * results, so that a change can be timed and shown to keep the bits.
+ * Built and run by scripts/perf_probe.sh; not part of the product build.
+ *
+ *   perf_probe FILTER SET FORMAT [QUERIES [RUNS]]
+ *   (FILTER, SET, FORMAT as `texsample bench` names them; env PB_SCALAR=1:
+ *   the general path, PB_SIZE: texture side, default 2048)
+ */
+#define _GNU_SOURCE
+#include "bench.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* The bench sources it shares (queries.c, engines.c) refer to these; the
+ * probe times libsample only. */
+const char *const bench_format_names[BENCH_FMT_COUNT] = {"float", "half", "srgb8"};
+void oiio_ts_opts_init(oiio_ts_opts *o) { memset(o, 0, sizeof *o); }
+int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *t, const oiio_ts_opts *o, const sample_query *q, size_t n, float *rgba,
+                   char *err, size_t errlen)
+{
+    (void)ts, (void)t, (void)o, (void)q, (void)n, (void)rgba, (void)err, (void)errlen;
+    return -1;
+}
+
+static double cpu_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static uint32_t mix(uint32_t x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    return x ^ (x >> 16);
+}
+
+static int find(const char *const *names, int n, const char *want)
+{
+    int k;
+    for (k = 0; k < n; ++k)
+        if (!strcmp(names[k], want)) return k;
+    return -1;
+}
+
+int main(int argc, char **argv)
+{
+    const char *filt = argc > 1 ? argv[1] : "trilinear", *set = argc > 2 ? argv[2] : "minify",
+               *fmt = argc > 3 ? argv[3] : "float";
+    size_t n = argc > 4 ? strtoul(argv[4], NULL, 10) : 65536, i, nt, b;
+    int runs = argc > 5 ? atoi(argv[5]) : 5, size = getenv("PB_SIZE") ? atoi(getenv("PB_SIZE")) : 2048;
+    bench_engine eng[32];
+    int ne = bench_engines(eng, 32), ei = -1, si, fi, k, r;
+    float *content, *out;
+    void *data = NULL;
+    sample_image img;
+    sample_mip_params mip;
+    sample_texture *tex;
+    sample_error err;
+    sample_query *q;
+    sample_sampler smp;
+    double best = 1e30;
+    uint32_t h = 0;
+
+    for (k = 0; k < ne; ++k)
+        if (!eng[k].oiio && !strcmp(eng[k].name, filt)) ei = k;
+    si = find(bench_set_names, BENCH_SET_COUNT, set);
+    fi = find(bench_format_names, BENCH_FMT_COUNT, fmt);
+    if (ei < 0 || si < 0 || fi < 0 || n == 0 || runs < 1 || size < 1) {
+        fprintf(stderr, "usage: perf_probe FILTER SET FORMAT [QUERIES [RUNS]]\n");
+        return 2;
+    }
+    nt = (size_t)size * (size_t)size * 4;
+    content = malloc(nt * sizeof *content);
+    q = malloc(n * sizeof *q);
+    out = malloc(n * 4 * sizeof *out);
+    if (!content || !q || !out) return 1;
+    for (i = 0; i < nt; ++i) content[i] = (float)(mix((uint32_t)i) & 0xffff) / 65535.0f;
+    img = (sample_image){size, size, 4, SAMPLE_FORMAT_F32, content, 0};
+    if (fi == BENCH_FMT_F16) {
+        uint16_t *p = malloc(nt * sizeof *p);
+        if (!p) return 1;
+        for (i = 0; i < nt; ++i) p[i] = sample_float_to_half(content[i]);
+        img.data = data = p;
+        img.format = SAMPLE_FORMAT_F16;
+    } else if (fi == BENCH_FMT_SRGB8) {
+        uint8_t *p = malloc(nt);
+        if (!p) return 1;
+        for (i = 0; i < nt; ++i) p[i] = (uint8_t)(content[i] * 255.0f);
+        img.data = data = p;
+        img.format = SAMPLE_FORMAT_SRGB8;
+    }
+    sample_mip_params_init(&mip);
+    mip.wrap_s = mip.wrap_t = SAMPLE_WRAP_REPEAT;
+    if (sample_texture_create(&img, &mip, &tex, &err) != SAMPLE_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    bench_queries((bench_set)si, size, q, n);
+    smp = eng[ei].smp;
+    if (getenv("PB_SCALAR")) smp.options |= SAMPLE_OPT_SCALAR_PATH;
+    for (r = 0; r <= runs; ++r) { /* pass 0: warm-up */
+        double t0 = cpu_now(), t;
+        for (b = 0; b < n; b += 256) {
+            sample_batch_args a;
+            memset(&a, 0, sizeof a);
+            a.count = n - b < 256 ? n - b : 256;
+            a.queries = q + b;
+            a.rgba = out + 4 * b;
+            if (sample_batch(tex, &smp, &a) != SAMPLE_OK) return 1;
+        }
+        t = cpu_now() - t0;
+        if (r > 0 && t < best) best = t;
+    }
+    for (i = 0; i < n * 4; ++i) {
+        uint32_t u;
+        memcpy(&u, &out[i], sizeof u);
+        h = mix(h ^ u);
+    }
+    printf("%-12s %-8s %-6s %7.2f M/s  hash %08x\n", filt, set, fmt, (double)n / best / 1e6, h);
+    sample_texture_destroy(tex);
+    free(data);
+    free(content);
+    free(q);
+    free(out);
+    return 0;
+}
