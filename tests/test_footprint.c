@@ -125,6 +125,63 @@ static void column_symmetry(void)
     sample_texture_destroy(t);
 }
 
+/* Transposing the texture and the footprint (s ↔ t, the Jacobian's rows
+ * exchanged) gives the same filter, and for Blinn–Newell and EWA the same
+ * bits, values and derivatives (∂/∂s ↔ ∂/∂t): the level's geometry is
+ * symmetric to the bit (fp_shape_of's Q and R trade places, fp_shape_reshape
+ * the rows of J′), and a footprint taller than wide is walked by columns
+ * (fp_level_rows) in exactly the order its transpose's rows are — so a
+ * mistake in the column walk (an axis, a pitch, a derivative not swapped)
+ * shows up here as a difference. On a square level with the same wrap on
+ * both axes, over every wrap mode but the border ones; queries up to 40
+ * texels long, eccentricity up to 32 (the clamp acts), near edges too.
+ * Texels are multiples of 1/128, so that the box pyramid's sums are exact
+ * and the transpose's levels are the transposes of the levels. */
+static float f_rough(int i, int j, int ch) { return (float)((i * 37 + j * 91 + ch * 13) % 101) / 128.0f; }
+static float f_rough_t(int i, int j, int ch) { return f_rough(j, i, ch); }
+
+static void transpose_symmetry(void)
+{
+    static const sample_wrap wraps[] = {SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_MIRRORED_REPEAT, SAMPLE_WRAP_CLAMP_TO_EDGE,
+                                        SAMPLE_WRAP_MIRROR_CLAMP_TO_EDGE};
+    sample_texture *t = tex_from(64, 64, f_rough, 1), *tt = tex_from(64, 64, f_rough_t, 1);
+    sample_sampler s;
+    int n, f, k, bad = 0, checked = 0;
+    for (n = 0; n < 400; ++n) {
+        sample_ctx c, ct;
+        double skew = urand(0, 6.3), th = urand(0, 6.3), a = exp2(urand(-2, 5.3)), b = a * exp2(urand(-5, 0));
+        float ts = (float)urand(-0.2, 1.2), ss = (float)urand(-0.2, 1.2);
+        sample_query q = footprint(ss, ts, a, b, th, skew, 64, 64), qt = q;
+        c = footprint_ctx(t, &s);
+        s.wrap_s = s.wrap_t = wraps[n % 4];
+        ct = ctx_for(tt, &s);
+        qt.s = q.t;
+        qt.t = q.s;
+        qt.dsdx = q.dtdx;
+        qt.dtdx = q.dsdx;
+        qt.dsdy = q.dtdy;
+        qt.dtdy = q.dsdy;
+        for (f = FILTER_BN; f <= FILTER_EWA; ++f) {
+            float o[4], ds[4], dt[4], p[4], pds[4], pdt[4], v[4], vt[4];
+            run_filter(f, &c, &q, NULL, o, ds, dt, NULL);
+            run_filter(f, &ct, &qt, NULL, p, pds, pdt, NULL);
+            run_filter(f, &c, &q, NULL, v, NULL, NULL, NULL); /* the row kernels */
+            run_filter(f, &ct, &qt, NULL, vt, NULL, NULL, NULL);
+            for (k = 0; k < 4; ++k)
+                if (memcmp(&o[k], &p[k], 4) || memcmp(&ds[k], &pdt[k], 4) || memcmp(&dt[k], &pds[k], 4) ||
+                    memcmp(&v[k], &vt[k], 4) || memcmp(&v[k], &o[k], 4)) {
+                    if (++bad <= 3)
+                        fprintf(stderr, "%s n=%d ch %d: %.9g / %.9g (rows kernels %.9g / %.9g), d/ds %.9g vs d/dt %.9g\n",
+                                filter_names[f], n, k, o[k], p[k], v[k], vt[k], ds[k], pdt[k]);
+                }
+            checked++;
+        }
+    }
+    CHECK(bad == 0, "%d of %d transposed queries differ", bad, checked);
+    sample_texture_destroy(t);
+    sample_texture_destroy(tt);
+}
+
 /* A tiny axis-aligned square footprint: anisotropic is one bilinear probe
  * on the base level (exact); Blinn–Newell's widened pyramid has half-width
  * √(1 + ε²) texels, so its weights differ from the bilinear ones by O(ε²)
@@ -364,6 +421,7 @@ int main(void)
     RUN(constant_exact);
     RUN(weights_normalized);
     RUN(column_symmetry);
+    RUN(transpose_symmetry);
     RUN(tiny_is_bilinear);
     RUN(level_choice_and_continuity);
     RUN(aniso_probes);

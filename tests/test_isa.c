@@ -36,7 +36,7 @@ static int check_halves(int nc)
     float(*out)[4] = malloc((size_t)n * sizeof *out);
     int k, c, bad = 0;
     for (k = 0; k < NH; ++k) h[k] = (uint16_t)k;
-    isa_kernels_active()->readers[SAMPLE_FORMAT_F16][nc - 1].row((const unsigned char *)h, n, out);
+    isa_kernels_active()->readers[SAMPLE_FORMAT_F16][nc - 1].row((const unsigned char *)h, 2 * (size_t)nc, n, out);
     for (k = 0; k < n; ++k)
         for (c = 0; c < 4; ++c) {
             uint32_t want = c < nc ? bits_of(sample_half_to_float(h[nc * k + c])) : bits_of(c == 3 ? 1.0f : 0.0f);
@@ -45,6 +45,15 @@ static int check_halves(int nc)
                         sample_isa_name(), nc, c < nc ? (unsigned)h[nc * k + c] : 0u,
                         (unsigned)bits_of(out[k][c]), (unsigned)want);
         }
+    /* Strided (a level's column, fp_span_texels): every third texel. */
+    {
+        float(*o3)[4] = malloc((size_t)(n / 3) * sizeof *o3);
+        isa_kernels_active()->readers[SAMPLE_FORMAT_F16][nc - 1].row((const unsigned char *)h, 6 * (size_t)nc, n / 3, o3);
+        for (k = 0; k < n / 3; ++k)
+            if (memcmp(o3[k], out[3 * k], sizeof o3[k]) != 0 && ++bad <= 3)
+                fprintf(stderr, "%s, %d channels: strided read of texel %d differs\n", sample_isa_name(), nc, 3 * k);
+        free(o3);
+    }
     free(h);
     free(out);
     return bad;

@@ -354,12 +354,11 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
 
 /* ---- Readers for the footprint filters (tex_readers) --------------------- */
 
-SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, int n,
+SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, size_t pitch, int n,
                                     float (*out)[4])
 {
-    const size_t tb = texel_bytes(fmt, nc);
     int k;
-    for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * tb));
+    for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * pitch));
 }
 
 SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format fmt, int nc, int lv,
@@ -488,9 +487,9 @@ SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args
 }
 
 #define TEX_READERS(fmt, nc)                                                   \
-    static void row_##fmt##_##nc(const unsigned char *p, int n, float (*out)[4]) \
+    static void row_##fmt##_##nc(const unsigned char *p, size_t pitch, int n, float (*out)[4]) \
     {                                                                          \
-        decode_row(SAMPLE_FORMAT_##fmt, nc, p, n, out);                        \
+        decode_row(SAMPLE_FORMAT_##fmt, nc, p, pitch, n, out);                 \
     }                                                                          \
     SAMPLE_FORCE_INLINE uint32_t bilinear_inline_##fmt##_##nc(const sample_ctx *c, int lv, float s, \
                                                               float t, float out[4], float dds[4], \

@@ -127,26 +127,6 @@ SAMPLE_FORCE_INLINE void fp_accum_fold(fp_accum *a, const fp_sums *s)
     a->texels += s->n;
 }
 
-/* Prefetch the lines of texels ilo … ilo + ncol − 1 of row j of level lv
- * (the part inside the level; wrapped parts are left to the hardware). The
- * footprint filters call it from their counting pass, which finds every
- * row's span before any texel is read: the rows' misses then overlap
- * instead of arriving one row at a time. Only a hint: results unchanged. */
-SAMPLE_FORCE_INLINE void fp_prefetch_span(const sample_ctx *c, int lv, double j, double ilo, double ncol)
-{
-    const struct sample_level *L = &c->tex->level[lv];
-    const unsigned char *row;
-    size_t o, last;
-    double lo = ilo < 0.0 ? 0.0 : ilo, hi = ilo + ncol - 1.0;
-    if (!(j >= 0.0 && j < (double)L->h) || !(ncol > 0.0)) return;
-    if (hi > (double)(L->w - 1)) hi = (double)(L->w - 1);
-    if (!(lo <= hi)) return;
-    row = L->data + (size_t)j * L->stride;
-    last = ((size_t)hi + 1) * c->tex->texel_bytes - 1;
-    for (o = (size_t)lo * c->tex->texel_bytes; o < last; o += 64) SAMPLE_PREFETCH(row + o);
-    SAMPLE_PREFETCH(row + last);
-}
-
 /* A query's Jacobian as the footprint filters hold it: rows s, t; columns
  * x, y (J[0] = (ds/dx, ds/dy), J[1] = (dt/dx, dt/dy)). */
 static inline void fp_query_jacobian(const sample_query *q, double J[2][2])
@@ -155,6 +135,82 @@ static inline void fp_query_jacobian(const sample_query *q, double J[2][2])
     J[0][1] = q->dsdy;
     J[1][0] = q->dtdx;
     J[1][1] = q->dtdy;
+}
+
+/* A level's rows as the footprint filters walk them. A walk row is a row of
+ * the level, or, when the footprint is taller than it is wide, a column
+ * (`tr`): the walk costs per row about as much as per texel (the span, its
+ * memo, the loop; doc/performance.md, ninth pass), and an ellipse steeper
+ * than 45° has fewer columns than rows. In the walk's frame everything is
+ * named as for rows: walk row j (jlo … jlo + nrows − 1) holds texels ilo,
+ * ilo + 1, … `pitch` bytes apart, walk rows are `lstride` bytes apart,
+ * `wlim` texels long and there are `hlim` of them in the level; the
+ * centre is (u0, v0) along and across walk rows. Spans come from the
+ * counting pass (sp; span and lg find those past FP_SPAN_MEMO again,
+ * fp_row_span). */
+typedef double (*fp_span_fn)(const void *level_geom, double dv, double *ilo);
+typedef struct fp_level_rows {
+    const sample_ctx *c;
+    const struct fp_spans *sp;
+    fp_span_fn span;
+    const void *lg;
+    int lv, nrows, tr;
+    double jlo, u0, v0, wlim, hlim;
+    size_t pitch, lstride;
+} fp_level_rows;
+
+/* lr for level lv walked by rows (tr = 0) or by columns (tr = 1); u0, v0
+ * and jlo already in the walk's frame (u0 along a walk row). */
+SAMPLE_FORCE_INLINE void fp_level_rows_init(fp_level_rows *lr, const sample_ctx *c, const struct fp_spans *sp,
+                                            fp_span_fn span, const void *lg, int lv, int tr, double nrows,
+                                            double jlo, double u0, double v0)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    const size_t tb = c->tex->texel_bytes;
+    lr->c = c;
+    lr->sp = sp;
+    lr->span = span;
+    lr->lg = lg;
+    lr->lv = lv;
+    lr->nrows = nrows <= (double)SAMPLE_MAX_FOOTPRINT_TEXELS ? (int)nrows : 0;
+    lr->tr = tr;
+    lr->jlo = jlo;
+    lr->u0 = u0;
+    lr->v0 = v0;
+    lr->wlim = (double)(tr ? L->h : L->w);
+    lr->hlim = (double)(tr ? L->w : L->h);
+    lr->pitch = tr ? L->stride : tb;
+    lr->lstride = tr ? tb : L->stride;
+}
+
+/* Prefetch texels ilo … ilo + ncol − 1 of walk row j (the part inside the
+ * level; wrapped parts are left to the hardware). The footprint filters
+ * call it from their counting pass, which finds every row's span before
+ * any texel is read: the rows' misses then overlap instead of arriving one
+ * row at a time. Only a hint: results unchanged. Along a level row every
+ * line, along a column every texel. */
+SAMPLE_FORCE_INLINE void fp_prefetch_texels(const fp_level_rows *lr, const unsigned char *at, double ncol)
+{
+    if (lr->tr) {
+        size_t k;
+        for (k = 0; k < (size_t)ncol; ++k) SAMPLE_PREFETCH(at + k * lr->pitch);
+    } else {
+        /* The first texel's line, then every line start up to the last
+         * byte. */
+        uintptr_t o = ((uintptr_t)at & ~(uintptr_t)63) + 64, end = (uintptr_t)at + (size_t)ncol * lr->pitch;
+        SAMPLE_PREFETCH(at);
+        for (; o < end; o += 64) SAMPLE_PREFETCH((const void *)o);
+    }
+}
+
+SAMPLE_FORCE_INLINE void fp_prefetch_span(const fp_level_rows *lr, double j, double ilo, double ncol)
+{
+    const struct sample_level *L = &lr->c->tex->level[lr->lv];
+    double lo = ilo < 0.0 ? 0.0 : ilo, hi = ilo + ncol - 1.0;
+    if (!(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
+    if (hi > lr->wlim - 1.0) hi = lr->wlim - 1.0;
+    if (!(lo <= hi)) return;
+    fp_prefetch_texels(lr, L->data + (size_t)j * lr->lstride + (size_t)lo * lr->pitch, hi - lo + 1.0);
 }
 
 /* A level's row spans, found by the counting pass and kept for the
@@ -169,20 +225,24 @@ typedef struct fp_spans {
     const unsigned char *at[FP_SPAN_MEMO]; /* fp_span_at */
 } fp_spans;
 
-/* The address of texel ilo of row j of level lv when texels ilo … ilo +
- * ncol − 1 all lie inside the level (then every wrap mode reads them
- * there, ctx_texel's own shortcut), NULL otherwise. */
-SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const sample_ctx *c, int lv, double j, double ilo, double ncol)
+/* Whether texels ilo … ilo + ncol − 1 of walk row j all lie inside the
+ * level (then every wrap mode reads them there, ctx_texel's own shortcut);
+ * fp_span_at: the first one's address then, NULL otherwise. */
+SAMPLE_FORCE_INLINE int fp_span_inside(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
-    const struct sample_level *L = &c->tex->level[lv];
-    if (j >= 0.0 && j < (double)L->h && ilo >= 0.0 && ilo + ncol <= (double)L->w)
-        return L->data + (size_t)(long)j * L->stride + (size_t)(long)ilo * c->tex->texel_bytes;
+    return j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim;
+}
+
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const fp_level_rows *lr, double j, double ilo, double ncol)
+{
+    if (fp_span_inside(lr, j, ilo, ncol))
+        return lr->c->tex->level[lr->lv].data + (size_t)(long)j * lr->lstride + (size_t)(long)ilo * lr->pitch;
     return NULL;
 }
 
-/* Keep row r's span (row j, texels ilo … ilo + ncol − 1, address at or
- * NULL: fp_span_at) for the accumulating pass and prefetch its lines. */
-SAMPLE_FORCE_INLINE void fp_span_keep(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
+/* Keep row r's span (walk row j, texels ilo … ilo + ncol − 1, address at
+ * or NULL: fp_span_at) for the accumulating pass and prefetch it. */
+SAMPLE_FORCE_INLINE void fp_span_keep(const fp_level_rows *lr, fp_spans *sp, int r, double j, double ilo,
                                       double ncol, const unsigned char *at)
 {
     if (r < FP_SPAN_MEMO) {
@@ -190,140 +250,130 @@ SAMPLE_FORCE_INLINE void fp_span_keep(const sample_ctx *c, int lv, fp_spans *sp,
         sp->ncol[r] = ncol;
         sp->at[r] = at;
     }
-    if (at) {
-        /* The first texel's line, then every line start up to the last
-         * byte (all inside the span). */
-        uintptr_t o = ((uintptr_t)at & ~(uintptr_t)63) + 64, end = (uintptr_t)at + (size_t)ncol * c->tex->texel_bytes;
-        SAMPLE_PREFETCH(at);
-        for (; o < end; o += 64) SAMPLE_PREFETCH((const void *)o);
-    } else {
-        fp_prefetch_span(c, lv, j, ilo, ncol);
-    }
+    if (at) fp_prefetch_texels(lr, at, ncol);
+    else fp_prefetch_span(lr, j, ilo, ncol);
 }
 
-/* The counting pass's step for row r: keep the span (fp_span_keep), add it
- * to *total; nonzero once the total is over the cap (the caller then moves
- * to a coarser level). Every row is bounded by the cap before any texel is
- * read. */
-SAMPLE_FORCE_INLINE int fp_span_count(const sample_ctx *c, int lv, fp_spans *sp, int r, double j, double ilo,
-                                      double ncol, double cap, double *total)
-{
-    fp_span_keep(c, lv, sp, r, j, ilo, ncol, ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, ilo, ncol) : NULL);
-    *total += ncol;
-    return *total > cap;
-}
-
-/* A filter's row bounds: the span of texel indices on the row dv texels
- * from the level's centre (*ilo, returns the count; 0 if none). */
-typedef double (*fp_span_fn)(const void *level_geom, double dv, double *ilo);
-
-/* The counting pass of a level of nrows rows from jlo (fp_span_count on
- * each); returns the texels, or INFINITY once over the cap. Generic over
- * the filter's span function, inlined with it (zstd style). */
-SAMPLE_FORCE_INLINE double fp_count_rows(const sample_ctx *c, int lv, fp_spans *sp, fp_span_fn span,
-                                         const void *lg, double jlo, double v0, int nrows, double cap)
+/* The counting pass of a level (every row: its span, kept and prefetched,
+ * fp_span_keep); returns the texels, or INFINITY once over the cap: every
+ * row is bounded by the cap before any texel is read. Generic over the
+ * filter's span function, inlined with it (zstd style). */
+SAMPLE_FORCE_INLINE double fp_count_rows(const fp_level_rows *lr, fp_spans *sp, double cap)
 {
     double total = 0.0;
     int r;
     sp->n = 0;
-    for (r = 0; r < nrows; ++r) {
-        double j = jlo + r, ilo = 0.0, ncol = span(lg, j - v0, &ilo);
-        if (fp_span_count(c, lv, sp, r, j, ilo, ncol, cap, &total)) return INFINITY;
+    for (r = 0; r < lr->nrows; ++r) {
+        double j = lr->jlo + r, ilo = 0.0, ncol = lr->span(lr->lg, j - lr->v0, &ilo);
+        fp_span_keep(lr, sp, r, j, ilo, ncol, ncol > 0.0 && ncol <= cap ? fp_span_at(lr, j, ilo, ncol) : NULL);
+        total += ncol;
+        if (total > cap) return INFINITY;
     }
-    sp->n = nrows < FP_SPAN_MEMO ? nrows : FP_SPAN_MEMO;
+    sp->n = lr->nrows < FP_SPAN_MEMO ? lr->nrows : FP_SPAN_MEMO;
     return total;
 }
 
 /* Row r's span in the accumulating pass: the one the count stored, or
  * (past FP_SPAN_MEMO rows) found again; its address in *at (fp_span_at). */
-SAMPLE_FORCE_INLINE double fp_row_span(const sample_ctx *c, int lv, const fp_spans *sp, fp_span_fn span,
-                                       const void *lg, int r, double j, double dv, double cap, double *ilo,
+SAMPLE_FORCE_INLINE double fp_row_span(const fp_level_rows *lr, int r, double j, double dv, double cap, double *ilo,
                                        const unsigned char **at)
 {
     double ncol;
-    if (r < sp->n) {
-        *ilo = sp->ilo[r];
-        *at = sp->at[r];
-        return sp->ncol[r];
+    if (r < lr->sp->n) {
+        *ilo = lr->sp->ilo[r];
+        *at = lr->sp->at[r];
+        return lr->sp->ncol[r];
     }
-    ncol = span(lg, dv, ilo);
-    *at = ncol > 0.0 && ncol <= cap ? fp_span_at(c, lv, j, *ilo, ncol) : NULL;
+    ncol = lr->span(lr->lg, dv, ilo);
+    *at = ncol > 0.0 && ncol <= cap ? fp_span_at(lr, j, *ilo, ncol) : NULL;
     return ncol;
 }
 
-/* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of row j of
- * level lv as float RGBA, 16 bytes apart from the returned pointer, exactly
- * as ctx_texel reads them (linear rule): a float RGBA span inside the level
+/* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of walk row
+ * j as float RGBA, *pitch bytes apart from the returned pointer, exactly as
+ * ctx_texel reads them (linear rule): a float RGBA span inside the level
  * (at, fp_span_at) in place (nothing to decode), another span inside the
- * level decoded in one go by the format's reader (tex_readers) into buf,
- * anything else texel by texel through ctx_texel into buf. Load with
- * memcpy. */
-SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const sample_ctx *c, int lv, double j, double ilo, int n,
-                                                        const unsigned char *at, float (*buf)[4])
+ * level decoded in one go by the format's reader (tex_readers) into buf, anything else texel by texel
+ * through ctx_texel into buf (pitch 16). Load with memcpy. */
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr, double j, double ilo, int n,
+                                                        const unsigned char *at, float (*buf)[4], size_t *pitch)
 {
+    const sample_ctx *c = lr->c;
     int k;
+    *pitch = 16;
     if (at) {
-        if (c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4) return at;
-        tex_readers_of(c->tex)->row(at, n, buf);
+        if (c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4) {
+            *pitch = lr->pitch;
+            return at;
+        }
+        tex_readers_of(c->tex)->row(at, lr->pitch, n, buf);
+    } else if (!lr->tr) {
+        for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
     } else {
-        for (k = 0; k < n; ++k) ctx_texel(c, lv, ilo + k, j, 1, buf[k]);
+        for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, j, ilo + k, 1, buf[k]);
     }
     return (const unsigned char *)buf;
 }
 
-/* One level's rows as the level kernels (fp_row_kernels) walk them: nrows
- * rows from jlo, spans from the counting pass (sp; span and lg find those
- * past FP_SPAN_MEMO again, fp_row_span), centre (u0, v0) on level lv. */
-typedef struct fp_level_rows {
-    const sample_ctx *c;
-    const fp_spans *sp;
-    fp_span_fn span;
-    const void *lg;
-    int lv, nrows;
-    double jlo, u0, v0;
-} fp_level_rows;
-
 /* The accumulating pass's walk over a level's rows: each row with texels
- * (fp_row_span) handed to row() with its texels as float RGBA 16 bytes
- * apart (fp_span_texels, decoded into buf where needed), their count, the
- * first one's column ilo and the row's offset dv = (jlo + r) − v0 from the
- * centre. Generic over row(), inlined with it (zstd style). */
-typedef void (*fp_row_fn)(void *ctx, const unsigned char *p, int n, double ilo, double dv);
+ * (fp_row_span) handed to row() with its texels as float RGBA `pitch`
+ * bytes apart (fp_span_texels, decoded into buf where needed), their
+ * count, the first one's column ilo and the row's offset dv = (jlo + r) −
+ * v0 from the centre, all in the walk's frame. Generic over row(), inlined
+ * with it (zstd style). */
+typedef void (*fp_row_fn)(void *ctx, const unsigned char *p, size_t pitch, int n, double ilo, double dv);
 SAMPLE_FORCE_INLINE void fp_level_walk(const fp_level_rows *lr, float (*buf)[4], void *ctx, fp_row_fn row)
 {
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     int r;
     for (r = 0; r < lr->nrows; ++r) {
         double j = lr->jlo + r, dv = j - lr->v0, ilo = 0.0, ncol;
-        const unsigned char *at;
-        ncol = fp_row_span(lr->c, lr->lv, lr->sp, lr->span, lr->lg, r, j, dv, cap, &ilo, &at);
+        const unsigned char *at, *p;
+        size_t pitch;
+        ncol = fp_row_span(lr, r, j, dv, cap, &ilo, &at);
         if (ncol > cap) break; /* unreachable after a successful count */
         if (!(ncol > 0.0)) continue;
-        row(ctx, fp_span_texels(lr->c, lr->lv, j, ilo, (int)ncol, at, buf), (int)ncol, ilo, dv);
+        p = fp_span_texels(lr, j, ilo, (int)ncol, at, buf, &pitch);
+        row(ctx, p, pitch, (int)ncol, ilo, dv);
     }
 }
 
 /* A pass of fp_accum_add over a level (the filters' derivative passes,
  * Blinn–Newell's quad pass): what every filter's row function needs, the
  * first member of the filter's own state (so that a pointer to one is a
- * pointer to the other): the sums, the centre's column u0, ∂u0/∂s and
- * ∂v0/∂t (ku, kv: the level's size, negative where mirrored) and the
- * texels added. fp_pass_run walks the level with row() and returns them. */
+ * pointer to the other): the sums, the centre's u0 along a walk row, the
+ * derivatives of the walk frame's centre (u0, v0) by the query's own
+ * coordinates (ku, kv: the level's size, negative where mirrored; swapped
+ * when the walk rows are columns), whether they are (tr) and the texels
+ * added. fp_pass_run walks the level with row() and returns them. */
 typedef struct fp_pass {
     fp_accum *acc;
     double u0, ku, kv, total;
+    int tr;
 } fp_pass;
 
+/* ku, kv: ∂u0/∂s and ∂v0/∂t of the level's own (row-major) centre. */
 SAMPLE_FORCE_INLINE double fp_pass_run(fp_pass *ps, const fp_level_rows *lr, float (*buf)[4], fp_accum *acc,
                                        double ku, double kv, fp_row_fn row)
 {
     ps->acc = acc;
     ps->u0 = lr->u0;
-    ps->ku = ku;
-    ps->kv = kv;
+    ps->tr = lr->tr;
+    ps->ku = lr->tr ? kv : ku;
+    ps->kv = lr->tr ? ku : kv;
     ps->total = 0.0;
     fp_level_walk(lr, buf, ps, row);
     return ps->total;
+}
+
+/* A row function's texel: weight w, its derivatives by the walk frame's
+ * u and v (dwdu, dwdv: ∂w/∂(centre) already times ps->ku, ps->kv), added
+ * as ∂/∂s and ∂/∂t. */
+SAMPLE_FORCE_INLINE void fp_pass_add(fp_pass *ps, double w, double dwdu, double dwdv, const float T[4])
+{
+    if (ps->tr) fp_accum_add(ps->acc, w, dwdv, dwdu, T);
+    else fp_accum_add(ps->acc, w, dwdu, dwdv, T);
+    ps->total += 1.0;
 }
 
 /* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)

@@ -28,8 +28,9 @@
 typedef struct bn_level_geom {
     int lv;   /* −1: empty */
     int fail; /* the level cannot be filtered (unbounded or singular) */
-    double u0, v0, ku, kv, jlo, nrows;
-    double M[2][2];    /* parallelogram: J′⁻¹ (texel offset → screen) */
+    double ku, kv, nrows;
+    fp_level_rows lr;  /* the walk (a parallelogram taller than wide: by columns) */
+    double M[2][2];    /* parallelogram: J′⁻¹ (walk-frame texel offset → screen) */
     double P[4];       /* parallelogram: |M₀₀|, ±M₀₁, |M₁₀|, ±M₁₁ (the sign of M·₀) */
     double G[3][3];    /* quad: the pulled-back inverse homography */
     double V[4][2];    /* quad: the widened support's corners */
@@ -46,6 +47,10 @@ typedef struct bn_geom {
     fp_shape base;       /* of J on the base level (the level choice's) */
     bn_level_geom *memo; /* two entries, by the level's parity */
 } bn_geom;
+
+/* Each level's span functions (fp_span_fn), named in its walk (fp_level_rows). */
+static double bn_affine_span_fn(const void *lg, double dv, double *ilo);
+static double bn_quad_span_fn(const void *lg, double dv, double *ilo);
 
 /* w = (1 − |x|)(1 − |y|) on the open square and its gradient; at a crease
  * the gradient is the average of both sides (sign 0). */
@@ -90,13 +95,13 @@ static double row_span(double u0, double lo, double hi, double *ilo)
 static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double J[2][2], Jw[2][2], det, ext;
-    int fs, ft;
+    double J[2][2], Jw[2][2], det, ext, uext, u0, v0, jlo;
+    int fs, ft, tr;
     fp_shape d;
 
     e->lv = lv;
     e->fail = 0;
-    fp_center(c, lv, g->s, g->t, &e->u0, &e->v0, &fs, &ft);
+    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     fp_level_jacobian(c, lv, g->J, fs, ft, J);
     /* ∂u0/∂s (negative on a mirrored axis). */
     e->ku = fs ? -(double)L->w : (double)L->w;
@@ -105,18 +110,30 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
      * M = J′⁻¹ by its adjugate; det J′ = ±√(σ0² + 1)·√(σ1² + 1) ≠ 0. */
     fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
     det = fp_shape_reshape(&d, 1.0, Jw);
-    e->M[0][0] = Jw[1][1] / det;
-    e->M[0][1] = -Jw[0][1] / det;
-    e->M[1][0] = -Jw[1][0] / det;
-    e->M[1][1] = Jw[0][0] / det;
+    /* The parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v and
+     * |J′₀₀| + |J′₀₁| in u: walked along whichever axis has fewer lines
+     * (fp_level_rows), by columns when it is narrower than tall, with u
+     * and v exchanged (M's columns too). */
+    ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
+    uext = fabs(Jw[0][0]) + fabs(Jw[0][1]);
+    tr = uext < ext;
+    if (tr) {
+        double t = u0;
+        u0 = v0;
+        v0 = t;
+        ext = uext;
+    }
+    e->M[0][tr] = Jw[1][1] / det;
+    e->M[0][!tr] = -Jw[0][1] / det;
+    e->M[1][tr] = -Jw[1][0] / det;
+    e->M[1][!tr] = Jw[0][0] / det;
     e->P[0] = fabs(e->M[0][0]);
     e->P[1] = e->M[0][0] < 0.0 ? -e->M[0][1] : e->M[0][1];
     e->P[2] = fabs(e->M[1][0]);
     e->P[3] = e->M[1][0] < 0.0 ? -e->M[1][1] : e->M[1][1];
-    /* Rows: the parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v. */
-    ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
-    e->jlo = fp_ceil(e->v0 - ext);
-    e->nrows = fp_floor(e->v0 + ext) - e->jlo + 1.0;
+    jlo = fp_ceil(v0 - ext);
+    e->nrows = fp_floor(v0 + ext) - jlo + 1.0;
+    fp_level_rows_init(&e->lr, c, &e->spans, bn_affine_span_fn, e, lv, tr, e->nrows, jlo, u0, v0);
     e->spans.n = 0;
 }
 
@@ -128,10 +145,10 @@ static int bn_affine_sliced(const bn_level_geom *e) { return e->P[0] > 0.0 && e-
 static double bn_affine_span(const bn_level_geom *e, double dv, double *ilo)
 {
     double lo = -INFINITY, hi = INFINITY;
-    if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_span(e->P, e->u0, dv, ilo);
+    if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_span(e->P, e->lr.u0, dv, ilo);
     slab(e->M[0][0], e->M[0][1] * dv, &lo, &hi);
     slab(e->M[1][0], e->M[1][1] * dv, &lo, &hi);
-    return row_span(e->u0, lo, hi, ilo);
+    return row_span(e->lr.u0, lo, hi, ilo);
 }
 
 /* bn_affine_span as an fp_span_fn. */
@@ -144,7 +161,7 @@ typedef struct bn_affine_deriv {
     double M[2][2];
 } bn_affine_deriv;
 
-static void bn_affine_deriv_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
+static void bn_affine_deriv_row(void *dp, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
     bn_affine_deriv *d = (bn_affine_deriv *)dp;
     double(*M)[2] = d->M;
@@ -154,11 +171,10 @@ static void bn_affine_deriv_row(void *dp, const unsigned char *p, int n, double 
         float t4[4];
         w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
         if (w <= 0.0) continue;
-        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
         /* w depends on c − u0: ∂w/∂u0 = −(gx·M₀₀ + gy·M₁₀). */
-        fp_accum_add(d->ps.acc, w, -(gx * M[0][0] + gy * M[1][0]) * d->ps.ku, -(gx * M[0][1] + gy * M[1][1]) * d->ps.kv,
-                     t4);
-        d->ps.total += 1.0;
+        fp_pass_add(&d->ps, w, -(gx * M[0][0] + gy * M[1][0]) * d->ps.ku, -(gx * M[0][1] + gy * M[1][1]) * d->ps.kv,
+                    t4);
     }
 }
 
@@ -169,15 +185,13 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     bn_level_geom *e = &g->memo[lv & 1];
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
-    fp_level_rows lr;
     bn_affine_deriv d;
 
     if (e->lv != lv) bn_affine_setup(c, g, lv, e);
     if (!(e->nrows <= cap)) return INFINITY;
-    lr = (fp_level_rows){c, &e->spans, bn_affine_span_fn, e, lv, (int)e->nrows, e->jlo, e->u0, e->v0};
     if (count_only) {
-        if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_count(&lr, &e->spans, e->P);
-        return fp_count_rows(c, lv, &e->spans, bn_affine_span_fn, e, e->jlo, e->v0, lr.nrows, cap);
+        if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_count(&e->lr, &e->spans, e->P);
+        return fp_count_rows(&e->lr, &e->spans, cap);
     }
     if (!acc->deriv) {
         /* The pyramid alone, the level at once (footprint_rows.c), sums in
@@ -185,12 +199,12 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
          * w > 0 there (M and du are finite, fp_shape_reshape: det J′ =
          * ±t0·t1, t ≥ 1). */
         fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-        isa_kernels_active()->rows->bn_level(&sm, &lr, (const double(*)[2])e->M);
+        isa_kernels_active()->rows->bn_level(&sm, &e->lr, (const double(*)[2])e->M);
         fp_accum_fold(acc, &sm);
         return sm.n;
     }
     memcpy(d.M, e->M, sizeof d.M);
-    return fp_pass_run(&d.ps, &lr, T, acc, e->ku, e->kv, bn_affine_deriv_row);
+    return fp_pass_run(&d.ps, &e->lr, T, acc, e->ku, e->kv, bn_affine_deriv_row);
 }
 
 /* ---- General quadrilateral (exact corners): the projective map --------- */
@@ -222,13 +236,13 @@ static void hull_row(const double H[4][2], double dv, double *lo, double *hi)
 static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax, J[2][2], Jw[2][2], dw, dj;
+    double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax, J[2][2], Jw[2][2], dw, dj, u0, v0, jlo;
     int fs, ft, k, i;
     fp_shape sh;
 
     e->lv = lv;
     e->fail = 1;
-    fp_center(c, lv, g->s, g->t, &e->u0, &e->v0, &fs, &ft);
+    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     ku = e->ku = fs ? -(double)L->w : (double)L->w;
     kv = e->kv = ft ? -(double)L->h : (double)L->h;
     /* The homography in texels of this level: rows (u, v) scaled, w kept. */
@@ -295,8 +309,10 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
         vmin = fmin(vmin, e->V[k][1]);
         vmax = fmax(vmax, e->V[k][1]);
     }
-    e->jlo = fp_ceil(e->v0 + vmin);
-    e->nrows = fp_floor(e->v0 + vmax) - e->jlo + 1.0;
+    /* Walked by the level's rows (the hull's rows, hull_row). */
+    jlo = fp_ceil(v0 + vmin);
+    e->nrows = fp_floor(v0 + vmax) - jlo + 1.0;
+    fp_level_rows_init(&e->lr, c, &e->spans, bn_quad_span_fn, e, lv, 0, e->nrows, jlo, u0, v0);
     e->spans.n = 0;
     e->fail = 0;
 }
@@ -306,7 +322,7 @@ static double bn_quad_span(const bn_level_geom *e, double dv, double *ilo)
 {
     double lo, hi;
     hull_row(e->V, dv, &lo, &hi);
-    return row_span(e->u0, lo, hi, ilo);
+    return row_span(e->lr.u0, lo, hi, ilo);
 }
 
 /* bn_quad_span as an fp_span_fn. */
@@ -320,7 +336,7 @@ typedef struct bn_quad_pass {
     int area;
 } bn_quad_pass;
 
-static void bn_quad_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
+static void bn_quad_row(void *dp, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
     bn_quad_pass *d = (bn_quad_pass *)dp;
     double(*G)[3] = d->G;
@@ -360,9 +376,8 @@ static void bn_quad_row(void *dp, const unsigned char *p, int n, double ilo, dou
             wv = m * wv + w * mv;
             w *= m;
         }
-        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
-        fp_accum_add(d->ps.acc, w, -wu * d->ps.ku, -wv * d->ps.kv, t4);
-        d->ps.total += 1.0;
+        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
+        fp_pass_add(&d->ps, w, -wu * d->ps.ku, -wv * d->ps.kv, t4);
     }
 }
 
@@ -372,13 +387,11 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     bn_level_geom *e = &g->memo[lv & 1];
     float tx[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
-    fp_level_rows lr;
     bn_quad_pass d;
 
     if (e->lv != lv) bn_quad_setup(c, g, lv, e);
     if (e->fail || !(e->nrows <= cap)) return INFINITY;
-    if (count_only) return fp_count_rows(c, lv, &e->spans, bn_quad_span_fn, e, e->jlo, e->v0, (int)e->nrows, cap);
-    lr = (fp_level_rows){c, &e->spans, bn_quad_span_fn, e, lv, (int)e->nrows, e->jlo, e->u0, e->v0};
+    if (count_only) return fp_count_rows(&e->lr, &e->spans, cap);
     /* Area weighting (SAMPLE_OPT_BN_AREA_WEIGHT): the DESIGN §8 truth is
      * ∫ pyr(x, y)·T(H(x, y)) dx dy = ∫ pyr(H⁻¹(u))·T(u) / |det DH| du, so
      * each texel's weight is divided by |det DH| at its preimage. For a
@@ -393,7 +406,7 @@ static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accu
     memcpy(d.G, e->G, sizeof d.G);
     d.wlo = g->wlo;
     d.whi = g->whi;
-    return fp_pass_run(&d.ps, &lr, tx, acc, e->ku, e->kv, bn_quad_row);
+    return fp_pass_run(&d.ps, &e->lr, tx, acc, e->ku, e->kv, bn_quad_row);
 }
 
 /* ---- Entry --------------------------------------------------------------- */

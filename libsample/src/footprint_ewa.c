@@ -61,8 +61,10 @@ const double fp_ewa_lut[129] = {
 typedef struct ewa_level_geom {
     int lv; /* −1: empty */
     int fs, ft;
-    double u0, v0, abc[3], jlo, nrows, ku, kv; /* abc: A, B, C normalized */
-    fp_spans spans; /* rows found by the counting pass */
+    double nrows, ku, kv;
+    double abc[3];    /* A, B, C normalized, in the walk's frame */
+    fp_level_rows lr; /* the walk (by columns when the ellipse is steep) */
+    fp_spans spans;   /* rows found by the counting pass */
 } ewa_level_geom;
 
 typedef struct ewa_geom {
@@ -72,14 +74,17 @@ typedef struct ewa_geom {
     ewa_level_geom *memo; /* two entries, by the level's parity */
 } ewa_geom;
 
+static double ewa_span_fn(const void *lg, double dv, double *ilo);
+
 static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double J[2][2], A, B, C, F;
+    double J[2][2], A, B, C, F, u0, v0, a, cc, jlo;
     fp_shape d;
+    int tr;
 
     e->lv = lv;
-    fp_center(c, lv, g->s, g->t, &e->u0, &e->v0, &e->fs, &e->ft);
+    fp_center(c, lv, g->s, g->t, &u0, &v0, &e->fs, &e->ft);
     fp_level_jacobian(c, lv, g->J, e->fs, e->ft, J);
     /* Clamp ellipse eccentricity (on the singular values, so the clamp is
      * the same for every pair of columns spanning the same ellipse); an
@@ -94,25 +99,35 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     B = -2.0 * (J[0][0] * J[1][0] + J[0][1] * J[1][1]);
     C = J[0][0] * J[0][0] + J[0][1] * J[0][1] + 1.0;
     F = A * C - 0.25 * B * B;
-    /* Row extent: the inverse of the normalized quadratic form is
-     * [[C, −B/2], [−B/2, A]] before scaling, so |dv| ≤ √A. */
-    e->jlo = fp_ceil(e->v0 - sqrt(A));
-    e->nrows = fp_floor(e->v0 + sqrt(A)) - e->jlo + 1.0;
-    e->abc[0] = A / F;
+    /* Extents: the inverse of the normalized quadratic form is
+     * [[C, −B/2], [−B/2, A]] before scaling, so |dv| ≤ √A and |du| ≤ √C.
+     * Walked along whichever axis has fewer lines (fp_level_rows): by
+     * columns when C < A, with u and v exchanged (A and C too; B·du·dv and
+     * F are symmetric). */
+    tr = C < A;
+    a = tr ? C : A;
+    cc = tr ? A : C;
+    if (tr) {
+        double t = u0;
+        u0 = v0;
+        v0 = t;
+    }
+    jlo = fp_ceil(v0 - sqrt(a));
+    e->nrows = fp_floor(v0 + sqrt(a)) - jlo + 1.0;
+    e->abc[0] = a / F;
     e->abc[1] = B / F;
-    e->abc[2] = C / F;
+    e->abc[2] = cc / F;
+    fp_level_rows_init(&e->lr, c, &e->spans, ewa_span_fn, e, lv, tr, e->nrows, jlo, u0, v0);
     e->spans.n = 0;
 }
 
 /* Row dv's span: the columns where A·du² + B·dv·du + C·dv² < 1
  * (footprint_rows.c, ewa_bounds). */
-static double ewa_span(const ewa_level_geom *m, double dv, double *ilo)
+static double ewa_span_fn(const void *lg, double dv, double *ilo)
 {
-    return isa_kernels_active()->rows->ewa_span(m->abc, m->u0, dv, ilo);
+    const ewa_level_geom *m = (const ewa_level_geom *)lg;
+    return isa_kernels_active()->rows->ewa_span(m->abc, m->lr.u0, dv, ilo);
 }
-
-/* ewa_span as an fp_span_fn. */
-static double ewa_span_fn(const void *lg, double dv, double *ilo) { return ewa_span((const ewa_level_geom *)lg, dv, ilo); }
 
 /* The derivative pass of an ellipse level: each texel's weight and its
  * gradient (fp_level_walk's row). */
@@ -121,7 +136,7 @@ typedef struct ewa_deriv {
     double A, B, C;
 } ewa_deriv;
 
-static void ewa_deriv_row(void *dp, const unsigned char *p, int n, double ilo, double dv)
+static void ewa_deriv_row(void *dp, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
     ewa_deriv *d = (ewa_deriv *)dp;
     const double A = d->A, B = d->B, C = d->C;
@@ -133,11 +148,9 @@ static void ewa_deriv_row(void *dp, const unsigned char *p, int n, double ilo, d
         if (!(r2 < 1.0)) continue;
         w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, &dw);
         if (w <= 0.0) continue;
-        memcpy(t4, p + 16 * (size_t)k, sizeof t4);
+        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
         /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */
-        fp_accum_add(d->ps.acc, w, -dw * (2.0 * A * du + B * dv) * d->ps.ku, -dw * (B * du + 2.0 * C * dv) * d->ps.kv,
-                     t4);
-        d->ps.total += 1.0;
+        fp_pass_add(&d->ps, w, -dw * (2.0 * A * du + B * dv) * d->ps.ku, -dw * (B * du + 2.0 * C * dv) * d->ps.kv, t4);
     }
 }
 
@@ -147,25 +160,23 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     ewa_level_geom *m = &g->memo[lv & 1];
     float T[SAMPLE_MAX_FOOTPRINT_TEXELS][4]; /* one row's texels, where decoded */
-    fp_level_rows lr;
     ewa_deriv d;
 
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
     if (!(m->nrows <= cap)) return INFINITY;
-    lr = (fp_level_rows){c, &m->spans, ewa_span_fn, m, lv, (int)m->nrows, m->jlo, m->u0, m->v0};
-    if (count_only) return isa_kernels_active()->rows->ewa_count(&lr, &m->spans, m->abc);
+    if (count_only) return isa_kernels_active()->rows->ewa_count(&m->lr, &m->spans, m->abc);
     if (!acc->deriv) {
         /* The weight alone, the level at once (footprint_rows.c), sums in
          * registers. */
         fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-        isa_kernels_active()->rows->ewa_level(&sm, &lr, m->abc);
+        isa_kernels_active()->rows->ewa_level(&sm, &m->lr, m->abc);
         fp_accum_fold(acc, &sm);
         return sm.n;
     }
     d.A = m->abc[0];
     d.B = m->abc[1];
     d.C = m->abc[2];
-    return fp_pass_run(&d.ps, &lr, T, acc, m->ku, m->kv, ewa_deriv_row);
+    return fp_pass_run(&d.ps, &m->lr, T, acc, m->ku, m->kv, ewa_deriv_row);
 }
 
 /* A plan's geometry: the query's, and its two levels' memos. */

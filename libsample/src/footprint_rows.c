@@ -71,12 +71,12 @@ static inline void sums_store(fp_sums *s, const sums_reg *r)
  * are masked to +0 rather than skipped: +0 added to a sum that started at
  * +0 leaves it unchanged (round-to-nearest never makes −0 from a +0
  * start), and so does adding its weight to Σw. */
-static inline void sums_chunk(sums_reg *r, d4 w, const unsigned char *p, int e)
+static inline void sums_chunk(sums_reg *r, d4 w, const unsigned char *p, size_t pitch, int e)
 {
     const l4 live = (d4){0.0, 1.0, 2.0, 3.0} < d4_set1((double)e), in = w > 0.0, out = live & ~in;
     int j, all = _mm256_testz_si256((__m256i)out, (__m256i)out);
     for (j = 0; j < e; ++j) {
-        d4 wv = d4_set1(w[j]), t = _mm256_cvtps_pd(_mm_loadu_ps((const float *)(const void *)(p + 16 * (size_t)j)));
+        d4 wv = d4_set1(w[j]), t = _mm256_cvtps_pd(_mm_loadu_ps((const float *)(const void *)(p + pitch * (size_t)j)));
         if (all)
             r->t += wv * t;
         else
@@ -151,10 +151,10 @@ static inline lanes lanes_ewa_lut(lanes x)
 static inline void sums_load(sums_reg *r, const fp_sums *s) { *r = *s; }
 static inline void sums_store(fp_sums *s, const sums_reg *r) { *s = *r; }
 /* The one texel at p when w > 0 (w is ≥ +0 and not NaN). */
-static inline void sums_chunk(sums_reg *r, lanes w, const unsigned char *p, int e)
+static inline void sums_chunk(sums_reg *r, lanes w, const unsigned char *p, size_t pitch, int e)
 {
     float t4[4];
-    (void)e;
+    (void)e, (void)pitch;
     if (!(w > 0.0)) return;
     memcpy(t4, p, sizeof t4);
     fp_sums_add(r, w, t4);
@@ -253,8 +253,7 @@ SAMPLE_FORCE_INLINE double count_level(const fp_level_rows *lr, fp_spans *sp, co
 {
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
     const struct sample_level *L = &lr->c->tex->level[lr->lv];
-    const double w = (double)L->w, h = (double)L->h;
-    const size_t tb = lr->c->tex->texel_bytes;
+    const double w = lr->wlim, h = lr->hlim;
     double total = 0.0;
     int r, k;
     sp->n = 0;
@@ -264,8 +263,9 @@ SAMPLE_FORCE_INLINE double count_level(const fp_level_rows *lr, fp_spans *sp, co
         LANES_MASK in = lanes_lt(lanes_set1(0.0), ncol) & lanes_le(ncol, lanes_set1(cap)) & lanes_le(lanes_set1(0.0), j) &
                         lanes_lt(j, lanes_set1(h)) & lanes_le(lanes_set1(0.0), ilo) & lanes_le(ilo + ncol, lanes_set1(w));
         for (k = 0; k < LANES && r + k < lr->nrows; ++k) {
-            const unsigned char *at = LANE(in, k) ? L->data + (size_t)(long)LANE(j, k) * L->stride + (size_t)(long)LANE(ilo, k) * tb : NULL;
-            fp_span_keep(lr->c, lr->lv, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), at);
+            const unsigned char *at =
+                LANE(in, k) ? L->data + (size_t)(long)LANE(j, k) * lr->lstride + (size_t)(long)LANE(ilo, k) * lr->pitch : NULL;
+            fp_span_keep(lr, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), at);
             total += LANE(ncol, k);
         }
         if (total > cap) return INFINITY;
@@ -302,7 +302,7 @@ typedef struct walk_state {
 /* One row's texels weighted by the filter's weights and added texel by
  * texel in row order. Texel positions are the scalar filters' to the bit:
  * du = (ilo + k) − u0 (ilo and k integral, so ilo + k is exact). */
-SAMPLE_FORCE_INLINE void weigh_row(walk_state *ws, const unsigned char *p, int n, double ilo, double dv,
+SAMPLE_FORCE_INLINE void weigh_row(walk_state *ws, const unsigned char *p, size_t pitch, int n, double ilo, double dv,
                                    void (*consts)(const double *par, double dv, row_consts *rc),
                                    lanes (*weights)(const row_consts *rc, lanes du))
 {
@@ -311,17 +311,17 @@ SAMPLE_FORCE_INLINE void weigh_row(walk_state *ws, const unsigned char *p, int n
     int k;
     consts(ws->par, dv, &rc);
     for (k = 0; k < n; k += LANES, kk += (double)LANES)
-        sums_chunk(&ws->r, weights(&rc, (ilo + kk) - ws->u0), p + 16 * (size_t)k, n - k < LANES ? n - k : LANES);
+        sums_chunk(&ws->r, weights(&rc, (ilo + kk) - ws->u0), p + pitch * (size_t)k, pitch, n - k < LANES ? n - k : LANES);
 }
 
-static inline void bn_row(void *ws, const unsigned char *p, int n, double ilo, double dv)
+static inline void bn_row(void *ws, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
-    weigh_row((walk_state *)ws, p, n, ilo, dv, bn_consts, bn_weights);
+    weigh_row((walk_state *)ws, p, pitch, n, ilo, dv, bn_consts, bn_weights);
 }
 
-static inline void ewa_row(void *ws, const unsigned char *p, int n, double ilo, double dv)
+static inline void ewa_row(void *ws, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
-    weigh_row((walk_state *)ws, p, n, ilo, dv, ewa_consts, ewa_weights);
+    weigh_row((walk_state *)ws, p, pitch, n, ilo, dv, ewa_consts, ewa_weights);
 }
 
 /* Every row of one level (fp_level_walk) into *s, with sums in registers

@@ -216,11 +216,12 @@ typedef void (*fast_gl_fn)(const sample_ctx *c, const sample_batch_args *a);
 /* The fast path's readers for the other filters, one set per (format ×
  * channel count), chosen per query by tex_readers_of (a table look-up, so
  * that a sample_ctx needs no extra field):
- *   row       decodes n consecutive in-range texels at p (tex_decode_v4);
+ *   row       decodes n in-range texels at p, pitch bytes apart (a level
+ *             row or column; tex_decode_v4);
  *   bilinear  recon_level(c, lv, SAMPLE_LINEAR, s, t, …) bit for bit (the
  *             fast path's addressing; tests/test_fastpath.c). */
 typedef struct tex_readers {
-    void (*row)(const unsigned char *p, int n, float (*out)[4]);
+    void (*row)(const unsigned char *p, size_t pitch, int n, float (*out)[4]);
     uint32_t (*bilinear)(const sample_ctx *c, int lv, float s, float t, float out[4],
                          float dds[4], float ddt[4]);
 } tex_readers;
