@@ -357,8 +357,14 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
 SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, size_t pitch, int n,
                                     float (*out)[4])
 {
+    const size_t tb = texel_bytes(fmt, nc);
     int k;
-    for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * pitch));
+    /* A level row (pitch = texel size, a constant the loop is compiled
+     * for) or a column. */
+    if (pitch == tb)
+        for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * tb));
+    else
+        for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * pitch));
 }
 
 SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format fmt, int nc, int lv,

@@ -159,6 +159,13 @@ typedef struct fp_level_rows {
     size_t pitch, lstride;
 } fp_level_rows;
 
+/* Whether a footprint extending ±√u2 texels in u and ±√v2 in v is walked
+ * by columns: where that saves a quarter of the lines or more. Near round
+ * footprints keep the rows, whose prefetches cover a line at a time and
+ * whose texels other formats decode in one go (doc/performance.md, ninth
+ * pass). */
+static inline int fp_walk_columns(double u2, double v2) { return u2 < 0.5625 * v2; }
+
 /* lr for level lv walked by rows (tr = 0) or by columns (tr = 1); u0, v0
  * and jlo already in the walk's frame (u0 along a walk row). */
 SAMPLE_FORCE_INLINE void fp_level_rows_init(fp_level_rows *lr, const sample_ctx *c, const struct fp_spans *sp,

@@ -111,12 +111,11 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
     det = fp_shape_reshape(&d, 1.0, Jw);
     /* The parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v and
-     * |J′₀₀| + |J′₀₁| in u: walked along whichever axis has fewer lines
-     * (fp_level_rows), by columns when it is narrower than tall, with u
-     * and v exchanged (M's columns too). */
+     * |J′₀₀| + |J′₀₁| in u: walked by columns where that saves lines
+     * (fp_walk_columns), with u and v exchanged (M's columns too). */
     ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
     uext = fabs(Jw[0][0]) + fabs(Jw[0][1]);
-    tr = uext < ext;
+    tr = fp_walk_columns(uext * uext, ext * ext);
     if (tr) {
         double t = u0;
         u0 = v0;

@@ -101,10 +101,9 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     F = A * C - 0.25 * B * B;
     /* Extents: the inverse of the normalized quadratic form is
      * [[C, −B/2], [−B/2, A]] before scaling, so |dv| ≤ √A and |du| ≤ √C.
-     * Walked along whichever axis has fewer lines (fp_level_rows): by
-     * columns when C < A, with u and v exchanged (A and C too; B·du·dv and
-     * F are symmetric). */
-    tr = C < A;
+     * Walked by columns where that saves lines (fp_walk_columns), with u
+     * and v exchanged (A and C too; B·du·dv and F are symmetric). */
+    tr = fp_walk_columns(C, A);
     a = tr ? C : A;
     cc = tr ? A : C;
     if (tr) {
