@@ -155,6 +155,7 @@ typedef struct fp_level_rows {
     fp_span_fn span;
     const void *lg;
     int lv, nrows, tr;
+    int in_place; /* float RGBA: texels inside the level are read where they are */
     double jlo, u0, v0, wlim, hlim;
     size_t pitch, lstride;
 } fp_level_rows;
@@ -181,6 +182,7 @@ SAMPLE_FORCE_INLINE void fp_level_rows_init(fp_level_rows *lr, const sample_ctx 
     lr->lv = lv;
     lr->nrows = nrows <= (double)SAMPLE_MAX_FOOTPRINT_TEXELS ? (int)nrows : 0;
     lr->tr = tr;
+    lr->in_place = c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4;
     lr->jlo = jlo;
     lr->u0 = u0;
     lr->v0 = v0;
@@ -309,7 +311,7 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
     int k;
     *pitch = 16;
     if (at) {
-        if (c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4) {
+        if (lr->in_place) {
             *pitch = lr->pitch;
             return at;
         }
