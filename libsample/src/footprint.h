@@ -167,14 +167,19 @@ typedef struct fp_level_rows {
  * pass). */
 static inline int fp_walk_columns(double u2, double v2) { return u2 < 0.5625 * v2; }
 
-/* lr for level lv walked by rows (tr = 0) or by columns (tr = 1); u0, v0
- * and jlo already in the walk's frame (u0 along a walk row). */
-SAMPLE_FORCE_INLINE void fp_level_rows_init(fp_level_rows *lr, const sample_ctx *c, const struct fp_spans *sp,
-                                            fp_span_fn span, const void *lg, int lv, int tr, double nrows,
-                                            double jlo, double u0, double v0)
+/* lr for level lv walked by rows (tr = 0) or by columns (tr = 1), the
+ * footprint centred at (u0, v0) (the level's own frame) and reaching from
+ * lo to hi across the walk rows (offsets from the centre, walk frame).
+ * Returns the walk rows it crosses, as a double (+inf or NaN for a
+ * footprint no cap can hold: the caller tests it against the cap; lr then
+ * walks none). */
+SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ctx *c, const struct fp_spans *sp,
+                                              fp_span_fn span, const void *lg, int lv, int tr, double u0, double v0,
+                                              double lo, double hi)
 {
     const struct sample_level *L = &c->tex->level[lv];
     const size_t tb = c->tex->texel_bytes;
+    const double uw = tr ? v0 : u0, vw = tr ? u0 : v0, jlo = fp_ceil(vw + lo), nrows = fp_floor(vw + hi) - jlo + 1.0;
     lr->c = c;
     lr->sp = sp;
     lr->span = span;
@@ -184,12 +189,13 @@ SAMPLE_FORCE_INLINE void fp_level_rows_init(fp_level_rows *lr, const sample_ctx 
     lr->tr = tr;
     lr->in_place = c->tex->format == SAMPLE_FORMAT_F32 && c->tex->channels == 4;
     lr->jlo = jlo;
-    lr->u0 = u0;
-    lr->v0 = v0;
+    lr->u0 = uw;
+    lr->v0 = vw;
     lr->wlim = (double)(tr ? L->h : L->w);
     lr->hlim = (double)(tr ? L->w : L->h);
     lr->pitch = tr ? L->stride : tb;
     lr->lstride = tr ? tb : L->stride;
+    return nrows;
 }
 
 /* Prefetch texels ilo … ilo + ncol − 1 of walk row j (the part inside the

@@ -95,7 +95,7 @@ static double row_span(double u0, double lo, double hi, double *ilo)
 static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double J[2][2], Jw[2][2], det, ext, uext, u0, v0, jlo;
+    double J[2][2], Jw[2][2], det, ext, uext, u0, v0;
     int fs, ft, tr;
     fp_shape d;
 
@@ -116,12 +116,7 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     ext = fabs(Jw[1][0]) + fabs(Jw[1][1]);
     uext = fabs(Jw[0][0]) + fabs(Jw[0][1]);
     tr = fp_walk_columns(uext * uext, ext * ext);
-    if (tr) {
-        double t = u0;
-        u0 = v0;
-        v0 = t;
-        ext = uext;
-    }
+    if (tr) ext = uext;
     e->M[0][tr] = Jw[1][1] / det;
     e->M[0][!tr] = -Jw[0][1] / det;
     e->M[1][tr] = -Jw[1][0] / det;
@@ -130,9 +125,7 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     e->P[1] = e->M[0][0] < 0.0 ? -e->M[0][1] : e->M[0][1];
     e->P[2] = fabs(e->M[1][0]);
     e->P[3] = e->M[1][0] < 0.0 ? -e->M[1][1] : e->M[1][1];
-    jlo = fp_ceil(v0 - ext);
-    e->nrows = fp_floor(v0 + ext) - jlo + 1.0;
-    fp_level_rows_init(&e->lr, c, &e->spans, bn_affine_span_fn, e, lv, tr, e->nrows, jlo, u0, v0);
+    e->nrows = fp_level_rows_init(&e->lr, c, &e->spans, bn_affine_span_fn, e, lv, tr, u0, v0, -ext, ext);
     e->spans.n = 0;
 }
 
@@ -235,7 +228,7 @@ static void hull_row(const double H[4][2], double dv, double *lo, double *hi)
 static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax, J[2][2], Jw[2][2], dw, dj, u0, v0, jlo;
+    double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax, J[2][2], Jw[2][2], dw, dj, u0, v0;
     int fs, ft, k, i;
     fp_shape sh;
 
@@ -309,9 +302,7 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
         vmax = fmax(vmax, e->V[k][1]);
     }
     /* Walked by the level's rows (the hull's rows, hull_row). */
-    jlo = fp_ceil(v0 + vmin);
-    e->nrows = fp_floor(v0 + vmax) - jlo + 1.0;
-    fp_level_rows_init(&e->lr, c, &e->spans, bn_quad_span_fn, e, lv, 0, e->nrows, jlo, u0, v0);
+    e->nrows = fp_level_rows_init(&e->lr, c, &e->spans, bn_quad_span_fn, e, lv, 0, u0, v0, vmin, vmax);
     e->spans.n = 0;
     e->fail = 0;
 }

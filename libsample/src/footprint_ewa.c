@@ -79,7 +79,7 @@ static double ewa_span_fn(const void *lg, double dv, double *ilo);
 static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_level_geom *e)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    double J[2][2], A, B, C, F, u0, v0, a, cc, jlo;
+    double J[2][2], A, B, C, F, u0, v0, a, cc;
     fp_shape d;
     int tr;
 
@@ -106,17 +106,10 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     tr = fp_walk_columns(C, A);
     a = tr ? C : A;
     cc = tr ? A : C;
-    if (tr) {
-        double t = u0;
-        u0 = v0;
-        v0 = t;
-    }
-    jlo = fp_ceil(v0 - sqrt(a));
-    e->nrows = fp_floor(v0 + sqrt(a)) - jlo + 1.0;
     e->abc[0] = a / F;
     e->abc[1] = B / F;
     e->abc[2] = cc / F;
-    fp_level_rows_init(&e->lr, c, &e->spans, ewa_span_fn, e, lv, tr, e->nrows, jlo, u0, v0);
+    e->nrows = fp_level_rows_init(&e->lr, c, &e->spans, ewa_span_fn, e, lv, tr, u0, v0, -sqrt(a), sqrt(a));
     e->spans.n = 0;
 }
 
