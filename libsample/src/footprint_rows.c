@@ -3,7 +3,9 @@
  * parallelogram and EWA, every row's span in the counting pass and every
  * row's weights and weighted sums (fp_sums) in the accumulating pass. Built
  * once per instruction set next to fast_gl.c (libsample/CMakeLists.txt,
- * isa.c) and reached through isa_kernels (fp_row_kernels).
+ * isa.c) and reached through isa_kernels (fp_row_kernels). A "row" is a
+ * row of the walk (fp_level_rows): a level's row, or its column where the
+ * footprint is tall; texels lie `pitch` bytes apart either way.
  *
  * Footprint rows are short — about four texels on a 2.5-texel
  * minification, a handful more on 8:1 footprints — and many: the work is
