@@ -198,6 +198,12 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     return nrows;
 }
 
+/* Texel i of walk row j, both inside the level (integers in double). */
+SAMPLE_FORCE_INLINE const unsigned char *fp_texel_at(const fp_level_rows *lr, double j, double i)
+{
+    return lr->c->tex->level[lr->lv].data + (size_t)(long)j * lr->lstride + (size_t)(long)i * lr->pitch;
+}
+
 /* Prefetch texels ilo … ilo + ncol − 1 of walk row j (the part inside the
  * level; wrapped parts are left to the hardware). The footprint filters
  * call it from their counting pass, which finds every row's span before
@@ -220,12 +226,11 @@ SAMPLE_FORCE_INLINE void fp_prefetch_texels(const fp_level_rows *lr, const unsig
 
 SAMPLE_FORCE_INLINE void fp_prefetch_span(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
-    const struct sample_level *L = &lr->c->tex->level[lr->lv];
     double lo = ilo < 0.0 ? 0.0 : ilo, hi = ilo + ncol - 1.0;
     if (!(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
     if (hi > lr->wlim - 1.0) hi = lr->wlim - 1.0;
     if (!(lo <= hi)) return;
-    fp_prefetch_texels(lr, L->data + (size_t)j * lr->lstride + (size_t)lo * lr->pitch, hi - lo + 1.0);
+    fp_prefetch_texels(lr, fp_texel_at(lr, j, lo), hi - lo + 1.0);
 }
 
 /* A level's row spans, found by the counting pass and kept for the
@@ -240,18 +245,12 @@ typedef struct fp_spans {
     const unsigned char *at[FP_SPAN_MEMO]; /* fp_span_at */
 } fp_spans;
 
-/* Whether texels ilo … ilo + ncol − 1 of walk row j all lie inside the
- * level (then every wrap mode reads them there, ctx_texel's own shortcut);
- * fp_span_at: the first one's address then, NULL otherwise. */
-SAMPLE_FORCE_INLINE int fp_span_inside(const fp_level_rows *lr, double j, double ilo, double ncol)
-{
-    return j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim;
-}
-
+/* The address of texels ilo … ilo + ncol − 1 of walk row j when they all
+ * lie inside the level (then every wrap mode reads them there, ctx_texel's
+ * own shortcut), NULL otherwise. */
 SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
-    if (fp_span_inside(lr, j, ilo, ncol))
-        return lr->c->tex->level[lr->lv].data + (size_t)(long)j * lr->lstride + (size_t)(long)ilo * lr->pitch;
+    if (j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim) return fp_texel_at(lr, j, ilo);
     return NULL;
 }
 

@@ -60,7 +60,6 @@ const double fp_ewa_lut[129] = {
  * repeating it (an SVD with its atan2, sincos and hypot calls). */
 typedef struct ewa_level_geom {
     int lv; /* −1: empty */
-    int fs, ft;
     double nrows, ku, kv;
     double abc[3];    /* A, B, C normalized, in the walk's frame */
     fp_level_rows lr; /* the walk (by columns when the ellipse is steep) */
@@ -81,18 +80,18 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     const struct sample_level *L = &c->tex->level[lv];
     double J[2][2], A, B, C, F, u0, v0, a, cc;
     fp_shape d;
-    int tr;
+    int tr, fs, ft;
 
     e->lv = lv;
-    fp_center(c, lv, g->s, g->t, &u0, &v0, &e->fs, &e->ft);
-    fp_level_jacobian(c, lv, g->J, e->fs, e->ft, J);
+    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
+    fp_level_jacobian(c, lv, g->J, fs, ft, J);
     /* Clamp ellipse eccentricity (on the singular values, so the clamp is
      * the same for every pair of columns spanning the same ellipse); an
      * unclamped J is used as it is. */
-    fp_level_shape(c, lv, &g->base, J, e->fs || e->ft, &d);
+    fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
     if (d.clamped) fp_shape_reshape(&d, 0.0, J);
-    e->ku = e->fs ? -(double)L->w : (double)L->w;
-    e->kv = e->ft ? -(double)L->h : (double)L->h;
+    e->ku = fs ? -(double)L->w : (double)L->w;
+    e->kv = ft ? -(double)L->h : (double)L->h;
 
     /* Ellipse coefficients with the unit-variance term, scaled to F = 1. */
     A = J[1][0] * J[1][0] + J[1][1] * J[1][1] + 1.0;

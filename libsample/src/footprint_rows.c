@@ -254,19 +254,17 @@ SAMPLE_FORCE_INLINE double count_level(const fp_level_rows *lr, fp_spans *sp, co
                                        void (*bounds)(const double *P, lanes dv, lanes *lo, lanes *hi))
 {
     const double cap = (double)SAMPLE_MAX_FOOTPRINT_TEXELS;
-    const struct sample_level *L = &lr->c->tex->level[lr->lv];
     const double w = lr->wlim, h = lr->hlim;
     double total = 0.0;
     int r, k;
     sp->n = 0;
     for (r = 0; r < lr->nrows; r += LANES) {
         lanes j = lr->jlo + ((double)r + lanes_iota()), ilo, ncol = spans_of(P, lr->u0, j - lr->v0, &ilo, bounds);
-        /* In the level, and at most the cap (fp_span_count). */
+        /* In the level (fp_span_at's test), and at most the cap. */
         LANES_MASK in = lanes_lt(lanes_set1(0.0), ncol) & lanes_le(ncol, lanes_set1(cap)) & lanes_le(lanes_set1(0.0), j) &
                         lanes_lt(j, lanes_set1(h)) & lanes_le(lanes_set1(0.0), ilo) & lanes_le(ilo + ncol, lanes_set1(w));
         for (k = 0; k < LANES && r + k < lr->nrows; ++k) {
-            const unsigned char *at =
-                LANE(in, k) ? L->data + (size_t)(long)LANE(j, k) * lr->lstride + (size_t)(long)LANE(ilo, k) * lr->pitch : NULL;
+            const unsigned char *at = LANE(in, k) ? fp_texel_at(lr, LANE(j, k), LANE(ilo, k)) : NULL;
             fp_span_keep(lr, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), at);
             total += LANE(ncol, k);
         }
