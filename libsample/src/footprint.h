@@ -157,6 +157,7 @@ typedef struct fp_level_rows {
     int lv, nrows, tr;
     int in_place; /* float RGBA: texels inside the level are read where they are */
     double jlo, u0, v0, wlim, hlim;
+    const unsigned char *data; /* the level's texel (0, 0) */
     size_t pitch, lstride;
 } fp_level_rows;
 
@@ -193,6 +194,7 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     lr->v0 = vw;
     lr->wlim = (double)(tr ? L->h : L->w);
     lr->hlim = (double)(tr ? L->w : L->h);
+    lr->data = L->data;
     lr->pitch = tr ? L->stride : tb;
     lr->lstride = tr ? tb : L->stride;
     return nrows;
@@ -201,7 +203,7 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
 /* Texel i of walk row j, both inside the level (integers in double). */
 SAMPLE_FORCE_INLINE const unsigned char *fp_texel_at(const fp_level_rows *lr, double j, double i)
 {
-    return lr->c->tex->level[lr->lv].data + (size_t)(long)j * lr->lstride + (size_t)(long)i * lr->pitch;
+    return lr->data + (size_t)(long)j * lr->lstride + (size_t)(long)i * lr->pitch;
 }
 
 /* Prefetch texels ilo … ilo + ncol − 1 of walk row j (the part inside the
