@@ -158,6 +158,7 @@ typedef struct fp_level_rows {
     int in_place; /* float RGBA: texels inside the level are read where they are */
     double jlo, u0, v0, wlim, hlim;
     const unsigned char *data; /* the level's texel (0, 0) */
+    const isa_kernels *k;      /* the instruction set's kernels, chosen once a level */
     size_t pitch, lstride;
 } fp_level_rows;
 
@@ -195,6 +196,7 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     lr->wlim = (double)(tr ? L->h : L->w);
     lr->hlim = (double)(tr ? L->w : L->h);
     lr->data = L->data;
+    lr->k = isa_kernels_active();
     lr->pitch = tr ? L->stride : tb;
     lr->lstride = tr ? tb : L->stride;
     return nrows;
@@ -322,7 +324,7 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
             *pitch = lr->pitch;
             return at;
         }
-        tex_readers_of(c->tex)->row(at, lr->pitch, n, buf);
+        lr->k->readers[c->tex->format][c->tex->channels - 1].row(at, lr->pitch, n, buf);
     } else if (!lr->tr) {
         for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
     } else {

@@ -137,7 +137,7 @@ static int bn_affine_sliced(const bn_level_geom *e) { return e->P[0] > 0.0 && e-
 static double bn_affine_span(const bn_level_geom *e, double dv, double *ilo)
 {
     double lo = -INFINITY, hi = INFINITY;
-    if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_span(e->P, e->lr.u0, dv, ilo);
+    if (bn_affine_sliced(e)) return e->lr.k->rows->bn_span(e->P, e->lr.u0, dv, ilo);
     slab(e->M[0][0], e->M[0][1] * dv, &lo, &hi);
     slab(e->M[1][0], e->M[1][1] * dv, &lo, &hi);
     return row_span(e->lr.u0, lo, hi, ilo);
@@ -182,7 +182,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     if (e->lv != lv) bn_affine_setup(c, g, lv, e);
     if (!(e->nrows <= cap)) return INFINITY;
     if (count_only) {
-        if (bn_affine_sliced(e)) return isa_kernels_active()->rows->bn_count(&e->lr, &e->spans, e->P);
+        if (bn_affine_sliced(e)) return e->lr.k->rows->bn_count(&e->lr, &e->spans, e->P);
         return fp_count_rows(&e->lr, &e->spans, cap);
     }
     if (!acc->deriv) {
@@ -191,7 +191,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
          * w > 0 there (M and du are finite, fp_shape_reshape: det J′ =
          * ±t0·t1, t ≥ 1). */
         fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-        isa_kernels_active()->rows->bn_level(&sm, &e->lr, (const double(*)[2])e->M);
+        e->lr.k->rows->bn_level(&sm, &e->lr, (const double(*)[2])e->M);
         fp_accum_fold(acc, &sm);
         return sm.n;
     }

@@ -117,7 +117,7 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
 static double ewa_span_fn(const void *lg, double dv, double *ilo)
 {
     const ewa_level_geom *m = (const ewa_level_geom *)lg;
-    return isa_kernels_active()->rows->ewa_span(m->abc, m->lr.u0, dv, ilo);
+    return m->lr.k->rows->ewa_span(m->abc, m->lr.u0, dv, ilo);
 }
 
 /* The derivative pass of an ellipse level: each texel's weight and its
@@ -155,12 +155,12 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
 
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
     if (!(m->nrows <= cap)) return INFINITY;
-    if (count_only) return isa_kernels_active()->rows->ewa_count(&m->lr, &m->spans, m->abc);
+    if (count_only) return m->lr.k->rows->ewa_count(&m->lr, &m->spans, m->abc);
     if (!acc->deriv) {
         /* The weight alone, the level at once (footprint_rows.c), sums in
          * registers. */
         fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-        isa_kernels_active()->rows->ewa_level(&sm, &m->lr, m->abc);
+        m->lr.k->rows->ewa_level(&sm, &m->lr, m->abc);
         fp_accum_fold(acc, &sm);
         return sm.n;
     }
