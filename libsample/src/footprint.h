@@ -324,7 +324,7 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
             *pitch = lr->pitch;
             return at;
         }
-        lr->k->readers[c->tex->format][c->tex->channels - 1].row(at, lr->pitch, n, buf);
+        tex_readers_in(lr->k, c->tex)->row(at, lr->pitch, n, buf);
     } else if (!lr->tr) {
         for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
     } else {

@@ -289,8 +289,8 @@ const isa_kernels *isa_kernels_active(void);
  * the flags, or not x86), −3 when this CPU lacks it; the choice is then
  * unchanged. NULL returns to the automatic choice (CPU and LIBSAMPLE_ISA,
  * read again). Not meant to race with sampling: a batch already running
- * keeps the kernels it started with, the footprint readers switch at once,
- * and both give the same bits anyway. */
+ * keeps the kernels it started with, the footprint filters switch at their
+ * next level (fp_level_rows.k), and all give the same bits anyway. */
 int sample_isa_force(const char *name);
 
 /* The kernel for this batch's format and channel count (sampler.c). */
@@ -300,9 +300,15 @@ static inline fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_
     return isa_kernels_active()->fast_gl[c->tex->format][c->tex->channels - 1];
 }
 
+/* Texture t's readers in the kernels k. */
+static inline const tex_readers *tex_readers_in(const isa_kernels *k, const sample_texture *t)
+{
+    return &k->readers[t->format][t->channels - 1];
+}
+
 static inline const tex_readers *tex_readers_of(const sample_texture *t)
 {
-    return &isa_kernels_active()->readers[t->format][t->channels - 1];
+    return tex_readers_in(isa_kernels_active(), t);
 }
 
 /* The footprint queries of a batch (sampler.c): query i (finite, λ > 0)
