@@ -1,5 +1,5 @@
 /*
- * perf_probe: the developer's timing probe behind doc/performance.md's
+ * perf_probe: the developer's timing probe behind doc/performance-passes.md's
  * step tables (issue 10, sixth pass on). One filter, one of bench's query
  * sets, one format: the best 1-thread CPU time of several passes over the
  * queries (warm-up excluded), in batches of 256, and a hash of the

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Build scripts/perf_probe.c against a build's libsample and run it
-# (doc/performance.md: the step tables of issue 10's passes).
+# (doc/performance-passes.md: the step tables of issue 10's passes).
 #   scripts/perf_probe.sh BUILD_DIR FILTER SET FORMAT [QUERIES [RUNS]]
 # e.g. scripts/perf_probe.sh build ewa aniso8 float 65536 5
 # Instructions a query (AVX2 kernels; valgrind has no AVX-512), the way

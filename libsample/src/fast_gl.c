@@ -135,7 +135,7 @@ SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, i
  * Both are asked for even when they share a line. Testing for that (a
  * second prefetch of a line in flight takes a slot in the miss queue) cost
  * more than it saved: the test depends on where the query falls, and its
- * mispredictions made trilinear 27 % slower (doc/performance.md). */
+ * mispredictions made trilinear 27 % slower (doc/performance-passes.md, sixth pass). */
 SAMPLE_FORCE_INLINE void prefetch_run(const unsigned char *r, int c0, int c1, int n, size_t tb)
 {
     if (c0 >= 0) SAMPLE_PREFETCH(r + (size_t)c0 * tb);
@@ -445,7 +445,7 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
         /* Each block's lines, the first and last byte of both rows. No
          * test for a line asked for already (prefetch_run): which lines
          * repeat depends on the data, and the branches mispredicted so
-         * often that the query took 45 % longer (doc/performance.md). */
+         * often that the query took 45 % longer (doc/performance-passes.md, sixth pass). */
         for (k = 0; k < n; ++k) {
             const unsigned char *p = L->data + (size_t)jj[k] * L->stride + (size_t)ii[k] * tb;
             at->p[lv][k] = p;
@@ -601,7 +601,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
          * geometry and counting pass, which finds and prefetches its rows
          * — is made while the query before it runs, so its lines arrive
          * during that query's accumulation. Deeper filter plans measured
-         * the same (doc/performance.md) and each is FP_PLAN_BYTES. */
+         * the same (doc/performance-passes.md) and each is FP_PLAN_BYTES. */
         fast_plan ring[FAST_AHEAD_FP];
         fp_plan fpl[2];
         size_t ahead = a->count < FAST_AHEAD_FP ? a->count : FAST_AHEAD_FP;
