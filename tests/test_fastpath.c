@@ -397,6 +397,54 @@ static void test_scalar_option_value(void)
     CHECK(SAMPLE_OPT_SCALAR_PATH == 1u << 4, "bit %u", (unsigned)SAMPLE_OPT_SCALAR_PATH);
 }
 
+/* floats_finite's bit test against isfinite on the boundaries of every
+ * class (±0, subnormals, FLT_MAX, ±inf, quiet and signalling NaNs) and on
+ * random bit patterns; batch_range_finite sees a non-finite float in any
+ * field of any query of a block, its bias or its corners. */
+static void test_range_finite(void)
+{
+    static const uint32_t edge[] = {0x00000000u, 0x80000000u, 0x00000001u, 0x807fffffu, 0x00800000u,
+                                    0x7f7fffffu, 0xff7fffffu, 0x7f800000u, 0xff800000u, 0x7f800001u,
+                                    0x7fc00000u, 0xffffffffu, 0x7fffffffu, 0x3f800000u};
+    sample_query q[40];
+    sample_quad quad[40];
+    float bias[40];
+    sample_batch_args a;
+    size_t k, f;
+    uint32_t w;
+    float x;
+    for (k = 0; k < sizeof edge / sizeof edge[0]; ++k) {
+        memcpy(&x, &edge[k], 4);
+        CHECK(floats_finite(&x, 1) == (isfinite(x) != 0), "bits %08x", (unsigned)edge[k]);
+    }
+    for (k = 0; k < 1000000; ++k) {
+        w = rnd();
+        memcpy(&x, &w, 4);
+        CHECK(floats_finite(&x, 1) == (isfinite(x) != 0), "bits %08x", (unsigned)w);
+    }
+    memset(&a, 0, sizeof a);
+    for (k = 0; k < 40; ++k) {
+        q[k] = (sample_query){0.5f, 0.25f, 1e-3f, 0.0f, 0.0f, 1e-3f};
+        for (f = 0; f < 8; ++f) quad[k].st[f / 2][f % 2] = 0.5f;
+        bias[k] = 1.0f;
+    }
+    a.queries = q;
+    a.lod_bias = bias;
+    a.corners = quad;
+    a.count = 40;
+    CHECK(batch_range_finite(&a, 0, 40) && batch_query_finite(&a, 39), "all finite");
+    for (k = 0; k < 40; k += 13)
+        for (f = 0; f < 15; ++f) {
+            float *p = f < 6 ? &q[k].s + f : (f < 14 ? &quad[k].st[(f - 6) / 2][(f - 6) % 2] : &bias[k]);
+            float keep = *p;
+            *p = f & 1 ? NAN : -INFINITY;
+            CHECK(!batch_range_finite(&a, 0, 40) && !batch_query_finite(&a, k), "query %zu float %zu", k, f);
+            CHECK(batch_range_finite(&a, k + 1, 40 - k - 1), "after query %zu", k);
+            CHECK(k == 0 || batch_range_finite(&a, 0, k), "before query %zu", k);
+            *p = keep;
+        }
+}
+
 int main(void)
 {
     int k;
@@ -412,5 +460,6 @@ int main(void)
     }
     CHECK(sample_isa_force(NULL) == 0, "automatic choice");
     RUN(test_scalar_option_value);
+    RUN(test_range_finite);
     return check_finish();
 }

@@ -272,6 +272,21 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
     return 1;
 }
 
+/* λ of an OpenGL-filtered query i (eqs. 8.6–8.9). */
+SAMPLE_FORCE_INLINE float gl_lambda(const sample_ctx *c, const sample_batch_args *a, size_t i)
+{
+    return lod_lambda(c, lod_lambda_base(c, &a->queries[i]), a->lod_bias ? a->lod_bias[i] : 0.0f);
+}
+
+/* The addresses of planned level `which` (0 or 1) of query q, if it has
+ * that level. */
+SAMPLE_FORCE_INLINE void plan_taps(const sample_ctx *c, const sample_query *q, size_t tb, int linear, int which,
+                                   fast_plan *pl)
+{
+    int lv = which ? pl->ch.level1 : pl->ch.level0;
+    if (lv >= 0) plan_level(c, lv, linear ? SAMPLE_LINEAR : pl->ch.kind, q->s, q->t, tb, 1, &pl->u.tp[which]);
+}
+
 /* Constants of each instantiation: `gl`, the sampler has no footprint
  * filter (gl_blocks), so no query is handed to one; `linear`, the batch's
  * per-level filter is LINEAR whatever λ is, so the tap count and the
@@ -279,7 +294,6 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
 SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
                               const lod_choice *fixed, size_t tb, int gl, int linear, fast_plan *pl)
 {
-    sample_filter kind;
     const sample_query *q = &a->queries[i];
     pl->kind = batch_query_finite(a, i) ? PLAN_GL : PLAN_BORDER;
     if (pl->kind == PLAN_BORDER) return;
@@ -287,17 +301,15 @@ SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args
         pl->ch = *fixed;
         pl->lam = 0.0f;
     } else {
-        float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
         if (gl || c->smp->footprint == SAMPLE_FOOTPRINT_NONE) {
-            pl->lam = lod_lambda(c, lod_lambda_base(c, q), bias);
-        } else if (plan_footprint(c, q, bias, pl)) {
+            pl->lam = gl_lambda(c, a, i);
+        } else if (plan_footprint(c, q, a->lod_bias ? a->lod_bias[i] : 0.0f, pl)) {
             return;
         }
         pl->ch = lod_select(c, pl->lam);
     }
-    kind = linear ? SAMPLE_LINEAR : pl->ch.kind;
-    plan_level(c, pl->ch.level0, kind, q->s, q->t, tb, 1, &pl->u.tp[0]);
-    if (pl->ch.level1 >= 0) plan_level(c, pl->ch.level1, kind, q->s, q->t, tb, 1, &pl->u.tp[1]);
+    plan_taps(c, q, tb, linear, 0, pl);
+    plan_taps(c, q, tb, linear, 1, pl);
 }
 
 /* sampler.c's run_query + gl_apply for a planned query. */
@@ -554,7 +566,27 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
     for (i = 0; i < a->count; i += FAST_BLOCK) {
         fast_plan plan[FAST_BLOCK];
         size_t m = a->count - i < FAST_BLOCK ? a->count - i : FAST_BLOCK;
-        for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed, tb, 1, linear, &plan[k]);
+        if (!batch_range_finite(a, i, m)) {
+            for (k = 0; k < m; ++k) plan_query(c, a, i + k, fixed, tb, 1, linear, &plan[k]);
+        } else {
+            /* plan_query's steps, each for the whole block before the
+             * next: short loops whose iterations the processor overlaps,
+             * where plan_query's one long chain of dependent steps (λ, the
+             * levels, each level's addresses) kept about one query in
+             * flight (doc/performance-passes.md, eleventh pass). */
+            for (k = 0; k < m; ++k) {
+                plan[k].kind = PLAN_GL;
+                if (fixed) {
+                    plan[k].ch = *fixed;
+                    plan[k].lam = 0.0f;
+                } else {
+                    plan[k].lam = gl_lambda(c, a, i + k);
+                    plan[k].ch = lod_select(c, plan[k].lam);
+                }
+            }
+            for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 0, &plan[k]);
+            for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 1, &plan[k]);
+        }
         for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, NULL, fmt, nc, tb, 1, linear, NULL);
     }
 }

@@ -179,21 +179,42 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
     tex_decode(c->tex, L, x, y, out);
 }
 
-/* Whether query k of a batch can be filtered: DESIGN §10, non-finite
- * coordinates, Jacobian, bias or corners give the border colour, decided
- * before any arithmetic could turn them into an index. */
+/* Whether the n floats stored at p are all finite. A float is ±inf or NaN
+ * when its magnitude bits are ≥ 0x7f800000; adding 0x00800000 carries
+ * exactly those into bit 31, so one OR over the words and one test decide
+ * (a loop the compiler vectorizes, no branch per float). The words are
+ * read with memcpy: p may be a struct of floats (sample_query). */
+static inline int floats_finite(const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    uint32_t bad = 0, w;
+    size_t k;
+    for (k = 0; k < n; ++k) {
+        memcpy(&w, b + 4 * k, 4);
+        bad |= (w & 0x7fffffffu) + 0x00800000u;
+    }
+    return !(bad & 0x80000000u);
+}
+
+_Static_assert(sizeof(sample_query) == 6 * sizeof(float) && sizeof(sample_quad) == 8 * sizeof(float),
+               "queries and corners are plain arrays of floats");
+
+/* Whether queries first … first + n − 1 of a batch can all be filtered:
+ * DESIGN §10, non-finite coordinates, Jacobian, bias or corners give the
+ * border colour, decided before any arithmetic could turn them into an
+ * index. The fast path asks once for a block of queries, whose planning
+ * steps then run as passes over the block with no border case
+ * (fast_gl.c, gl_blocks). */
+static inline int batch_range_finite(const sample_batch_args *a, size_t first, size_t n)
+{
+    return floats_finite(a->queries + first, 6 * n) && (!a->lod_bias || floats_finite(a->lod_bias + first, n)) &&
+           (!a->corners || floats_finite(a->corners + first, 8 * n));
+}
+
+/* Whether query k of a batch can be filtered (batch_range_finite). */
 static inline int batch_query_finite(const sample_batch_args *a, size_t k)
 {
-    const sample_query *q = &a->queries[k];
-    int m;
-    if (!(isfinite(q->s) && isfinite(q->t) && isfinite(q->dsdx) && isfinite(q->dtdx) &&
-          isfinite(q->dsdy) && isfinite(q->dtdy)))
-        return 0;
-    if (a->lod_bias && !isfinite(a->lod_bias[k])) return 0;
-    if (a->corners)
-        for (m = 0; m < 4; ++m)
-            if (!isfinite(a->corners[k].st[m][0]) || !isfinite(a->corners[k].st[m][1])) return 0;
-    return 1;
+    return batch_range_finite(a, k, 1);
 }
 
 /* Prefetch hint; never dereferences, but callers keep the address inside
