@@ -272,10 +272,20 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
     return 1;
 }
 
-/* λ of an OpenGL-filtered query i (eqs. 8.6–8.9). */
-SAMPLE_FORCE_INLINE float gl_lambda(const sample_ctx *c, const sample_batch_args *a, size_t i)
+/* λ and the level choice of finite query i under the OpenGL filters
+ * (eqs. 8.6–8.9, §8.14.2–8.14.3); `fixed`, if not NULL, is the choice
+ * whatever λ is (fast_gl_batch). */
+SAMPLE_FORCE_INLINE void plan_gl_lod(const sample_ctx *c, const sample_batch_args *a, size_t i,
+                                     const lod_choice *fixed, fast_plan *pl)
 {
-    return lod_lambda(c, lod_lambda_base(c, &a->queries[i]), a->lod_bias ? a->lod_bias[i] : 0.0f);
+    pl->kind = PLAN_GL;
+    if (fixed) {
+        pl->ch = *fixed;
+        pl->lam = 0.0f;
+        return;
+    }
+    pl->lam = lod_lambda(c, lod_lambda_base(c, &a->queries[i]), a->lod_bias ? a->lod_bias[i] : 0.0f);
+    pl->ch = lod_select(c, pl->lam);
 }
 
 /* The addresses of planned level `which` (0 or 1) of query q, if it has
@@ -290,22 +300,21 @@ SAMPLE_FORCE_INLINE void plan_taps(const sample_ctx *c, const sample_query *q, s
 /* Constants of each instantiation: `gl`, the sampler has no footprint
  * filter (gl_blocks), so no query is handed to one; `linear`, the batch's
  * per-level filter is LINEAR whatever λ is, so the tap count and the
- * reconstruction are known at compile time. */
+ * reconstruction are known at compile time. (`fixed` implies no footprint
+ * filter.) */
 SAMPLE_FORCE_INLINE void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i,
                               const lod_choice *fixed, size_t tb, int gl, int linear, fast_plan *pl)
 {
     const sample_query *q = &a->queries[i];
-    pl->kind = batch_query_finite(a, i) ? PLAN_GL : PLAN_BORDER;
-    if (pl->kind == PLAN_BORDER) return;
-    if (fixed) {
-        pl->ch = *fixed;
-        pl->lam = 0.0f;
+    if (!batch_query_finite(a, i)) {
+        pl->kind = PLAN_BORDER;
+        return;
+    }
+    if (gl || c->smp->footprint == SAMPLE_FOOTPRINT_NONE) {
+        plan_gl_lod(c, a, i, fixed, pl);
     } else {
-        if (gl || c->smp->footprint == SAMPLE_FOOTPRINT_NONE) {
-            pl->lam = gl_lambda(c, a, i);
-        } else if (plan_footprint(c, q, a->lod_bias ? a->lod_bias[i] : 0.0f, pl)) {
-            return;
-        }
+        pl->kind = PLAN_GL;
+        if (plan_footprint(c, q, a->lod_bias ? a->lod_bias[i] : 0.0f, pl)) return;
         pl->ch = lod_select(c, pl->lam);
     }
     plan_taps(c, q, tb, linear, 0, pl);
@@ -574,16 +583,7 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
              * where plan_query's one long chain of dependent steps (λ, the
              * levels, each level's addresses) kept about one query in
              * flight (doc/performance-passes.md, eleventh pass). */
-            for (k = 0; k < m; ++k) {
-                plan[k].kind = PLAN_GL;
-                if (fixed) {
-                    plan[k].ch = *fixed;
-                    plan[k].lam = 0.0f;
-                } else {
-                    plan[k].lam = gl_lambda(c, a, i + k);
-                    plan[k].ch = lod_select(c, plan[k].lam);
-                }
-            }
+            for (k = 0; k < m; ++k) plan_gl_lod(c, a, i + k, fixed, &plan[k]);
             for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 0, &plan[k]);
             for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 1, &plan[k]);
         }
