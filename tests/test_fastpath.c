@@ -435,7 +435,8 @@ static void test_range_finite(void)
     CHECK(batch_range_finite(&a, 0, 40) && batch_query_finite(&a, 39), "all finite");
     for (k = 0; k < 40; k += 13)
         for (f = 0; f < 15; ++f) {
-            float *p = f < 6 ? &q[k].s + f : (f < 14 ? &quad[k].st[(f - 6) / 2][(f - 6) % 2] : &bias[k]);
+            float *field[6] = {&q[k].s, &q[k].t, &q[k].dsdx, &q[k].dtdx, &q[k].dsdy, &q[k].dtdy};
+            float *p = f < 6 ? field[f] : (f < 14 ? &quad[k].st[(f - 6) / 2][(f - 6) % 2] : &bias[k]);
             float keep = *p;
             *p = f & 1 ? NAN : -INFINITY;
             CHECK(!batch_range_finite(&a, 0, 40) && !batch_query_finite(&a, k), "query %zu float %zu", k, f);
