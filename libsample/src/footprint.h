@@ -46,8 +46,17 @@ void fp_shape_sigma(fp_shape *o);  /* s from Q, R without the clamp */
  * Returns det(out). */
 double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2]);
 
+/* ∂u0/∂s and ∂v0/∂t on level lv: its width and height, negated on an axis
+ * a mirror-clamp reflected (fp_center's flips). */
+static inline void fp_level_scale(const sample_ctx *c, int lv, int flip_s, int flip_t, double *ku, double *kv)
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    *ku = flip_s ? -(double)L->w : (double)L->w;
+    *kv = flip_t ? -(double)L->h : (double)L->h;
+}
+
 /* The normalized Jacobian J (rows s, t; columns x, y) in texel units of level
- * lv, with the rows of a mirrored axis (fp_center) negated. */
+ * lv, its rows scaled by fp_level_scale. */
 void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
                        double out[2][2]);
 

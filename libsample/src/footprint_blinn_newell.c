@@ -94,7 +94,6 @@ static double row_span(double u0, double lo, double hi, double *ilo)
 
 static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
-    const struct sample_level *L = &c->tex->level[lv];
     double J[2][2], Jw[2][2], det, ext, uext, u0, v0;
     int fs, ft, tr;
     fp_shape d;
@@ -103,9 +102,7 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
     e->fail = 0;
     fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     fp_level_jacobian(c, lv, g->J, fs, ft, J);
-    /* ∂u0/∂s (negative on a mirrored axis). */
-    e->ku = fs ? -(double)L->w : (double)L->w;
-    e->kv = ft ? -(double)L->h : (double)L->h;
+    fp_level_scale(c, lv, fs, ft, &e->ku, &e->kv);
     /* Unit-variance widening (file comment): J′ = U·diag(√(σ² + 1))·Vᵀ,
      * M = J′⁻¹ by its adjugate; det J′ = ±√(σ0² + 1)·√(σ1² + 1) ≠ 0. */
     fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
@@ -227,7 +224,6 @@ static void hull_row(const double H[4][2], double dv, double *lo, double *hi)
 
 static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_level_geom *e)
 {
-    const struct sample_level *L = &c->tex->level[lv];
     double ku, kv, H[3][3], Gh[3][3], det, T[2][2], Ti[2][2], vmin, vmax, J[2][2], Jw[2][2], dw, dj, u0, v0;
     int fs, ft, k, i;
     fp_shape sh;
@@ -235,8 +231,9 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
     e->lv = lv;
     e->fail = 1;
     fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
-    ku = e->ku = fs ? -(double)L->w : (double)L->w;
-    kv = e->kv = ft ? -(double)L->h : (double)L->h;
+    fp_level_scale(c, lv, fs, ft, &e->ku, &e->kv);
+    ku = e->ku;
+    kv = e->kv;
     /* The homography in texels of this level: rows (u, v) scaled, w kept. */
     for (k = 0; k < 3; ++k) {
         H[0][k] = g->H[0][k] * ku;

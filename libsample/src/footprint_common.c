@@ -86,8 +86,8 @@ double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2])
 void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
                        double out[2][2])
 {
-    const struct sample_level *L = &c->tex->level[lv];
-    double ku = flip_s ? -(double)L->w : (double)L->w, kv = flip_t ? -(double)L->h : (double)L->h;
+    double ku, kv;
+    fp_level_scale(c, lv, flip_s, flip_t, &ku, &kv);
     out[0][0] = J[0][0] * ku;
     out[0][1] = J[0][1] * ku;
     out[1][0] = J[1][0] * kv;

@@ -77,7 +77,6 @@ static double ewa_span_fn(const void *lg, double dv, double *ilo);
 
 static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_level_geom *e)
 {
-    const struct sample_level *L = &c->tex->level[lv];
     double J[2][2], A, B, C, F, u0, v0, a, cc;
     fp_shape d;
     int tr, fs, ft;
@@ -90,8 +89,7 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
      * unclamped J is used as it is. */
     fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
     if (d.clamped) fp_shape_reshape(&d, 0.0, J);
-    e->ku = fs ? -(double)L->w : (double)L->w;
-    e->kv = ft ? -(double)L->h : (double)L->h;
+    fp_level_scale(c, lv, fs, ft, &e->ku, &e->kv);
 
     /* Ellipse coefficients with the unit-variance term, scaled to F = 1. */
     A = J[1][0] * J[1][0] + J[1][1] * J[1][1] + 1.0;
