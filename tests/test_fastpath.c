@@ -416,6 +416,47 @@ static void test_aniso_addressed(void)
     for_each_texture(sizes, 2, aniso_addressed, "anisotropic configurations");
 }
 
+/* λ four queries at a time (lod_lanes.h) against the general path's, on
+ * Jacobians that take sample_log2's special cases — zero (λ_base = −inf),
+ * ρ² an exact power of two (exactly its exponent), from the smallest
+ * subnormal float to the largest exponents, ρx² = ρy² — and ordinary ones;
+ * every float finite, so every block is planned in passes. The stats
+ * carry λ (clamped at ±1e30 only), the values follow it. */
+static void test_lambda_lanes(void)
+{
+    sample_texture *tex = make_texture(SAMPLE_FORMAT_F32, 1, 64, 64);
+    sample_sampler s;
+    int rep, i, fails = 0;
+    sample_sampler_init(&s);
+    s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+    s.min_lod = -1e30f;
+    s.max_lod = 1e30f;
+    for (rep = 0; rep < 20; ++rep) {
+        for (i = 0; i < NQ; ++i) {
+            float d[4] = {0.0f, 0.0f, 0.0f, 0.0f}, a = frand(-1.0f, 1.0f), b = frand(-1.0f, 1.0f);
+            int k, e = (int)(rnd() % 277) - 149; /* 2^e: every float exponent, subnormals too */
+            switch (rnd() % 6) {
+            case 0: break;
+            case 1: d[rnd() % 4] = (rnd() & 1 ? -1.0f : 1.0f) * ldexpf(1.0f, e); break;
+            case 2: /* ρ² = 25·2^2e·64²: not a power of two */
+                d[0] = 3.0f * ldexpf(1.0f, e < 125 ? e : 125);
+                d[1] = 4.0f * ldexpf(1.0f, e < 125 ? e : 125);
+                break;
+            case 3:
+                for (k = 0; k < 4; ++k) d[k] = frand(-1.0f, 1.0f) * ldexpf(1.0f, (int)(rnd() % 250) - 125);
+                break;
+            case 4: d[0] = d[3] = a, d[1] = d[2] = b; break; /* ρx² = ρy² */
+            default:
+                for (k = 0; k < 4; ++k) d[k] = 0.3f * frand(-1.0f, 1.0f);
+            }
+            qs[i] = (sample_query){frand(0.0f, 1.0f), frand(0.0f, 1.0f), d[0], d[1], d[2], d[3]};
+        }
+        if (differs(tex, &s, 4) && ++fails > 5) break;
+    }
+    CHECK(fails == 0, "%d query sets differ", fails);
+    sample_texture_destroy(tex);
+}
+
 static void test_scalar_option_value(void)
 {
     /* Additive: the next free bit after the existing options. */
@@ -481,6 +522,7 @@ int main(void)
         RUN(test_identical_all_combinations);
         RUN(test_footprint_samplers);
         RUN(test_aniso_addressed);
+        RUN(test_lambda_lanes);
         RUN(test_batch_sizes);
         RUN(test_threads);
     }

@@ -36,6 +36,7 @@
  * SAMPLE_OPT_SCALAR_PATH turns this file off.
  */
 #include "internal.h"
+#include "lod_lanes.h"
 
 /* Queries planned (and prefetched) ahead of their evaluation. Larger blocks
  * keep more misses in flight; past about 32 the prefetches of one block
@@ -272,20 +273,46 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
     return 1;
 }
 
+/* λ of query i from its λ_base, and the level choice. */
+SAMPLE_FORCE_INLINE void plan_gl_choose(const sample_ctx *c, const sample_batch_args *a, size_t i, float lam_base,
+                                        fast_plan *pl)
+{
+    pl->kind = PLAN_GL;
+    pl->lam = lod_lambda(c, lam_base, a->lod_bias ? a->lod_bias[i] : 0.0f);
+    pl->ch = lod_select(c, pl->lam);
+}
+
 /* λ and the level choice of finite query i under the OpenGL filters
  * (eqs. 8.6–8.9, §8.14.2–8.14.3); `fixed`, if not NULL, is the choice
  * whatever λ is (fast_gl_batch). */
 SAMPLE_FORCE_INLINE void plan_gl_lod(const sample_ctx *c, const sample_batch_args *a, size_t i,
                                      const lod_choice *fixed, fast_plan *pl)
 {
-    pl->kind = PLAN_GL;
     if (fixed) {
+        pl->kind = PLAN_GL;
         pl->ch = *fixed;
         pl->lam = 0.0f;
         return;
     }
-    pl->lam = lod_lambda(c, lod_lambda_base(c, &a->queries[i]), a->lod_bias ? a->lod_bias[i] : 0.0f);
-    pl->ch = lod_select(c, pl->lam);
+    plan_gl_choose(c, a, i, lod_lambda_base(c, &a->queries[i]), pl);
+}
+
+/* plan_gl_lod for queries i … i + m − 1 of a finite block, λ_base four
+ * queries at a time where the build has the lanes (lod_lanes.h). */
+SAMPLE_FORCE_INLINE void plan_gl_lods(const sample_ctx *c, const sample_batch_args *a, size_t i, size_t m,
+                                      const lod_choice *fixed, fast_plan *pl)
+{
+    float lb[FAST_BLOCK];
+    size_t k = 0;
+    if (fixed || !LOD_LANES) {
+        for (k = 0; k < m; ++k) plan_gl_lod(c, a, i + k, fixed, &pl[k]);
+        return;
+    }
+#if LOD_LANES
+    for (; k + LOD_LANES <= m; k += LOD_LANES) lod_lambda_base4(c, &a->queries[i + k], lb + k);
+#endif
+    for (; k < m; ++k) lb[k] = lod_lambda_base(c, &a->queries[i + k]);
+    for (k = 0; k < m; ++k) plan_gl_choose(c, a, i + k, lb[k], &pl[k]);
 }
 
 /* The addresses of planned level `which` (0 or 1) of query q, if it has
@@ -583,7 +610,7 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
              * where plan_query's one long chain of dependent steps (λ, the
              * levels, each level's addresses) kept about one query in
              * flight (doc/performance-passes.md, eleventh pass). */
-            for (k = 0; k < m; ++k) plan_gl_lod(c, a, i + k, fixed, &plan[k]);
+            plan_gl_lods(c, a, i, m, fixed, plan);
             for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 0, &plan[k]);
             for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 1, &plan[k]);
         }

@@ -28,12 +28,8 @@
 #error "footprint_rows.c is built once per instruction set with SAMPLE_ISA set (libsample/CMakeLists.txt)"
 #endif
 
-#if defined(__GNUC__) && !defined(SAMPLE_NO_SIMD) && defined(__AVX__)
+#if SAMPLE_VEC_AVX
 #define FP_ROWS_VECTOR 1
-#include <immintrin.h>
-typedef double d4 __attribute__((vector_size(32)));
-typedef int64_t l4 __attribute__((vector_size(32)));
-typedef int32_t i4 __attribute__((vector_size(16)));
 
 static inline d4 d4_set1(double x) { return (d4){x, x, x, x}; }
 static inline l4 l4_set1(int64_t x) { return (l4){x, x, x, x}; }

@@ -37,12 +37,22 @@
  * r⁷/7)/ln 2 (what it leaves out is below 2^−67), evaluated in Estrin's
  * order: a short dependency chain, since λ of one query waits on it. */
 extern const double sample_log2_table[128][2];
+
+/* The pieces of sample_log2 that lod_lanes.h's four-lane version (λ of a
+ * block of queries) writes with vectors: the same constants, masks and
+ * polynomial, so that both round identically. SAMPLE_LOG2_POLY takes r and
+ * r² of either type (GCC's vector extensions broadcast the constants). */
+#define SAMPLE_LOG2_FRAC 0x000fffffffffffffull   /* the fraction bits */
+#define SAMPLE_LOG2_ONE 0x3ff0000000000000ull    /* 1.0's exponent */
+#define SAMPLE_LOG2_TOP7 45                       /* i = the top 7 fraction bits */
+#define SAMPLE_LOG2_MID (1ull << 44)              /* c: the bit after them */
+/* (−1)^(k+1)/(k·ln 2), k = 1 … 7, each the nearest double. */
+#define SAMPLE_LOG2_POLY(r, r2)                                                                                     \
+    ((0x1.71547652b82fep+0 + (r) * -0x1.71547652b82fep-1) + (r2) * (0x1.ec709dc3a03fdp-2 + (r) * -0x1.71547652b82fep-2) + \
+     ((r2) * (r2)) * ((0x1.2776c50ef9bfep-2 + (r) * -0x1.ec709dc3a03fdp-3) + (r2) * 0x1.a61762a7aded9p-3))
+
 static inline double sample_log2(double x)
 {
-    /* (−1)^(k+1)/(k·ln 2), k = 1 … 7, each the nearest double. */
-    const double k1 = 0x1.71547652b82fep+0, k2 = -0x1.71547652b82fep-1, k3 = 0x1.ec709dc3a03fdp-2,
-                 k4 = -0x1.71547652b82fep-2, k5 = 0x1.2776c50ef9bfep-2, k6 = -0x1.ec709dc3a03fdp-3,
-                 k7 = 0x1.a61762a7aded9p-3;
     uint64_t b;
     int e, i;
     double m, c, r, r2, p;
@@ -55,17 +65,17 @@ static inline double sample_log2(double x)
         memcpy(&b, &x, sizeof b);
         e = (int)(b >> 52) - 1023 - 54;
     }
-    b &= 0x000fffffffffffffull;
+    b &= SAMPLE_LOG2_FRAC;
     if (b == 0) return (double)e;
-    i = (int)(b >> 45);
+    i = (int)(b >> SAMPLE_LOG2_TOP7);
     /* m, and c: m's top seven fraction bits, then a one (integer steps). */
-    b |= 0x3ff0000000000000ull;
+    b |= SAMPLE_LOG2_ONE;
     memcpy(&m, &b, sizeof m);
-    b = (b & ~((1ull << 45) - 1)) | (1ull << 44);
+    b = (b & ~((1ull << SAMPLE_LOG2_TOP7) - 1)) | SAMPLE_LOG2_MID;
     memcpy(&c, &b, sizeof c);
     r = (m - c) * sample_log2_table[i][1];
     r2 = r * r;
-    p = (k1 + r * k2) + r2 * (k3 + r * k4) + (r2 * r2) * ((k5 + r * k6) + r2 * k7);
+    p = SAMPLE_LOG2_POLY(r, r2);
     return (double)e + (sample_log2_table[i][0] + r * p);
 }
 

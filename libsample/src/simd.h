@@ -195,4 +195,16 @@ SAMPLE_PLAIN_LANEWISE(v4d, v4d_add, +)
 SAMPLE_PLAIN_LANEWISE(v4d, v4d_mul, *)
 #endif
 
+/* GCC's vector extensions on AVX registers, for kernels whose lanes are
+ * rows, texels or queries rather than a texel's channels
+ * (footprint_rows.c, lod_lanes.h): four doubles, four 64-bit integers
+ * (comparison masks, bit patterns) and four 32-bit integers. */
+#if defined(__GNUC__) && defined(SAMPLE_SIMD_SSE2) && defined(__AVX__)
+#define SAMPLE_VEC_AVX 1
+#include <immintrin.h>
+typedef double d4 __attribute__((vector_size(32)));
+typedef int64_t l4 __attribute__((vector_size(32)));
+typedef int32_t i4 __attribute__((vector_size(16)));
+#endif
+
 #endif /* SAMPLE_SIMD_H */
