@@ -304,12 +304,12 @@ SAMPLE_FORCE_INLINE void plan_gl_lods(const sample_ctx *c, const sample_batch_ar
 {
     float lb[FAST_BLOCK];
     size_t k = 0;
-    if (fixed || !LOD_LANES) {
+    if (fixed) {
         for (k = 0; k < m; ++k) plan_gl_lod(c, a, i + k, fixed, &pl[k]);
         return;
     }
-#if LOD_LANES
-    for (; k + LOD_LANES <= m; k += LOD_LANES) lod_lambda_base4(c, &a->queries[i + k], lb + k);
+#if SAMPLE_VEC_AVX2
+    for (; k + 4 <= m; k += 4) lod_lambda_base4(c, &a->queries[i + k], lb + k);
 #endif
     for (; k < m; ++k) lb[k] = lod_lambda_base(c, &a->queries[i + k]);
     for (k = 0; k < m; ++k) plan_gl_choose(c, a, i + k, lb[k], &pl[k]);
@@ -322,6 +322,106 @@ SAMPLE_FORCE_INLINE void plan_taps(const sample_ctx *c, const sample_query *q, s
 {
     int lv = which ? pl->ch.level1 : pl->ch.level0;
     if (lv >= 0) plan_level(c, lv, linear ? SAMPLE_LINEAR : pl->ch.kind, q->s, q->t, tb, 1, &pl->u.tp[which]);
+}
+
+#if SAMPLE_VEC_AVX2
+/* plan_taps of four queries of a finite block (k = 0 … 3), their texel
+ * coordinates in one vector of eight floats (u, v of each), where that is
+ * plan_level to the bit: LINEAR taps on a wrap mode that uses s and t as
+ * they are (recon_texel_coord's modes below CLAMP), and a 2 × 2 block that
+ * lies inside the level on both axes (axis_index's first case: the same
+ * indices for every wrap mode). The same float operations in the same
+ * order — u = s·w, a = u − ½, ⌊a⌋, a − ⌊a⌋, the in-level test against
+ * w − 2 — so the same bits; a u that recon_texel_coord would clamp is
+ * ±inf here and fails the test. Any other query, or level, goes through
+ * plan_taps. Only where the build has AVX2 (the level sizes gathered;
+ * doc/performance-passes.md, twelfth pass). */
+_Static_assert(sizeof(struct sample_level) % sizeof(int) == 0, "level sizes gathered as ints");
+
+SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, size_t tb, int linear, int which,
+                                    fast_plan *pl)
+{
+    const struct sample_level *lev = c->tex->level;
+    int lv[4], ok[4], k, in;
+    int64_t ij[4];
+    __m128 fq[4];
+    __m256i wh, ii;
+    __m256 st, a, i0, lim, f;
+    for (k = 0; k < 4; ++k) {
+        lv[k] = which ? pl[k].ch.level1 : pl[k].ch.level0;
+        ok[k] = lv[k] >= 0 && (linear || pl[k].ch.kind == SAMPLE_LINEAR);
+    }
+    if (!(ok[0] | ok[1] | ok[2] | ok[3])) { /* e.g. no second level: nothing for the lanes */
+        for (k = 0; k < 4; ++k) plan_taps(c, &q[k], tb, linear, which, &pl[k]);
+        return;
+    }
+    {
+        const struct sample_level *L0 = &lev[ok[0] ? lv[0] : 0], *L1 = &lev[ok[1] ? lv[1] : 0],
+                                  *L2 = &lev[ok[2] ? lv[2] : 0], *L3 = &lev[ok[3] ? lv[3] : 0];
+        wh = _mm256_setr_epi32(L0->w, L0->h, L1->w, L1->h, L2->w, L2->h, L3->w, L3->h);
+    }
+    /* s, t of each query: 8 bytes at the start of its 24. */
+    st = _mm256_castsi256_ps(_mm256_set_m128i(
+        _mm_unpacklo_epi64(_mm_loadl_epi64((const __m128i *)(const void *)&q[2].s),
+                           _mm_loadl_epi64((const __m128i *)(const void *)&q[3].s)),
+        _mm_unpacklo_epi64(_mm_loadl_epi64((const __m128i *)(const void *)&q[0].s),
+                           _mm_loadl_epi64((const __m128i *)(const void *)&q[1].s))));
+    a = _mm256_sub_ps(_mm256_mul_ps(st, _mm256_cvtepi32_ps(wh)), _mm256_set1_ps(0.5f));
+    i0 = _mm256_round_ps(a, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+    lim = _mm256_cvtepi32_ps(_mm256_sub_epi32(wh, _mm256_set1_epi32(2)));
+    in = _mm256_movemask_ps(_mm256_and_ps(_mm256_cmp_ps(i0, _mm256_setzero_ps(), _CMP_GE_OQ),
+                                          _mm256_cmp_ps(i0, lim, _CMP_LE_OQ)));
+    /* Each query's (fu, fv) and (i, j) taken from the registers (a store
+     * and narrower reloads would wait on store forwarding). */
+    f = _mm256_sub_ps(a, i0);
+    fq[0] = _mm256_castps256_ps128(f);
+    fq[2] = _mm256_extractf128_ps(f, 1);
+    fq[1] = _mm_movehl_ps(fq[0], fq[0]);
+    fq[3] = _mm_movehl_ps(fq[2], fq[2]);
+    ii = _mm256_cvttps_epi32(i0);
+    ij[0] = _mm_cvtsi128_si64(_mm256_castsi256_si128(ii));
+    ij[1] = _mm_extract_epi64(_mm256_castsi256_si128(ii), 1);
+    ij[2] = _mm_cvtsi128_si64(_mm256_extracti128_si256(ii, 1));
+    ij[3] = _mm_extract_epi64(_mm256_extracti128_si256(ii, 1), 1);
+    for (k = 0; k < 4; ++k) {
+        fast_taps *tp = &pl[k].u.tp[which];
+        const struct sample_level *L = &lev[lv[k] >= 0 ? lv[k] : 0];
+        const unsigned char *r;
+        int i = (int)(uint32_t)ij[k], j = (int)(uint32_t)((uint64_t)ij[k] >> 32);
+        if (!ok[k] || ((in >> 2 * k) & 3) != 3) {
+            plan_taps(c, &q[k], tb, linear, which, &pl[k]);
+            continue;
+        }
+        tp->fu = _mm_cvtss_f32(fq[k]);
+        tp->fv = _mm_cvtss_f32(_mm_shuffle_ps(fq[k], fq[k], 1));
+        tp->col[0] = i;
+        tp->col[1] = i + 1;
+        tp->inside = 1;
+        r = L->data + (size_t)j * L->stride;
+        tp->row[0] = r;
+        tp->row[1] = r + L->stride;
+        prefetch_run(r, i, i + 1, 2, tb);
+        prefetch_run(r + L->stride, i, i + 1, 2, tb);
+    }
+}
+#endif
+
+/* plan_taps of level `which` for queries 0 … m − 1 of a finite block;
+ * four at a time for float and half texels only: with 8-bit texels the
+ * query is bound by their decode, and planning in lanes measured 1–2 %
+ * slower there (doc/performance-passes.md, twelfth pass). */
+SAMPLE_FORCE_INLINE void plan_taps_block(const sample_ctx *c, const sample_query *q, size_t m, sample_format fmt,
+                                         size_t tb, int linear, int which, fast_plan *pl)
+{
+    size_t k = 0;
+#if SAMPLE_VEC_AVX2
+    if ((fmt == SAMPLE_FORMAT_F32 || fmt == SAMPLE_FORMAT_F16) && c->smp->wrap_s < SAMPLE_WRAP_CLAMP &&
+        c->smp->wrap_t < SAMPLE_WRAP_CLAMP)
+        for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, pl + k);
+#else
+    (void)fmt;
+#endif
+    for (; k < m; ++k) plan_taps(c, &q[k], tb, linear, which, &pl[k]);
 }
 
 /* Constants of each instantiation: `gl`, the sampler has no footprint
@@ -611,8 +711,8 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
              * levels, each level's addresses) kept about one query in
              * flight (doc/performance-passes.md, eleventh pass). */
             plan_gl_lods(c, a, i, m, fixed, plan);
-            for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 0, &plan[k]);
-            for (k = 0; k < m; ++k) plan_taps(c, &a->queries[i + k], tb, linear, 1, &plan[k]);
+            plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 0, plan);
+            plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 1, plan);
         }
         for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, NULL, fmt, nc, tb, 1, linear, NULL);
     }

@@ -20,17 +20,15 @@
  * all-finite query sets and in test_lambda_lanes (Jacobians at each of
  * those cases, λ read back through the stats).
  *
- * Built where the fast path has AVX2 (64-bit integer lanes and gathers);
- * elsewhere LOD_LANES is 0 and the caller runs lod_lambda_base per query.
+ * Built where the fast path has AVX2 (64-bit integer lanes and gathers,
+ * SAMPLE_VEC_AVX2); elsewhere the caller runs lod_lambda_base per query.
  */
 #ifndef SAMPLE_LOD_LANES_H
 #define SAMPLE_LOD_LANES_H
 
 #include "internal.h"
 
-#if SAMPLE_VEC_AVX && defined(__AVX2__)
-#define LOD_LANES 4
-
+#if SAMPLE_VEC_AVX2
 /* q[0 … 3]'s λ_base into out[0 … 3]. */
 SAMPLE_FORCE_INLINE void lod_lambda_base4(const sample_ctx *c, const sample_query *q, float out[4])
 {
@@ -73,8 +71,6 @@ SAMPLE_FORCE_INLINE void lod_lambda_base4(const sample_ctx *c, const sample_quer
     for (k = 0; k < 4; ++k)
         if (!ok[k]) out[k] = lod_lambda_base(c, &q[k]);
 }
-#else
-#define LOD_LANES 0
 #endif
 
 #endif /* SAMPLE_LOD_LANES_H */

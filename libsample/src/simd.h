@@ -205,6 +205,11 @@ SAMPLE_PLAIN_LANEWISE(v4d, v4d_mul, *)
 typedef double d4 __attribute__((vector_size(32)));
 typedef int64_t l4 __attribute__((vector_size(32)));
 typedef int32_t i4 __attribute__((vector_size(16)));
+#if defined(__AVX2__)
+/* And AVX2's integer lanes and gathers (the fast path's block passes,
+ * fast_gl.c and lod_lanes.h). */
+#define SAMPLE_VEC_AVX2 1
+#endif
 #endif
 
 #endif /* SAMPLE_SIMD_H */
