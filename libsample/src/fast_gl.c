@@ -334,9 +334,8 @@ SAMPLE_FORCE_INLINE void plan_taps(const sample_ctx *c, const sample_query *q, s
  * order — u = s·w, a = u − ½, ⌊a⌋, a − ⌊a⌋, the in-level test against
  * w − 2 — so the same bits; a u that recon_texel_coord would clamp is
  * ±inf here and fails the test. Any other query, or level, goes through
- * plan_taps. Only where the build has AVX2 (the level sizes gathered;
+ * plan_taps. Only where the build has AVX2 (256-bit integer lanes;
  * doc/performance-passes.md, twelfth pass). */
-_Static_assert(sizeof(struct sample_level) % sizeof(int) == 0, "level sizes gathered as ints");
 
 SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, size_t tb, int linear, int which,
                                     fast_plan *pl)
