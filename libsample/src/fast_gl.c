@@ -143,6 +143,19 @@ SAMPLE_FORCE_INLINE void prefetch_run(const unsigned char *r, int c0, int c1, in
     if (n > 1 && c1 >= 0) SAMPLE_PREFETCH(r + (size_t)c1 * tb + (tb - 1));
 }
 
+/* Taps whose n rows lie inside level L from row y0 on (one stride apart),
+ * and, if `prefetch`, the lines of each row's run col[0] … col[n − 1]. */
+SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, int n, size_t tb, int prefetch,
+                                          fast_taps *tp)
+{
+    const unsigned char *r = L->data + (size_t)y0 * L->stride;
+    int k;
+    for (k = 0; k < n; ++k, r += L->stride) {
+        tp->row[k] = r;
+        if (prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], n, tb);
+    }
+}
+
 /* Addresses of one query on level lv (recon_level's coordinate rules) and,
  * if `prefetch`, prefetches of the lines they touch: the first and last
  * byte of each row's run cover it when the run is contiguous, as it almost
@@ -169,12 +182,7 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
     }
     tp->inside = axis_index(c->smp->wrap_s, i0, L->w, n, first, kind != SAMPLE_NEAREST, tp->col);
     if (axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y)) {
-        /* Consecutive rows inside the level: one stride apart. */
-        const unsigned char *r = L->data + (size_t)y[0] * L->stride;
-        for (k = 0; k < n; ++k, r += L->stride) {
-            tp->row[k] = r;
-            if (prefetch) prefetch_run(r, tp->col[0], tp->col[n - 1], n, tb);
-        }
+        taps_rows_inside(L, y[0], n, tb, prefetch, tp);
         return;
     }
     tp->inside = 0;
@@ -384,8 +392,6 @@ SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, 
     ij[3] = _mm_extract_epi64(_mm256_extracti128_si256(ii, 1), 1);
     for (k = 0; k < 4; ++k) {
         fast_taps *tp = &pl[k].u.tp[which];
-        const struct sample_level *L = &lev[lv[k] >= 0 ? lv[k] : 0];
-        const unsigned char *r;
         int i = (int)(uint32_t)ij[k], j = (int)(uint32_t)((uint64_t)ij[k] >> 32);
         if (!ok[k] || ((in >> 2 * k) & 3) != 3) {
             plan_taps(c, &q[k], tb, linear, which, &pl[k]);
@@ -396,11 +402,7 @@ SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, 
         tp->col[0] = i;
         tp->col[1] = i + 1;
         tp->inside = 1;
-        r = L->data + (size_t)j * L->stride;
-        tp->row[0] = r;
-        tp->row[1] = r + L->stride;
-        prefetch_run(r, i, i + 1, 2, tb);
-        prefetch_run(r + L->stride, i, i + 1, 2, tb);
+        taps_rows_inside(&lev[lv[k]], j, 2, tb, 1, tp);
     }
 }
 #endif
