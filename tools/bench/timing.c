@@ -28,6 +28,9 @@
  * --quick run too), at least one. */
 #define BENCH_TILE_BATCHES 16
 #define BENCH_TILES_PER_THREAD 8
+/* How long a waiting thread polls before it sleeps: longer than a pass of
+ * the fastest filters, short against a measurement. */
+#define BENCH_SPIN_NS 2000000L
 
 typedef struct pool pool;
 
@@ -39,18 +42,63 @@ typedef struct job {
     float *rgba;
     size_t n, batch, tile;
     int failed;
+    unsigned seen; /* the last pass this worker ran */
     pool *p;
 } job;
 
 /* Pass number `gen` releases workers 1 … threads − 1; each decrements
- * `busy` when its slice is done; `quit` sends them home. */
+ * `busy` when its tiles are done; `quit` sends them home. `gen` and `quit`
+ * change only under `mu`, and the worker that brings `busy` to 0 signals
+ * under `mu`, so a thread that polled in vain and then sleeps (it tests
+ * again under `mu` first) cannot miss its wake-up. */
 struct pool {
     pthread_mutex_t mu;
     pthread_cond_t go, done;
-    unsigned gen;
-    int busy, quit;
+    atomic_uint gen;
+    atomic_int busy, quit;
     atomic_size_t next; /* the pass's next tile's first query */
 };
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void cpu_relax(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+/* Polls `ready` for up to BENCH_SPIN_NS; nonzero if it became true. The
+ * clock is read every 256 polls, not on every one. */
+static int spin_until(int (*ready)(const void *), const void *arg)
+{
+    double limit = now() + 1e-9 * (double)BENCH_SPIN_NS;
+    unsigned k;
+    for (k = 1;; ++k) {
+        if (ready(arg)) return 1;
+        if (k % 256 == 0 && now() > limit) return 0;
+        cpu_relax();
+    }
+}
+
+/* A worker's next pass has begun (or the pool is closing). */
+static int next_pass(const void *jv)
+{
+    const job *j = jv;
+    return atomic_load_explicit(&j->p->gen, memory_order_acquire) != j->seen ||
+           atomic_load_explicit(&j->p->quit, memory_order_relaxed);
+}
+
+/* Every worker has finished the pass. */
+static int pass_done(const void *pv)
+{
+    return atomic_load_explicit(&((pool *)pv)->busy, memory_order_acquire) == 0;
+}
 
 /* Tiles until the pass's queries are all taken. */
 static void run_tiles(job *j)
@@ -70,26 +118,24 @@ static void *worker(void *arg)
 {
     job *j = arg;
     pool *p = j->p;
-    unsigned seen = 0;
-    pthread_mutex_lock(&p->mu);
     for (;;) {
-        while (p->gen == seen && !p->quit) pthread_cond_wait(&p->go, &p->mu);
-        if (p->quit) break;
-        seen = p->gen;
-        pthread_mutex_unlock(&p->mu);
+        if (!spin_until(next_pass, j)) {
+            pthread_mutex_lock(&p->mu);
+            while (!next_pass(j)) pthread_cond_wait(&p->go, &p->mu);
+            pthread_mutex_unlock(&p->mu);
+        }
+        if (atomic_load_explicit(&p->quit, memory_order_relaxed)) break;
+        j->seen = atomic_load_explicit(&p->gen, memory_order_acquire);
         run_tiles(j);
-        pthread_mutex_lock(&p->mu);
-        if (--p->busy == 0) pthread_cond_signal(&p->done);
+        /* Release: the caller that sees busy == 0 sees this thread's
+         * results and `failed`. */
+        if (atomic_fetch_sub_explicit(&p->busy, 1, memory_order_acq_rel) == 1) {
+            pthread_mutex_lock(&p->mu);
+            pthread_cond_signal(&p->done);
+            pthread_mutex_unlock(&p->mu);
+        }
     }
-    pthread_mutex_unlock(&p->mu);
     return NULL;
-}
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 /* One pass (the calling thread works too); returns seconds, or −1 on
@@ -98,16 +144,19 @@ static double pass(job *jobs, pool *p, int threads)
 {
     double t0 = now(), t1;
     int k, failed = 0;
-    pthread_mutex_lock(&p->mu);
     atomic_store_explicit(&p->next, 0, memory_order_relaxed);
-    p->busy = threads - 1;
-    p->gen++;
+    atomic_store_explicit(&p->busy, threads - 1, memory_order_relaxed);
+    pthread_mutex_lock(&p->mu);
+    /* Release: a worker that sees the new `gen` sees `next` and `busy`. */
+    atomic_fetch_add_explicit(&p->gen, 1, memory_order_release);
     pthread_cond_broadcast(&p->go);
     pthread_mutex_unlock(&p->mu);
     run_tiles(&jobs[0]);
-    pthread_mutex_lock(&p->mu);
-    while (p->busy > 0) pthread_cond_wait(&p->done, &p->mu);
-    pthread_mutex_unlock(&p->mu);
+    if (!spin_until(pass_done, p)) {
+        pthread_mutex_lock(&p->mu);
+        while (!pass_done(p)) pthread_cond_wait(&p->done, &p->mu);
+        pthread_mutex_unlock(&p->mu);
+    }
     t1 = now();
     for (k = 0; k < threads; ++k) failed |= jobs[k].failed;
     return failed ? -1.0 : t1 - t0;
