@@ -374,14 +374,19 @@ static void test_footprint_samplers(void)
     for_each_texture(sizes, 2, footprint_samplers, "footprint configurations");
 }
 
-/* The anisotropic filter's common case, which the fast path addresses
- * when it plans the query (fast_gl.c, aniso_address): every probe's block
- * inside both levels of a texture larger than the footprint. Footprints of
- * 1 to 24 probes (above 16 the probes are read one at a time), at random
- * angles and λ', on wraps with and without a coordinate transform; values
- * only, values with stats, and with derivatives (read one probe at a
- * time). */
-static int aniso_addressed(const sample_texture *tex, int w, int h)
+/* The footprint filters' common case: the whole footprint inside both
+ * levels of a texture larger than it. For the anisotropic filter the fast
+ * path addresses its probes when it plans the query (fast_gl.c,
+ * aniso_address): footprints of 1 to 24 probes (above 16 the probes are
+ * read one at a time). For Blinn–Newell and EWA every row's span lies in
+ * the level, so the readers decode whole rows and columns in place
+ * (fast_gl.c, decode_row; footprint.h, fp_span_texels), spans of odd and
+ * even length. At random angles and λ', on wraps with and without a
+ * coordinate transform; values only, values with stats, and with
+ * derivatives (the anisotropic filter then reads one probe at a time). */
+static sample_footprint inside_filter;
+
+static int footprint_inside(const sample_texture *tex, int w, int h)
 {
     int rep, i, fails = 0;
     (void)h;
@@ -390,7 +395,7 @@ static int aniso_addressed(const sample_texture *tex, int w, int h)
         unsigned what = rep < 3 ? 0u : (rep == 3 ? 4u : (unsigned)(rnd() & 7));
         sample_sampler_init(&s);
         s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
-        s.footprint = SAMPLE_FOOTPRINT_ANISOTROPIC;
+        s.footprint = inside_filter;
         s.max_anisotropy = rep == 2 ? 32.0f : 16.0f;
         s.wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
         s.wrap_t = rep == 1 ? SAMPLE_WRAP_CLAMP : SAMPLE_WRAP_REPEAT;
@@ -410,10 +415,15 @@ static int aniso_addressed(const sample_texture *tex, int w, int h)
     return fails;
 }
 
-static void test_aniso_addressed(void)
+static void test_footprints_inside(void)
 {
     static const int sizes[2][2] = {{64, 64}, {61, 37}};
-    for_each_texture(sizes, 2, aniso_addressed, "anisotropic configurations");
+    inside_filter = SAMPLE_FOOTPRINT_ANISOTROPIC;
+    for_each_texture(sizes, 2, footprint_inside, "anisotropic configurations");
+    inside_filter = SAMPLE_FOOTPRINT_BLINN_NEWELL;
+    for_each_texture(sizes, 2, footprint_inside, "Blinn-Newell configurations inside");
+    inside_filter = SAMPLE_FOOTPRINT_EWA;
+    for_each_texture(sizes, 2, footprint_inside, "EWA configurations inside");
 }
 
 /* λ four queries at a time (lod_lanes.h) against the general path's, on
@@ -521,7 +531,7 @@ int main(void)
         rng_state = RNG_SEED; /* the same textures and queries for every build */
         RUN(test_identical_all_combinations);
         RUN(test_footprint_samplers);
-        RUN(test_aniso_addressed);
+        RUN(test_footprints_inside);
         RUN(test_lambda_lanes);
         RUN(test_batch_sizes);
         RUN(test_threads);

@@ -193,6 +193,53 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
     }
 }
 
+/* Whether the fast path decodes this format's texels by gathers from
+ * sample_u8_decode (texel_v4, texel_pair): 8-bit RGBA with AVX2. Per
+ * texel the plain decode is four byte loads, four table loads and three
+ * inserts; the gather reads the same table entries (the same bits). */
+#if SAMPLE_VEC_AVX2
+#define GATHER8(fmt, nc) ((nc) == 4 && ((fmt) == SAMPLE_FORMAT_SRGB8 || (fmt) == SAMPLE_FORMAT_UNORM8))
+
+/* The row of sample_u8_decode each channel's code indexes, as an offset:
+ * c / 255 (+256) for every UNORM8 channel and an sRGB texel's alpha. */
+SAMPLE_FORCE_INLINE __m128i gather8_rows(sample_format fmt)
+{
+    return fmt == SAMPLE_FORMAT_SRGB8 ? _mm_setr_epi32(0, 0, 0, 256) : _mm_set1_epi32(256);
+}
+#endif
+
+/* Texel p decoded as tex_decode_v4 decodes it. */
+SAMPLE_FORCE_INLINE v4f texel_v4(sample_format fmt, int nc, const unsigned char *p)
+{
+#if SAMPLE_VEC_AVX2
+    if (GATHER8(fmt, nc)) {
+        int32_t w;
+        memcpy(&w, p, 4);
+        return _mm_i32gather_ps(&sample_u8_decode[0][0],
+                                _mm_add_epi32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128(w)), gather8_rows(fmt)), 4);
+    }
+#endif
+    return tex_decode_v4(fmt, nc, p);
+}
+
+/* Texels p and p + tb (adjacent in a row) decoded as tex_decode_v4
+ * decodes them: with GATHER8, one gather for both. */
+SAMPLE_FORCE_INLINE void texel_pair(sample_format fmt, int nc, const unsigned char *p, v4f *a, v4f *b)
+{
+#if SAMPLE_VEC_AVX2
+    if (GATHER8(fmt, nc)) {
+        const __m128i r = gather8_rows(fmt);
+        const __m256i codes = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
+        const __m256 v = _mm256_i32gather_ps(&sample_u8_decode[0][0], _mm256_add_epi32(codes, _mm256_set_m128i(r, r)), 4);
+        *a = _mm256_castps256_ps128(v);
+        *b = _mm256_extractf128_ps(v, 1);
+        return;
+    }
+#endif
+    *a = tex_decode_v4(fmt, nc, p);
+    *b = tex_decode_v4(fmt, nc, p + texel_bytes(fmt, nc));
+}
+
 /* The 2 × 2 block at p (rows stride apart) reconstructed bilinearly
  * (recon_bilerp): the LINEAR taps of a query whose block lies in the
  * level. */
@@ -201,10 +248,9 @@ SAMPLE_FORCE_INLINE void bilerp_block(sample_format fmt, int nc, size_t tb, cons
                                       float ddt[4])
 {
     v4f T[4];
-    T[0] = tex_decode_v4(fmt, nc, p);
-    T[1] = tex_decode_v4(fmt, nc, p + tb);
-    T[2] = tex_decode_v4(fmt, nc, p + stride);
-    T[3] = tex_decode_v4(fmt, nc, p + stride + tb);
+    (void)tb;
+    texel_pair(fmt, nc, p, &T[0], &T[1]);
+    texel_pair(fmt, nc, p + stride, &T[2], &T[3]);
     recon_bilerp(T, fu, fv, out, dds, ddt);
 }
 
@@ -212,7 +258,7 @@ SAMPLE_FORCE_INLINE v4f fetch(const sample_ctx *c, sample_format fmt, int nc, si
                         const unsigned char *row, int col)
 {
     if (!row || col < 0) return v4_load(c->border);
-    return tex_decode_v4(fmt, nc, row + (size_t)col * tb);
+    return texel_v4(fmt, nc, row + (size_t)col * tb);
 }
 
 /* recon_level on planned taps. Returns the texels read. */
@@ -510,10 +556,17 @@ SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned ch
     int k;
     /* A level row (pitch = texel size, a constant the loop is compiled
      * for) or a column. */
-    if (pitch == tb)
-        for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * tb));
-    else
-        for (k = 0; k < n; ++k) v4_store(out[k], tex_decode_v4(fmt, nc, p + (size_t)k * pitch));
+    if (pitch == tb) {
+        for (k = 0; k + 1 < n; k += 2) {
+            v4f a, b;
+            texel_pair(fmt, nc, p + (size_t)k * tb, &a, &b);
+            v4_store(out[k], a);
+            v4_store(out[k + 1], b);
+        }
+        if (k < n) v4_store(out[k], texel_v4(fmt, nc, p + (size_t)k * tb));
+    } else {
+        for (k = 0; k < n; ++k) v4_store(out[k], texel_v4(fmt, nc, p + (size_t)k * pitch));
+    }
 }
 
 SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format fmt, int nc, int lv,

@@ -47,10 +47,11 @@ struct sample_texture {
     struct sample_level level[SAMPLE_MAX_LEVELS];
 };
 
-/* The exact sRGB EOTF for each 8-bit code (color.c). */
-extern const float sample_srgb_table[256];
-/* c / 255 for each 8-bit code (color.c). */
-extern const float sample_unorm8_table[256];
+/* The exact sRGB EOTF for each 8-bit code ([0]) and c / 255 ([1]), one
+ * array (color.c). */
+extern const float sample_u8_decode[2][256];
+#define sample_srgb_table (sample_u8_decode[0])
+#define sample_unorm8_table (sample_u8_decode[1])
 /* The 8-bit sRGB code of a linear value, rounded to nearest in the encoded
  * domain (color.c; no libm); what the mip builder writes into sRGB8
  * levels. */
