@@ -3,7 +3,8 @@
  * this CPU runs decodes all 65536 half bit patterns to exactly
  * sample_half_to_float's bits (the AVX2 and AVX-512 builds through F16C's
  * VCVTPH2PS, simd.h), with 1–4 channels, also with denormals-are-zero and
- * flush-to-zero set; NaN texels filter to NaN in every build where they do
+ * flush-to-zero set, and every 8-bit code of UNORM8 and SRGB8 to its
+ * table entry; NaN texels filter to NaN in every build where they do
  * in the scalar one (only a NaN's payload may differ); LIBSAMPLE_ISA and
  * sample_isa_force choose as documented. Identity of the filters across
  * builds: test_fastpath.
@@ -57,6 +58,49 @@ static int check_halves(int nc)
     free(h);
     free(out);
     return bad;
+}
+
+/* Every 8-bit code in every channel (texel k holds k, k + 1, … mod 256),
+ * decoded by the active build's row reader, by rows and every third
+ * texel: the sRGB EOTF table on the colour channels of SRGB8, c / 255 on
+ * its alpha and on every UNORM8 channel (the AVX2 and AVX-512 builds
+ * gather them, fast_gl.c texel_v4 and texel_pair). */
+static int check_u8(sample_format fmt, int nc)
+{
+    enum { N = 257 }; /* odd: a row's last texel has no pair */
+    unsigned char *b = malloc((size_t)N * nc);
+    float(*out)[4] = malloc(N * sizeof *out), (*o3)[4] = malloc(N * sizeof *o3);
+    int k, c, bad = 0;
+    for (k = 0; k < N * nc; ++k) b[k] = (unsigned char)(k / nc + k % nc);
+    isa_kernels_active()->readers[fmt][nc - 1].row(b, (size_t)nc, N, out);
+    isa_kernels_active()->readers[fmt][nc - 1].row(b, 3 * (size_t)nc, N / 3, o3);
+    for (k = 0; k < N; ++k)
+        for (c = 0; c < 4; ++c) {
+            int code = b[nc * k + (c < nc ? c : 0)];
+            float want = c >= nc ? (c == 3 ? 1.0f : 0.0f)
+                                 : (fmt == SAMPLE_FORMAT_SRGB8 && c < 3 ? sample_srgb_table[code] : sample_unorm8_table[code]);
+            if ((bits_of(out[k][c]) != bits_of(want) || (k % 3 == 0 && k / 3 < N / 3 && bits_of(o3[k / 3][c]) != bits_of(want))) &&
+                ++bad <= 3)
+                fprintf(stderr, "%s, format %d, %d channels: texel %d channel %d code %d -> %a, want %a\n",
+                        sample_isa_name(), (int)fmt, nc, k, c, code, out[k][c], want);
+        }
+    free(b);
+    free(out);
+    free(o3);
+    return bad;
+}
+
+static void test_u8_decode_exhaustive(void)
+{
+    int k, nc;
+    for (k = 0; k < SAMPLE_ISA_COUNT; ++k) {
+        if (!test_isa_enter(test_isa_names[k])) continue;
+        for (nc = 1; nc <= 4; ++nc) {
+            CHECK(check_u8(SAMPLE_FORMAT_UNORM8, nc) == 0, "%s, unorm8, %d channels", test_isa_names[k], nc);
+            CHECK(check_u8(SAMPLE_FORMAT_SRGB8, nc) == 0, "%s, srgb8, %d channels", test_isa_names[k], nc);
+        }
+    }
+    CHECK(sample_isa_force(NULL) == 0, "automatic choice");
 }
 
 static void test_half_decode_exhaustive(void)
@@ -217,6 +261,7 @@ static void test_choice(void)
 int main(void)
 {
     RUN(test_half_decode_exhaustive);
+    RUN(test_u8_decode_exhaustive);
     RUN(test_nan_texels);
     RUN(test_choice);
     return check_finish();

@@ -223,7 +223,8 @@ SAMPLE_FORCE_INLINE v4f texel_v4(sample_format fmt, int nc, const unsigned char 
 }
 
 /* Texels p and p + tb (adjacent in a row) decoded as tex_decode_v4
- * decodes them: with GATHER8, one gather for both. */
+ * decodes them: with GATHER8, one gather for both; RGBA halves with AVX2
+ * in one 256-bit conversion. */
 SAMPLE_FORCE_INLINE void texel_pair(sample_format fmt, int nc, const unsigned char *p, v4f *a, v4f *b)
 {
 #if SAMPLE_VEC_AVX2
@@ -233,6 +234,10 @@ SAMPLE_FORCE_INLINE void texel_pair(sample_format fmt, int nc, const unsigned ch
         const __m256 v = _mm256_i32gather_ps(&sample_u8_decode[0][0], _mm256_add_epi32(codes, _mm256_set_m128i(r, r)), 4);
         *a = _mm256_castps256_ps128(v);
         *b = _mm256_extractf128_ps(v, 1);
+        return;
+    }
+    if (fmt == SAMPLE_FORMAT_F16 && nc == 4) {
+        v4_pair_from_f16x8(p, a, b);
         return;
     }
 #endif
