@@ -300,8 +300,21 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
         int x, y;
         cubic_weights(c->smp->cubic, tp->fu, wx, dwx);
         cubic_weights(c->smp->cubic, tp->fv, wy, dwy);
-        for (y = 0; y < 4; ++y)
-            for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]));
+        for (y = 0; y < 4; ++y) {
+            if (tp->inside) {
+                /* The 4 × 4 block lies in the level: each row's four
+                 * texels are adjacent (plan_level), two pairs. */
+                const unsigned char *p = tp->row[y] + (size_t)tp->col[0] * tb;
+                v4f a, b;
+                for (x = 0; x < 4; x += 2) {
+                    texel_pair(fmt, nc, p + (size_t)x * tb, &a, &b);
+                    v4_store(T[4 * y + x], a);
+                    v4_store(T[4 * y + x + 1], b);
+                }
+            } else {
+                for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]));
+            }
+        }
         recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0,
                             out, dds, ddt);
         n = 16;
