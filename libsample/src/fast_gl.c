@@ -29,7 +29,10 @@
  *    arithmetic saving;
  *  - when the result cannot depend on λ (no mipmaps, the same per-level
  *    filter for magnification and minification, no stats wanted) λ is not
- *    computed at all.
+ *    computed at all;
+ *  - with AVX2, 8-bit RGBA texels are decoded by gathers from the same
+ *    tables tex_decode_v4 reads, and RGBA halves two texels at a time
+ *    (texel_v4, texel_pair): the same values by fewer instructions.
  *
  * Identity with the general path is tested for every format, channel
  * count, wrap mode and filter (tests/test_fastpath.c);
