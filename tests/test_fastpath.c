@@ -379,9 +379,9 @@ static void test_footprint_samplers(void)
  * path addresses its probes when it plans the query (fast_gl.c,
  * aniso_address): footprints of 1 to 24 probes (above 16 the probes are
  * read one at a time). For Blinn–Newell and EWA every row's span lies in
- * the level, so the readers decode whole rows and columns in place
- * (fast_gl.c, decode_row; footprint.h, fp_span_texels), spans of odd and
- * even length. At random angles and λ', on wraps with and without a
+ * the level, so whole rows and columns are read where they lie (float
+ * RGBA) or decoded by the format's reader (fast_gl.c, decode_row;
+ * footprint.h, fp_span_texels), spans of odd and even length. At random angles and λ', on wraps with and without a
  * coordinate transform; values only, values with stats, and with
  * derivatives (the anisotropic filter then reads one probe at a time). */
 static sample_footprint inside_filter;

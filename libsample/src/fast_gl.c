@@ -239,10 +239,12 @@ SAMPLE_FORCE_INLINE void texel_pair(sample_format fmt, int nc, const unsigned ch
         *b = _mm256_extractf128_ps(v, 1);
         return;
     }
+#if defined(__F16C__)
     if (fmt == SAMPLE_FORMAT_F16 && nc == 4) {
         v4_pair_from_f16x8(p, a, b);
         return;
     }
+#endif
 #endif
     *a = tex_decode_v4(fmt, nc, p);
     *b = tex_decode_v4(fmt, nc, p + texel_bytes(fmt, nc));
@@ -251,12 +253,11 @@ SAMPLE_FORCE_INLINE void texel_pair(sample_format fmt, int nc, const unsigned ch
 /* The 2 × 2 block at p (rows stride apart) reconstructed bilinearly
  * (recon_bilerp): the LINEAR taps of a query whose block lies in the
  * level. */
-SAMPLE_FORCE_INLINE void bilerp_block(sample_format fmt, int nc, size_t tb, const unsigned char *p,
+SAMPLE_FORCE_INLINE void bilerp_block(sample_format fmt, int nc, const unsigned char *p,
                                       size_t stride, float fu, float fv, float out[4], float dds[4],
                                       float ddt[4])
 {
     v4f T[4];
-    (void)tb;
     texel_pair(fmt, nc, p, &T[0], &T[1]);
     texel_pair(fmt, nc, p + stride, &T[2], &T[3]);
     recon_bilerp(T, fu, fv, out, dds, ddt);
@@ -286,7 +287,7 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
         if (tp->inside) {
             /* Most queries: the 2 × 2 block lies in the level (its rows
              * are then consecutive, plan_level). */
-            bilerp_block(fmt, nc, tb, tp->row[0] + (size_t)tp->col[0] * tb, L->stride, tp->fu, tp->fv,
+            bilerp_block(fmt, nc, tp->row[0] + (size_t)tp->col[0] * tb, L->stride, tp->fu, tp->fv,
                          out, dds, ddt);
         } else {
             v4f T[4];
@@ -686,16 +687,15 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
 SAMPLE_FORCE_INLINE uint32_t aniso_read(const sample_ctx *c, sample_format fmt, int nc,
                                         const fp_aniso_setup *an, const aniso_taps *at, float out[4])
 {
-    const size_t tb = texel_bytes(fmt, nc);
     const size_t st0 = c->tex->level[an->l0].stride, st1 = c->tex->level[an->l1].stride;
     const int two = an->l1 != an->l0;
     double acc[4] = {0, 0, 0, 0};
     int k;
     for (k = 0; k < at->n; ++k) {
         float o0[4], o1[4];
-        bilerp_block(fmt, nc, tb, at->p[0][k], st0, at->fu[0][k], at->fv[0][k], o0, NULL, NULL);
+        bilerp_block(fmt, nc, at->p[0][k], st0, at->fu[0][k], at->fv[0][k], o0, NULL, NULL);
         if (two)
-            bilerp_block(fmt, nc, tb, at->p[1][k], st1, at->fu[1][k], at->fv[1][k], o1, NULL, NULL);
+            bilerp_block(fmt, nc, at->p[1][k], st1, at->fu[1][k], at->fv[1][k], o1, NULL, NULL);
         else
             memcpy(o1, o0, sizeof o1);
         fp_aniso_add(acc, (double)an->f, o0, o1);
