@@ -1,9 +1,12 @@
-# OpenEXR header pre-flight (doc/io-and-colour.md, doc/guarantees.md).
+# Header pre-flights: OpenEXR attribute sizes, JPEG APP13 blocks
+# (doc/io-and-colour.md, doc/guarantees.md).
 if(TARGET sample_io)
-  add_executable(io_exr_guard ${CMAKE_CURRENT_SOURCE_DIR}/io_exr_guard.c)
-  target_link_libraries(io_exr_guard PRIVATE sample_io sample)
-  target_include_directories(io_exr_guard PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-  target_compile_definitions(io_exr_guard PRIVATE SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  set_target_properties(io_exr_guard PROPERTIES LINKER_LANGUAGE CXX)
-  add_test(NAME io_exr_guard COMMAND io_exr_guard)
+  foreach(t io_exr_guard io_jpeg_guard)
+    add_executable(${t} ${CMAKE_CURRENT_SOURCE_DIR}/${t}.c)
+    target_link_libraries(${t} PRIVATE sample_io sample)
+    target_include_directories(${t} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+    target_compile_definitions(${t} PRIVATE SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+    set_target_properties(${t} PROPERTIES LINKER_LANGUAGE CXX)
+    add_test(NAME ${t} COMMAND ${t})
+  endforeach()
 endif()

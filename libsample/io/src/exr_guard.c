@@ -12,41 +12,13 @@
 #include <stdio.h>
 #include <string.h>
 
-/* A byte source: a memory buffer or a file, with its total size. */
-typedef struct exr_src {
-    const unsigned char *mem;
-    FILE *f;
-    uint64_t size, pos;
-} exr_src;
-
-static int src_byte(exr_src *s, int *c)
-{
-    if (s->pos >= s->size) return 0;
-    if (s->mem) {
-        *c = s->mem[s->pos];
-    } else {
-        int v = fgetc(s->f);
-        if (v == EOF) return 0;
-        *c = v;
-    }
-    s->pos++;
-    return 1;
-}
-
-static int src_skip(exr_src *s, uint64_t n)
-{
-    if (n > s->size - s->pos) return 0;
-    s->pos += n;
-    return s->mem ? 1 : fseek(s->f, (long)s->pos, SEEK_SET) == 0;
-}
-
 /* A null-terminated string of at most `max` characters; *len gets its length. */
-static int src_string(exr_src *s, size_t max, char *buf, size_t *len)
+static int src_string(io_src *s, size_t max, char *buf, size_t *len)
 {
     size_t n = 0;
     int c;
     for (;;) {
-        if (!src_byte(s, &c)) return 0;
+        if (!io_src_byte(s, &c)) return 0;
         if (c == 0) break;
         if (n >= max) return 0;
         if (n + 1 < 64) buf[n] = (char)c;
@@ -61,14 +33,14 @@ static int src_string(exr_src *s, size_t max, char *buf, size_t *len)
  * for long either (real files have tens of attributes). */
 enum { EXR_MAX_PARTS = 1024, EXR_MAX_ATTRIBUTES = 100000 };
 
-static sample_status check(exr_src *s, const char *what, sample_error *err)
+static sample_status check(io_src *s, const char *what, sample_error *err)
 {
     unsigned char head[8];
     int c, k, parts = 0, attrs = 0;
     unsigned version;
     size_t name_max;
     for (k = 0; k < 8; ++k) {
-        if (!src_byte(s, &c)) return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR header is truncated", what);
+        if (!io_src_byte(s, &c)) return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR header is truncated", what);
         head[k] = (unsigned char)c;
     }
     version = (unsigned)head[4] | (unsigned)head[5] << 8 | (unsigned)head[6] << 16 | (unsigned)head[7] << 24;
@@ -101,7 +73,7 @@ static sample_status check(exr_src *s, const char *what, sample_error *err)
         if (!src_string(s, name_max, type, &tlen))
             return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' has a bad type name", what, name);
         for (k = 0; k < 4; ++k) {
-            if (!src_byte(s, &c))
+            if (!io_src_byte(s, &c))
                 return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' is truncated", what, name);
             b[k] = (unsigned char)c;
         }
@@ -110,7 +82,7 @@ static sample_status check(exr_src *s, const char *what, sample_error *err)
             return io_fail(err, SAMPLE_E_CORRUPT,
                            "%s: OpenEXR attribute '%s' (%s) claims %ld bytes but only %llu remain", what, name,
                            type, (long)size, (unsigned long long)(s->size - s->pos));
-        if (!src_skip(s, (uint64_t)size))
+        if (!io_src_skip(s, (uint64_t)size))
             return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' is truncated", what, name);
     }
 }
@@ -122,31 +94,20 @@ static int is_exr(const unsigned char *p, size_t n)
 
 sample_status io_exr_guard_memory(const void *data, size_t size, sample_error *err)
 {
-    exr_src s;
+    io_src s;
     if (!is_exr((const unsigned char *)data, size)) return SAMPLE_OK;
-    memset(&s, 0, sizeof s);
-    s.mem = (const unsigned char *)data;
-    s.size = size;
+    io_src_memory(&s, data, size);
     return check(&s, "image in memory", err);
 }
 
 sample_status io_exr_guard_file(const char *path, sample_error *err)
 {
-    exr_src s;
+    io_src s;
     unsigned char magic[4];
-    sample_status st;
-    long end;
+    sample_status st = SAMPLE_OK;
     FILE *f = fopen(path, "rb");
     if (!f) return SAMPLE_OK; /* the reader reports unreadable files */
-    if (fread(magic, 1, 4, f) != 4 || !is_exr(magic, 4) || fseek(f, 0, SEEK_END) != 0 || (end = ftell(f)) < 0 ||
-        fseek(f, 0, SEEK_SET) != 0) {
-        fclose(f);
-        return SAMPLE_OK;
-    }
-    memset(&s, 0, sizeof s);
-    s.f = f;
-    s.size = (uint64_t)end;
-    st = check(&s, path, err);
+    if (fread(magic, 1, 4, f) == 4 && is_exr(magic, 4) && io_src_file(&s, f)) st = check(&s, path, err);
     fclose(f);
     return st;
 }

@@ -18,6 +18,9 @@
 #include "sample/sample_io.h"
 
 #include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -123,9 +126,27 @@ void io_extension(const char *path, char *ext, size_t ext_size);
 #ifdef __cplusplus
 }
 #endif
+/* io_src.c: the pre-flights' byte source, a buffer or a file (pos bytes
+ * read of size). io_src_byte and io_src_skip return 0 at the end. */
+typedef struct io_src {
+    const unsigned char *mem;
+    FILE *f;
+    uint64_t size, pos;
+} io_src;
+int io_src_byte(io_src *s, int *c);
+int io_src_skip(io_src *s, uint64_t n);
+int io_src_file(io_src *s, FILE *f); /* 0 if its size cannot be found */
+void io_src_memory(io_src *s, const void *data, size_t size);
+
 /* exr_guard.c: reject OpenEXR headers whose attribute sizes exceed the data
  * (before OpenEXR allocates them); other formats pass through untouched. */
 sample_status io_exr_guard_memory(const void *data, size_t size, sample_error *err);
 sample_status io_exr_guard_file(const char *path, sample_error *err);
+
+/* jpeg_guard.c: reject JPEG files whose APP13 (Photoshop IPTC) segment
+ * claims more bytes than it holds (before OpenImageIO's JPEG reader reads
+ * past it); other files pass through untouched. */
+sample_status io_jpeg_guard_memory(const void *data, size_t size, sample_error *err);
+sample_status io_jpeg_guard_file(const char *path, sample_error *err);
 
 #endif

@@ -255,7 +255,8 @@ sample_status sample_io_read_texture(const char *path, const sample_io_options *
     if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: out is NULL");
     *out = NULL;
     if (!path || !*path) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
-    if ((st = io_exr_guard_file(path, err)) != SAMPLE_OK) return st;
+    if ((st = io_exr_guard_file(path, err)) != SAMPLE_OK || (st = io_jpeg_guard_file(path, err)) != SAMPLE_OK)
+        return st;
     return read_source(path, NULL, 0, NULL, o, mip, out, err);
 }
 
@@ -268,6 +269,8 @@ sample_status sample_io_read_memory(const void *data, size_t size, const char *f
     *out = NULL;
     if (!data && size) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
     if (size == 0) return io_fail(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
-    if ((st = io_exr_guard_memory(data, size, err)) != SAMPLE_OK) return st;
+    if ((st = io_exr_guard_memory(data, size, err)) != SAMPLE_OK ||
+        (st = io_jpeg_guard_memory(data, size, err)) != SAMPLE_OK)
+        return st;
     return read_source(NULL, data, size, format_hint, o, mip, out, err);
 }
