@@ -94,20 +94,10 @@ static int is_exr(const unsigned char *p, size_t n)
 
 sample_status io_exr_guard_memory(const void *data, size_t size, sample_error *err)
 {
-    io_src s;
-    if (!is_exr((const unsigned char *)data, size)) return SAMPLE_OK;
-    io_src_memory(&s, data, size);
-    return check(&s, "image in memory", err);
+    return io_src_preflight(NULL, data, size, 4, is_exr, 0, check, err);
 }
 
 sample_status io_exr_guard_file(const char *path, sample_error *err)
 {
-    io_src s;
-    unsigned char magic[4];
-    sample_status st = SAMPLE_OK;
-    FILE *f = fopen(path, "rb");
-    if (!f) return SAMPLE_OK; /* the reader reports unreadable files */
-    if (fread(magic, 1, 4, f) == 4 && is_exr(magic, 4) && io_src_file(&s, f)) st = check(&s, path, err);
-    fclose(f);
-    return st;
+    return io_src_preflight(path, NULL, 0, 4, is_exr, 0, check, err);
 }

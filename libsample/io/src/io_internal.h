@@ -137,6 +137,14 @@ int io_src_byte(io_src *s, int *c);
 int io_src_skip(io_src *s, uint64_t n);
 int io_src_file(io_src *s, FILE *f); /* 0 if its size cannot be found */
 void io_src_memory(io_src *s, const void *data, size_t size);
+/* A pre-flight over the file at path (or, with path NULL, the buffer):
+ * nothing unless its first nmagic bytes are the format's (is_format),
+ * then check() from byte `start` on, named by the path or "image in
+ * memory". An unreadable file passes: the reader reports it. */
+sample_status io_src_preflight(const char *path, const void *data, size_t size, size_t nmagic,
+                               int (*is_format)(const unsigned char *p, size_t n), uint64_t start,
+                               sample_status (*check)(io_src *s, const char *what, sample_error *err),
+                               sample_error *err);
 
 /* exr_guard.c: reject OpenEXR headers whose attribute sizes exceed the data
  * (before OpenEXR allocates them); other formats pass through untouched. */

@@ -42,3 +42,27 @@ void io_src_memory(io_src *s, const void *data, size_t size)
     s->mem = (const unsigned char *)data;
     s->size = size;
 }
+
+sample_status io_src_preflight(const char *path, const void *data, size_t size, size_t nmagic,
+                               int (*is_format)(const unsigned char *p, size_t n), uint64_t start,
+                               sample_status (*check)(io_src *s, const char *what, sample_error *err),
+                               sample_error *err)
+{
+    io_src s;
+    unsigned char magic[16];
+    sample_status st = SAMPLE_OK;
+    FILE *f;
+    if (!path) {
+        if (!is_format((const unsigned char *)data, size)) return SAMPLE_OK;
+        io_src_memory(&s, data, size);
+        s.pos = start;
+        return check(&s, "image in memory", err);
+    }
+    f = fopen(path, "rb");
+    if (!f) return SAMPLE_OK; /* the reader reports unreadable files */
+    if (nmagic <= sizeof magic && fread(magic, 1, nmagic, f) == nmagic && is_format(magic, nmagic) &&
+        io_src_file(&s, f) && io_src_skip(&s, start))
+        st = check(&s, path, err);
+    fclose(f);
+    return st;
+}

@@ -75,24 +75,13 @@ static sample_status check(io_src *s, const char *what, sample_error *err)
 
 static int is_jpeg(const unsigned char *p, size_t n) { return n >= 3 && p[0] == 0xFF && p[1] == 0xD8 && p[2] == 0xFF; }
 
+/* The markers start after the SOI (FF D8). */
 sample_status io_jpeg_guard_memory(const void *data, size_t size, sample_error *err)
 {
-    io_src s;
-    if (!is_jpeg((const unsigned char *)data, size)) return SAMPLE_OK;
-    io_src_memory(&s, data, size);
-    s.pos = 2;
-    return check(&s, "image in memory", err);
+    return io_src_preflight(NULL, data, size, 3, is_jpeg, 2, check, err);
 }
 
 sample_status io_jpeg_guard_file(const char *path, sample_error *err)
 {
-    io_src s;
-    unsigned char magic[3];
-    sample_status st = SAMPLE_OK;
-    FILE *f = fopen(path, "rb");
-    if (!f) return SAMPLE_OK; /* the reader reports unreadable files */
-    if (fread(magic, 1, 3, f) == 3 && is_jpeg(magic, 3) && io_src_file(&s, f) && io_src_skip(&s, 2))
-        st = check(&s, path, err);
-    fclose(f);
-    return st;
+    return io_src_preflight(path, NULL, 0, 3, is_jpeg, 2, check, err);
 }
