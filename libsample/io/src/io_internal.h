@@ -123,9 +123,6 @@ sample_status io_tmp_finish(sample_status st, const char *tmp, const char *path,
 /* Lower-case extension of a path without the dot ("" if none), into ext. */
 void io_extension(const char *path, char *ext, size_t ext_size);
 
-#ifdef __cplusplus
-}
-#endif
 /* io_src.c: the pre-flights' byte source, a buffer or a file (pos bytes
  * read of size). io_src_byte and io_src_skip return 0 at the end. */
 typedef struct io_src {
@@ -156,5 +153,9 @@ sample_status io_exr_guard_file(const char *path, sample_error *err);
  * past it); other files pass through untouched. */
 sample_status io_jpeg_guard_memory(const void *data, size_t size, sample_error *err);
 sample_status io_jpeg_guard_file(const char *path, sample_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

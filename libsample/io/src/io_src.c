@@ -53,7 +53,7 @@ sample_status io_src_preflight(const char *path, const void *data, size_t size, 
     sample_status st = SAMPLE_OK;
     FILE *f;
     if (!path) {
-        if (!is_format((const unsigned char *)data, size)) return SAMPLE_OK;
+        if (!is_format((const unsigned char *)data, size) || start > size) return SAMPLE_OK;
         io_src_memory(&s, data, size);
         s.pos = start;
         return check(&s, "image in memory", err);
