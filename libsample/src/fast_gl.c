@@ -250,6 +250,29 @@ SAMPLE_FORCE_INLINE void texel_pair(sample_format fmt, int nc, const unsigned ch
     *b = tex_decode_v4(fmt, nc, p + texel_bytes(fmt, nc));
 }
 
+/* n texels p, p + pitch, … decoded into out[0 … n − 1]: a level row
+ * (pitch = texel size) in pairs, or a column; tex_readers.row, and the
+ * rows of a bicubic block. */
+SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, size_t pitch, int n,
+                                    float (*out)[4])
+{
+    const size_t tb = texel_bytes(fmt, nc);
+    int k;
+    /* A level row (pitch = texel size, a constant the loop is compiled
+     * for) or a column. */
+    if (pitch == tb) {
+        for (k = 0; k + 1 < n; k += 2) {
+            v4f a, b;
+            texel_pair(fmt, nc, p + (size_t)k * tb, &a, &b);
+            v4_store(out[k], a);
+            v4_store(out[k + 1], b);
+        }
+        if (k < n) v4_store(out[k], texel_v4(fmt, nc, p + (size_t)k * tb));
+    } else {
+        for (k = 0; k < n; ++k) v4_store(out[k], texel_v4(fmt, nc, p + (size_t)k * pitch));
+    }
+}
+
 /* The 2 × 2 block at p (rows stride apart) reconstructed bilinearly
  * (recon_bilerp): the LINEAR taps of a query whose block lies in the
  * level. */
@@ -304,20 +327,13 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
         int x, y;
         cubic_weights(c->smp->cubic, tp->fu, wx, dwx);
         cubic_weights(c->smp->cubic, tp->fv, wy, dwy);
-        for (y = 0; y < 4; ++y) {
-            if (tp->inside) {
-                /* The 4 × 4 block lies in the level: each row's four
-                 * texels are adjacent (plan_level), two pairs. */
-                const unsigned char *p = tp->row[y] + (size_t)tp->col[0] * tb;
-                v4f a, b;
-                for (x = 0; x < 4; x += 2) {
-                    texel_pair(fmt, nc, p + (size_t)x * tb, &a, &b);
-                    v4_store(T[4 * y + x], a);
-                    v4_store(T[4 * y + x + 1], b);
-                }
-            } else {
+        if (tp->inside) {
+            /* The 4 × 4 block lies in the level: each row's four texels
+             * are adjacent (plan_level), read as a level row. */
+            for (y = 0; y < 4; ++y) decode_row(fmt, nc, tp->row[y] + (size_t)tp->col[0] * tb, tb, 4, T + 4 * y);
+        } else {
+            for (y = 0; y < 4; ++y)
                 for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]));
-            }
         }
         recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0,
                             out, dds, ddt);
@@ -570,26 +586,6 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
 }
 
 /* ---- Readers for the footprint filters (tex_readers) --------------------- */
-
-SAMPLE_FORCE_INLINE void decode_row(sample_format fmt, int nc, const unsigned char *p, size_t pitch, int n,
-                                    float (*out)[4])
-{
-    const size_t tb = texel_bytes(fmt, nc);
-    int k;
-    /* A level row (pitch = texel size, a constant the loop is compiled
-     * for) or a column. */
-    if (pitch == tb) {
-        for (k = 0; k + 1 < n; k += 2) {
-            v4f a, b;
-            texel_pair(fmt, nc, p + (size_t)k * tb, &a, &b);
-            v4_store(out[k], a);
-            v4_store(out[k + 1], b);
-        }
-        if (k < n) v4_store(out[k], texel_v4(fmt, nc, p + (size_t)k * tb));
-    } else {
-        for (k = 0; k < n; ++k) v4_store(out[k], texel_v4(fmt, nc, p + (size_t)k * pitch));
-    }
-}
 
 SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format fmt, int nc, int lv,
                                             float s, float t, float out[4], float dds[4],
