@@ -11,39 +11,7 @@
  *   the general path, PB_SIZE: texture side, default 2048)
  */
 #define _GNU_SOURCE
-#include "bench.h"
-
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-
-/* The bench sources it shares (queries.c, engines.c) refer to these; the
- * probe times libsample only. */
-const char *const bench_format_names[BENCH_FMT_COUNT] = {"float", "half", "srgb8"};
-void oiio_ts_opts_init(oiio_ts_opts *o) { memset(o, 0, sizeof *o); }
-int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *t, const oiio_ts_opts *o, const sample_query *q, size_t n, float *rgba,
-                   char *err, size_t errlen)
-{
-    (void)ts, (void)t, (void)o, (void)q, (void)n, (void)rgba, (void)err, (void)errlen;
-    return -1;
-}
-
-static double cpu_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static uint32_t mix(uint32_t x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    return x ^ (x >> 16);
-}
+#include "probe_util.h"
 
 static int find(const char *const *names, int n, const char *want)
 {
@@ -57,10 +25,10 @@ int main(int argc, char **argv)
 {
     const char *filt = argc > 1 ? argv[1] : "trilinear", *set = argc > 2 ? argv[2] : "minify",
                *fmt = argc > 3 ? argv[3] : "float";
-    size_t n = argc > 4 ? strtoul(argv[4], NULL, 10) : 65536, i, nt, b;
+    size_t n = argc > 4 ? strtoul(argv[4], NULL, 10) : 65536, i, nt;
     int runs = argc > 5 ? atoi(argv[5]) : 5, size = getenv("PB_SIZE") ? atoi(getenv("PB_SIZE")) : 2048;
     bench_engine eng[32];
-    int ne = bench_engines(eng, 32), ei = -1, si, fi, k, r;
+    int ne = bench_engines(eng, 32), ei = -1, si, fi, k;
     float *content, *out;
     void *data = NULL;
     sample_image img;
@@ -69,7 +37,7 @@ int main(int argc, char **argv)
     sample_error err;
     sample_query *q;
     sample_sampler smp;
-    double best = 1e30;
+    double best;
     uint32_t h = 0;
 
     for (k = 0; k < ne; ++k)
@@ -81,11 +49,10 @@ int main(int argc, char **argv)
         return 2;
     }
     nt = (size_t)size * (size_t)size * 4;
-    content = malloc(nt * sizeof *content);
+    content = probe_noise(size);
     q = malloc(n * sizeof *q);
     out = malloc(n * 4 * sizeof *out);
     if (!content || !q || !out) return 1;
-    for (i = 0; i < nt; ++i) content[i] = (float)(mix((uint32_t)i) & 0xffff) / 65535.0f;
     img = (sample_image){size, size, 4, SAMPLE_FORMAT_F32, content, 0};
     if (fi == BENCH_FMT_F16) {
         uint16_t *p = malloc(nt * sizeof *p);
@@ -109,23 +76,12 @@ int main(int argc, char **argv)
     bench_queries((bench_set)si, size, q, n);
     smp = eng[ei].smp;
     if (getenv("PB_SCALAR")) smp.options |= SAMPLE_OPT_SCALAR_PATH;
-    for (r = 0; r <= runs; ++r) { /* pass 0: warm-up */
-        double t0 = cpu_now(), t;
-        for (b = 0; b < n; b += 256) {
-            sample_batch_args a;
-            memset(&a, 0, sizeof a);
-            a.count = n - b < 256 ? n - b : 256;
-            a.queries = q + b;
-            a.rgba = out + 4 * b;
-            if (sample_batch(tex, &smp, &a) != SAMPLE_OK) return 1;
-        }
-        t = cpu_now() - t0;
-        if (r > 0 && t < best) best = t;
-    }
+    best = probe_time_batches(tex, &smp, q, n, runs, out);
+    if (best < 0.0) return 1;
     for (i = 0; i < n * 4; ++i) {
         uint32_t u;
         memcpy(&u, &out[i], sizeof u);
-        h = mix(h ^ u);
+        h = probe_mix(h ^ u);
     }
     printf("%-12s %-8s %-6s %7.2f M/s  hash %08x\n", filt, set, fmt, (double)n / best / 1e6, h);
     sample_texture_destroy(tex);

@@ -1,0 +1,79 @@
+/*
+ * What the developer's probes (perf_probe.c, fp_floor.c) share: the stubs
+ * for the bench sources they link (queries.c, engines.c; the probes time
+ * libsample only), the clock, the texture and the timed loop of
+ * sample_batch calls. Header-only: each probe is one translation unit
+ * (scripts/perf_probe.sh builds it).
+ */
+#ifndef PROBE_UTIL_H
+#define PROBE_UTIL_H
+
+#include "bench.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+const char *const bench_format_names[BENCH_FMT_COUNT] = {"float", "half", "srgb8"};
+void oiio_ts_opts_init(oiio_ts_opts *o) { memset(o, 0, sizeof *o); }
+int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *t, const oiio_ts_opts *o, const sample_query *q, size_t n, float *rgba,
+                   char *err, size_t errlen)
+{
+    (void)ts, (void)t, (void)o, (void)q, (void)n, (void)rgba, (void)err, (void)errlen;
+    return -1;
+}
+
+static double probe_cpu_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static uint32_t probe_mix(uint32_t x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    return x ^ (x >> 16);
+}
+
+/* The probes' texture content: size² RGBA of uniform noise in [0, 1]
+ * (every mip level different from its neighbours). NULL if out of memory. */
+static float *probe_noise(int size)
+{
+    size_t nt = (size_t)size * (size_t)size * 4, i;
+    float *c = malloc(nt * sizeof *c);
+    if (c)
+        for (i = 0; i < nt; ++i) c[i] = (float)(probe_mix((uint32_t)i) & 0xffff) / 65535.0f;
+    return c;
+}
+
+/* The best CPU time of `runs` passes (after one untimed warm-up) of
+ * sample_batch over the n queries in batches of 256, as the bench calls
+ * it; −1 if a call fails. */
+static double probe_time_batches(const sample_texture *tex, const sample_sampler *smp, const sample_query *q, size_t n,
+                                 int runs, float *out)
+{
+    double best = 1e30;
+    int r;
+    for (r = 0; r <= runs; ++r) {
+        double t0 = probe_cpu_now(), t;
+        size_t b;
+        for (b = 0; b < n; b += 256) {
+            sample_batch_args a;
+            memset(&a, 0, sizeof a);
+            a.count = n - b < 256 ? n - b : 256;
+            a.queries = q + b;
+            a.rgba = out + 4 * b;
+            if (sample_batch(tex, smp, &a) != SAMPLE_OK) return -1.0;
+        }
+        t = probe_cpu_now() - t0;
+        if (r > 0 && t < best) best = t;
+    }
+    return best;
+}
+
+#endif /* PROBE_UTIL_H */
