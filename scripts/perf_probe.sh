@@ -1,7 +1,7 @@
 #!/bin/sh
 # Build a developer's probe against a build's libsample and run it: the probe
 # is this script's own name (scripts/perf_probe.sh runs scripts/perf_probe.c,
-# scripts/fp_floor.sh, a link to this file, runs scripts/fp_floor.c).
+# scripts/lean_footprint.sh, a link to this file, runs scripts/lean_footprint.c).
 #
 # perf_probe: doc/performance-passes.md's step tables (issue 10's passes).
 #   scripts/perf_probe.sh BUILD_DIR FILTER SET FORMAT [QUERIES [RUNS]]
@@ -10,11 +10,11 @@
 # the tables count them, over QUERIES × (RUNS + 1) queries:
 #   PB_CALLGRIND=1 scripts/perf_probe.sh build ewa aniso8 float 8192 1
 #
-# fp_floor: libsample's trilinear and Blinn–Newell or EWA beside a lean
+# lean_footprint: libsample's trilinear and Blinn–Newell or EWA beside a lean
 # version of the footprint filter written only for the bench's case
 # (doc/performance-passes-2.md, fourteenth pass; PB_SIZE=256: in cache).
-#   scripts/fp_floor.sh BUILD_DIR [blinn-newell|ewa [SET [QUERIES [RUNS]]]]
-#   e.g. scripts/fp_floor.sh build blinn-newell minify 65536 5
+#   scripts/lean_footprint.sh BUILD_DIR [blinn-newell|ewa [SET [QUERIES [RUNS]]]]
+#   e.g. scripts/lean_footprint.sh build blinn-newell minify 65536 5
 set -eu
 probe=$(basename "$0" .sh)
 if [ "$#" -lt 1 ]; then

@@ -1,5 +1,5 @@
 /*
- * What the developer's probes (perf_probe.c, fp_floor.c) share: the stubs
+ * What the developer's probes (perf_probe.c, lean_footprint.c) share: the stubs
  * for the bench sources they link (queries.c, engines.c; the probes time
  * libsample only), the clock, the texture and the timed loop of
  * sample_batch calls. Header-only: each probe is one translation unit

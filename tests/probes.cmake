@@ -1,0 +1,20 @@
+# The developer's probes in scripts/ (doc/performance-passes.md,
+# doc/performance-passes-2.md), built here so that they keep compiling
+# against the library they measure. lean_footprint is also a test: its
+# lean Blinn–Newell and EWA, written apart from libsample's, must give
+# libsample's results to 1e-5 on bench's query sets (small textures,
+# where many footprints wrap). Its timings are printed, never judged.
+foreach(probe perf_probe lean_footprint)
+  add_executable(${probe} ${PROJECT_SOURCE_DIR}/scripts/${probe}.c ${PROJECT_SOURCE_DIR}/tools/bench/queries.c
+                          ${PROJECT_SOURCE_DIR}/tools/bench/engines.c)
+  target_include_directories(${probe} PRIVATE ${PROJECT_SOURCE_DIR}/libsample/src ${PROJECT_SOURCE_DIR}/tools/bench
+                                              ${PROJECT_SOURCE_DIR}/tools/oiio)
+  target_link_libraries(${probe} PRIVATE sample m)
+  target_compile_options(${probe} PRIVATE ${SAMPLE_WARNINGS})
+endforeach()
+foreach(case "blinn-newell;minify" "blinn-newell;aniso8" "ewa;minify" "ewa;aniso8")
+  list(GET case 0 filt)
+  list(GET case 1 set)
+  add_test(NAME lean_footprint_${filt}_${set} COMMAND lean_footprint ${filt} ${set} 4096 1)
+  set_tests_properties(lean_footprint_${filt}_${set} PROPERTIES ENVIRONMENT PB_SIZE=64 TIMEOUT 120)
+endforeach()
