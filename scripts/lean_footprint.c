@@ -399,9 +399,7 @@ int main(int argc, char **argv)
     int ne = bench_engines(eng, 32), tri = -1, fp = -1;
     float *content, *o_tri, *o_fp, *o_ln;
     sample_image img;
-    sample_mip_params mip;
     sample_texture *tex;
-    sample_error err;
     sample_query *q;
     double t_tri, t_fp, t_ls, t_lv, d, worst;
 
@@ -424,12 +422,7 @@ int main(int argc, char **argv)
     o_ln = malloc(n * 16);
     if (!content || !q || !o_tri || !o_fp || !o_ln) return 1;
     img = (sample_image){size, size, 4, SAMPLE_FORMAT_F32, content, 0};
-    sample_mip_params_init(&mip);
-    mip.wrap_s = mip.wrap_t = SAMPLE_WRAP_REPEAT;
-    if (sample_texture_create(&img, &mip, &tex, &err) != SAMPLE_OK) {
-        fprintf(stderr, "%s\n", err.message);
-        return 1;
-    }
+    if (!(tex = probe_texture(&img))) return 1;
     bench_queries((bench_set)si, size, q, n);
     t_tri = probe_time_batches(tex, &eng[tri].smp, q, n, runs, o_tri);
     t_fp = probe_time_batches(tex, &eng[fp].smp, q, n, runs, o_fp);

@@ -32,9 +32,7 @@ int main(int argc, char **argv)
     float *content, *out;
     void *data = NULL;
     sample_image img;
-    sample_mip_params mip;
     sample_texture *tex;
-    sample_error err;
     sample_query *q;
     sample_sampler smp;
     double best;
@@ -67,12 +65,7 @@ int main(int argc, char **argv)
         img.data = data = p;
         img.format = SAMPLE_FORMAT_SRGB8;
     }
-    sample_mip_params_init(&mip);
-    mip.wrap_s = mip.wrap_t = SAMPLE_WRAP_REPEAT;
-    if (sample_texture_create(&img, &mip, &tex, &err) != SAMPLE_OK) {
-        fprintf(stderr, "%s\n", err.message);
-        return 1;
-    }
+    if (!(tex = probe_texture(&img))) return 1;
     bench_queries((bench_set)si, size, q, n);
     smp = eng[ei].smp;
     if (getenv("PB_SCALAR")) smp.options |= SAMPLE_OPT_SCALAR_PATH;

@@ -1,6 +1,6 @@
 /*
- * What the developer's probes (perf_probe.c, lean_footprint.c) share: the stubs
- * for the bench sources they link (queries.c, engines.c; the probes time
+ * What the developer's probes (perf_probe.c, lean_footprint.c) share: the
+ * bench sources they link without OIIO (bench_no_oiio.h; the probes time
  * libsample only), the clock, the texture and the timed loop of
  * sample_batch calls. Header-only: each probe is one translation unit
  * (scripts/perf_probe.sh builds it).
@@ -8,21 +8,12 @@
 #ifndef PROBE_UTIL_H
 #define PROBE_UTIL_H
 
-#include "bench.h"
+#include "bench_no_oiio.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-const char *const bench_format_names[BENCH_FMT_COUNT] = {"float", "half", "srgb8"};
-void oiio_ts_opts_init(oiio_ts_opts *o) { memset(o, 0, sizeof *o); }
-int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *t, const oiio_ts_opts *o, const sample_query *q, size_t n, float *rgba,
-                   char *err, size_t errlen)
-{
-    (void)ts, (void)t, (void)o, (void)q, (void)n, (void)rgba, (void)err, (void)errlen;
-    return -1;
-}
 
 static double probe_cpu_now(void)
 {
@@ -49,6 +40,20 @@ static float *probe_noise(int size)
     if (c)
         for (i = 0; i < nt; ++i) c[i] = (float)(probe_mix((uint32_t)i) & 0xffff) / 65535.0f;
     return c;
+}
+
+/* img as the bench makes its textures (a box pyramid, REPEAT); NULL after
+ * printing the error. */
+static sample_texture *probe_texture(const sample_image *img)
+{
+    sample_mip_params mip;
+    sample_texture *tex;
+    sample_error err;
+    sample_mip_params_init(&mip);
+    mip.wrap_s = mip.wrap_t = SAMPLE_WRAP_REPEAT;
+    if (sample_texture_create(img, &mip, &tex, &err) == SAMPLE_OK) return tex;
+    fprintf(stderr, "%s\n", err.message);
+    return NULL;
 }
 
 /* The best CPU time of `runs` passes (after one untimed warm-up) of

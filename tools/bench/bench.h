@@ -99,12 +99,23 @@ typedef struct bench_timing {
     int runs;
 } bench_timing;
 
-/* Time `runs` passes of all n queries on `threads` threads (each thread a
- * contiguous slice, in batches of `batch`), after one untimed warm-up pass.
- * Returns 0, or −1 if a pass failed. */
+/* Time `runs` passes of all n queries on `threads` threads (tiles taken
+ * first come first served, in batches of `batch`), after one untimed
+ * warm-up pass. Returns 0, or −1 if a pass failed. */
 int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
                const sample_query *q, size_t n, int threads, int runs, size_t batch,
                bench_timing *out);
+
+/* bench_time in three steps, so that several engines' passes can take
+ * turns (cmd_bench.c): open makes the pool and runs the warm-up pass (NULL
+ * on failure), each bench_timer_pass times one pass (−1 on failure or past
+ * `runs`), close fills *out once all `runs` passes are timed (0; −1
+ * otherwise) and frees the timer either way. */
+typedef struct bench_timer bench_timer;
+bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const sample_query *q,
+                              size_t n, int threads, int runs, size_t batch);
+int bench_timer_pass(bench_timer *tm);
+int bench_timer_close(bench_timer *tm, bench_timing *out);
 
 /* ---- Report (report.c) ------------------------------------------------ */
 

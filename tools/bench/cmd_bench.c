@@ -210,33 +210,70 @@ typedef struct bench_run {
 } bench_run;
 
 /* Every selected engine on one texture and query set, at 1 and at all
- * threads. Returns 0, or nonzero after reporting. */
+ * threads. The 1-thread passes take turns: pass r of every engine runs
+ * after pass r − 1 of all of them, so that a spell in which the machine
+ * runs slower (another process, a neighbour on the host, a clock change)
+ * falls on libsample and on OIIO alike and the 1-thread ratios stay
+ * fair; on a host whose one vCPU was intermittently half as fast,
+ * engine-after-engine runs gave ratios off by up to 2× (doc/benchmarks.md).
+ * The all-thread passes stay engine after engine: a pool's workers poll
+ * for a while after each pass (timing.c), which would take the next
+ * engine's cores. Results keep the order engine, then threads. Returns 0,
+ * or nonzero after reporting. */
 static int measure(bench_run *b, const bench_texture *tex, bench_format fmt, bench_set set,
                    const sample_query *q, size_t *done, size_t total)
 {
-    int e, k, nthr = b->o.threads > 1 ? 2 : 1;
+    int e, k, r, nthr = b->o.threads > 1 ? 2 : 1, rc = 0;
     const int thr[2] = {1, b->o.threads};
+    bench_timer *tm[MAX_ENGINES] = {NULL};
+    size_t slot[MAX_ENGINES] = {0}, first = b->nres;
+    int sel[MAX_ENGINES] = {0};
+    const char *failed = NULL;
+
     for (e = 0; e < b->neng; ++e) {
         const bench_engine *en = &b->eng[e];
         double tps = -1.0;
         if (!engine_selected(b->eng, b->neng, e, b->o.filters) || (en->oiio && !b->ts)) continue;
         if (!en->oiio && texels_per_sample(en, tex, q, b->o.queries, &tps) != 0) return -1;
+        slot[e] = b->nres;
+        sel[e] = 1;
         for (k = 0; k < nthr; ++k) {
-            bench_result *r = &b->res[b->nres];
-            r->set = set;
-            r->format = fmt;
-            r->engine = e;
-            r->threads = thr[k];
-            r->texels_per_sample = tps;
-            if (bench_time(en, tex, b->ts, q, b->o.queries, thr[k], b->o.runs, b->o.batch,
-                           &r->timing) != 0)
-                return cli_runtime_error("bench", "%s on %s/%s failed", en->name,
-                                         bench_set_names[set], bench_format_names[fmt]);
-            b->nres++;
-            cli_progress("bench", ++*done, total);
+            bench_result *res = &b->res[b->nres++];
+            res->set = set;
+            res->format = fmt;
+            res->engine = e;
+            res->threads = thr[k];
+            res->texels_per_sample = tps;
+        }
+        if (!(tm[e] = bench_timer_open(en, tex, b->ts, q, b->o.queries, 1, b->o.runs, b->o.batch))) {
+            failed = en->name;
+            break;
         }
     }
-    return 0;
+    for (r = 0; r < b->o.runs && !failed; ++r)
+        for (e = 0; e < b->neng && !failed; ++e)
+            if (tm[e] && bench_timer_pass(tm[e]) != 0) failed = b->eng[e].name;
+    for (e = 0; e < b->neng; ++e) {
+        if (!tm[e]) continue;
+        if (bench_timer_close(tm[e], &b->res[slot[e]].timing) != 0 && !failed) failed = b->eng[e].name;
+        tm[e] = NULL;
+        if (!failed) cli_progress("bench", ++*done, total);
+    }
+    for (k = 1; k < nthr && !failed; ++k)
+        for (e = 0; e < b->neng && !failed; ++e) {
+            if (!sel[e]) continue;
+            if (bench_time(&b->eng[e], tex, b->ts, q, b->o.queries, thr[k], b->o.runs, b->o.batch,
+                           &b->res[slot[e] + (size_t)k].timing) != 0)
+                failed = b->eng[e].name;
+            else
+                cli_progress("bench", ++*done, total);
+        }
+    if (failed) {
+        b->nres = first;
+        rc = cli_runtime_error("bench", "%s on %s/%s failed", failed, bench_set_names[set],
+                               bench_format_names[fmt]);
+    }
+    return rc;
 }
 
 static int count_bits(unsigned m)

@@ -173,60 +173,117 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-               const sample_query *q, size_t n, int threads, int runs, size_t batch,
-               bench_timing *out)
-{
-    float *rgba = malloc(n * 4 * sizeof *rgba);
-    job *jobs = calloc((size_t)threads, sizeof *jobs);
-    pthread_t *tid = calloc((size_t)threads, sizeof *tid);
-    double *sps = calloc((size_t)runs, sizeof *sps);
-    pool p = {PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, 0, 0, 0};
-    size_t batches, tile;
-    int r, k, rc = -1, started = 1;
+struct bench_timer {
+    job *jobs;
+    pthread_t *tid;
+    float *rgba;
+    double *sps; /* samples per second of each timed pass */
+    int threads, runs, done, started;
+    size_t n;
+    pool p;
+};
 
-    if (!rgba || !jobs || !tid || !sps || runs < 1 || threads < 1 || batch < 1) goto done;
+static void timer_stop(bench_timer *tm)
+{
+    int k;
+    pthread_mutex_lock(&tm->p.mu);
+    atomic_store_explicit(&tm->p.quit, 1, memory_order_relaxed);
+    pthread_cond_broadcast(&tm->p.go);
+    pthread_mutex_unlock(&tm->p.mu);
+    for (k = 1; k < tm->started; ++k) pthread_join(tm->tid[k], NULL);
+    pthread_mutex_destroy(&tm->p.mu);
+    pthread_cond_destroy(&tm->p.go);
+    pthread_cond_destroy(&tm->p.done);
+    free(tm->rgba);
+    free(tm->jobs);
+    free(tm->tid);
+    free(tm->sps);
+    free(tm);
+}
+
+bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const sample_query *q,
+                              size_t n, int threads, int runs, size_t batch)
+{
+    bench_timer *tm;
+    size_t batches, tile;
+    int k;
+
+    if (runs < 1 || threads < 1 || batch < 1 || !(tm = calloc(1, sizeof *tm))) return NULL;
+    tm->threads = threads;
+    tm->runs = runs;
+    tm->n = n;
+    tm->started = 1;
+    atomic_init(&tm->p.gen, 0u);
+    atomic_init(&tm->p.busy, 0);
+    atomic_init(&tm->p.quit, 0);
+    atomic_init(&tm->p.next, 0u);
+    pthread_mutex_init(&tm->p.mu, NULL);
+    pthread_cond_init(&tm->p.go, NULL);
+    pthread_cond_init(&tm->p.done, NULL);
+    tm->rgba = malloc(n * 4 * sizeof *tm->rgba);
+    tm->jobs = calloc((size_t)threads, sizeof *tm->jobs);
+    tm->tid = calloc((size_t)threads, sizeof *tm->tid);
+    tm->sps = calloc((size_t)runs, sizeof *tm->sps);
+    if (!tm->rgba || !tm->jobs || !tm->tid || !tm->sps) goto fail;
     batches = n / ((size_t)threads * BENCH_TILES_PER_THREAD * batch);
     tile = batch * (batches < 1 ? 1 : batches > BENCH_TILE_BATCHES ? BENCH_TILE_BATCHES : batches);
     for (k = 0; k < threads; ++k) {
-        job *j = &jobs[k];
+        job *j = &tm->jobs[k];
         j->e = e;
         j->t = t;
         j->ts = ts;
         j->q = q;
-        j->rgba = rgba;
+        j->rgba = tm->rgba;
         j->batch = batch;
         j->n = n;
         j->tile = tile;
-        j->p = &p;
+        j->p = &tm->p;
     }
     /* A pool that cannot be made whole is not the measurement asked for:
      * fail rather than time fewer threads. */
-    for (; started < threads; ++started)
-        if (pthread_create(&tid[started], NULL, worker, &jobs[started]) != 0) goto stop;
-    /* Run 0 is the warm-up: it faults in the result pages and, for OIIO,
-     * reads every tile into the cache. */
-    for (r = -1; r < runs; ++r) {
-        double s = pass(jobs, &p, threads);
-        if (s < 0.0) goto stop;
-        if (r >= 0) sps[r] = (double)n / (s > 0.0 ? s : 1e-9);
+    for (; tm->started < threads; ++tm->started)
+        if (pthread_create(&tm->tid[tm->started], NULL, worker, &tm->jobs[tm->started]) != 0) goto fail;
+    /* The warm-up pass: it faults in the result pages and, for OIIO, reads
+     * every tile into the cache. */
+    if (pass(tm->jobs, &tm->p, threads) < 0.0) goto fail;
+    return tm;
+fail:
+    timer_stop(tm);
+    return NULL;
+}
+
+int bench_timer_pass(bench_timer *tm)
+{
+    double s;
+    if (tm->done >= tm->runs || (s = pass(tm->jobs, &tm->p, tm->threads)) < 0.0) return -1;
+    tm->sps[tm->done++] = (double)tm->n / (s > 0.0 ? s : 1e-9);
+    return 0;
+}
+
+int bench_timer_close(bench_timer *tm, bench_timing *out)
+{
+    int rc = -1;
+    if (!tm) return -1;
+    if (tm->done == tm->runs) {
+        qsort(tm->sps, (size_t)tm->runs, sizeof *tm->sps, cmp_double);
+        out->runs = tm->runs;
+        out->min = tm->sps[0];
+        out->max = tm->sps[tm->runs - 1];
+        out->median = tm->runs % 2 ? tm->sps[tm->runs / 2] : 0.5 * (tm->sps[tm->runs / 2 - 1] + tm->sps[tm->runs / 2]);
+        rc = 0;
     }
-    qsort(sps, (size_t)runs, sizeof *sps, cmp_double);
-    out->runs = runs;
-    out->min = sps[0];
-    out->max = sps[runs - 1];
-    out->median = runs % 2 ? sps[runs / 2] : 0.5 * (sps[runs / 2 - 1] + sps[runs / 2]);
-    rc = 0;
-stop:
-    pthread_mutex_lock(&p.mu);
-    p.quit = 1;
-    pthread_cond_broadcast(&p.go);
-    pthread_mutex_unlock(&p.mu);
-    for (k = 1; k < started; ++k) pthread_join(tid[k], NULL);
-done:
-    free(rgba);
-    free(jobs);
-    free(tid);
-    free(sps);
+    timer_stop(tm);
     return rc;
+}
+
+int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
+               const sample_query *q, size_t n, int threads, int runs, size_t batch,
+               bench_timing *out)
+{
+    bench_timer *tm = bench_timer_open(e, t, ts, q, n, threads, runs, batch);
+    int r;
+    if (!tm) return -1;
+    for (r = 0; r < runs; ++r)
+        if (bench_timer_pass(tm) != 0) break;
+    return bench_timer_close(tm, out);
 }
