@@ -213,9 +213,8 @@ typedef struct bench_run {
  * threads. The 1-thread passes take turns: pass r of every engine runs
  * after pass r − 1 of all of them, so that a spell in which the machine
  * runs slower (another process, a neighbour on the host, a clock change)
- * falls on libsample and on OIIO alike and the 1-thread ratios stay
- * fair; on a host whose one vCPU was intermittently half as fast,
- * engine-after-engine runs gave ratios off by up to 2× (doc/benchmarks.md).
+ * falls on libsample and on OIIO alike instead of on one engine's whole
+ * measurement — the usual defence of an A/B timing (doc/benchmarks.md).
  * The all-thread passes stay engine after engine: a pool's workers poll
  * for a while after each pass (timing.c), which would take the next
  * engine's cores. Results keep the order engine, then threads. Returns 0,
