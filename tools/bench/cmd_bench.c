@@ -244,11 +244,10 @@ static int measure(bench_run *b, const bench_texture *tex, bench_format fmt, ben
             res->threads = thr[k];
             res->texels_per_sample = tps;
         }
-        if (!(tm[e] = bench_timer_open(en, tex, b->ts, q, b->o.queries, 1, b->o.runs, b->o.batch))) {
-            failed = en->name;
-            break;
-        }
     }
+    for (e = 0; e < b->neng && !failed; ++e)
+        if (sel[e] && !(tm[e] = bench_timer_open(&b->eng[e], tex, b->ts, q, b->o.queries, 1, b->o.runs, b->o.batch)))
+            failed = b->eng[e].name;
     for (r = 0; r < b->o.runs && !failed; ++r)
         for (e = 0; e < b->neng && !failed; ++e)
             if (tm[e] && bench_timer_pass(tm[e]) != 0) failed = b->eng[e].name;
