@@ -410,7 +410,8 @@ int main(int argc, char **argv)
         if (!strcmp(eng[k].name, "trilinear")) tri = k;
         if (!strcmp(eng[k].name, filt) && (ewa || !strcmp(filt, "blinn-newell"))) fp = k;
     }
-    if (si < 0 || tri < 0 || fp < 0 || n == 0 || runs < 1 || size < 1) {
+    if (si < 0 || tri < 0 || fp < 0 || n == 0 || n > PROBE_MAX_QUERIES || runs < 1 || size < 1 ||
+        size > PROBE_MAX_SIZE) {
         fprintf(stderr, "usage: lean_footprint [blinn-newell|ewa [SET [QUERIES [RUNS]]]]"
                         "   (env PB_SIZE: texture side, default 2048)\n");
         return 2;

@@ -42,7 +42,8 @@ int main(int argc, char **argv)
         if (!eng[k].oiio && !strcmp(eng[k].name, filt)) ei = k;
     si = find(bench_set_names, BENCH_SET_COUNT, set);
     fi = find(bench_format_names, BENCH_FMT_COUNT, fmt);
-    if (ei < 0 || si < 0 || fi < 0 || n == 0 || runs < 1 || size < 1) {
+    if (ei < 0 || si < 0 || fi < 0 || n == 0 || n > PROBE_MAX_QUERIES || runs < 1 || size < 1 ||
+        size > PROBE_MAX_SIZE) {
         fprintf(stderr, "usage: perf_probe FILTER SET FORMAT [QUERIES [RUNS]]\n");
         return 2;
     }

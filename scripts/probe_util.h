@@ -15,6 +15,11 @@
 #include <string.h>
 #include <time.h>
 
+/* The most queries and the largest texture side a probe takes: the
+ * buffers' byte counts (n × 16, side² × 16) then cannot overflow. */
+#define PROBE_MAX_QUERIES ((size_t)1 << 26)
+#define PROBE_MAX_SIZE 16384
+
 static double probe_cpu_now(void)
 {
     struct timespec t;
