@@ -41,12 +41,7 @@ static sample_texture *tex_from(int w, int h, texfn f, int mip)
 static sample_ctx ctx_for(const sample_texture *t, const sample_sampler *s)
 {
     sample_ctx c;
-    c.tex = t;
-    c.smp = s;
-    memcpy(c.border, s->border_color, sizeof c.border);
-    c.base = s->base_level < t->nlevels ? s->base_level : t->nlevels - 1;
-    c.maxlev = s->max_level < t->nlevels - 1 ? s->max_level : t->nlevels - 1;
-    if (c.maxlev < c.base) c.maxlev = c.base;
+    ctx_init(&c, t, s, isa_kernels_active());
     return c;
 }
 

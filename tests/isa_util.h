@@ -9,6 +9,7 @@
 #define SAMPLE_TEST_ISA_UTIL_H
 
 #include "internal.h"
+#include "sample/testing.h"
 
 #include <stdio.h>
 

@@ -1,6 +1,6 @@
 /*
- * The fast path of sample_batch (fast_gl.c) against the general path
- * (SAMPLE_OPT_SCALAR_PATH): for every format × channel count, wrap mode,
+ * The fast path of sample_batch (fast_gl.c) against the reference path
+ * (sample_batch_reference, sample/testing.h): for every format × channel count, wrap mode,
  * OpenGL min/mag filter (cubic included) and option, random queries in
  * range, out of range, huge, negative and non-finite (and the same sets
  * with every float finite, which the fast path plans in passes), with and without
@@ -9,8 +9,8 @@
  *
  * All of it runs once per instruction set the fast path was built for and
  * this CPU runs (isa.c: scalar, SSE2, AVX2, AVX-512), on the same query
- * sets, against one reference: the general path with the portable scalar
- * readers. So every build is checked against the same bits, not only
+ * sets, against one reference: the reference path, one query at a time
+ * with the reference readers. So every build is checked against the same bits, not only
  * against itself.
  */
 #include "check.h"
@@ -24,7 +24,7 @@
 #define RNG_SEED 0x243F6A8885A308D3ull
 static uint64_t rng_state = RNG_SEED;
 
-/* The instruction set under test; the reference always runs "scalar". */
+/* The instruction set under test. */
 static const char *test_isa = "scalar";
 
 static uint32_t rnd(void)
@@ -173,19 +173,14 @@ static void make_finite(sample_query *q, float *bias, sample_quad *quad)
     }
 }
 
-/* Run `count` queries in batches of `chunk`, through the general path and
- * the scalar build's readers when `scalar` (the reference), through the
- * fast path of test_isa otherwise; extras (derivatives, stats, bias,
+/* Run `count` queries in batches of `chunk`, through the reference path
+ * when `scalar`, through the fast path of test_isa otherwise; extras (derivatives, stats, bias,
  * corners) by the bits of `what`. Leaves test_isa running. */
 static void run(const sample_texture *tex, sample_sampler s, int scalar, const sample_query *q,
                 const float *bias, const sample_quad *quad, unsigned what, size_t chunk, outputs *o)
 {
     size_t i;
     memset(o, 0xA5, sizeof *o);
-    if (scalar) {
-        s.options |= SAMPLE_OPT_SCALAR_PATH;
-        CHECK(sample_isa_force("scalar") == 0, "scalar kernels");
-    }
     for (i = 0; i < NQ; i += chunk) {
         sample_batch_args a;
         memset(&a, 0, sizeof a);
@@ -197,9 +192,9 @@ static void run(const sample_texture *tex, sample_sampler s, int scalar, const s
         if (what & 4) a.stats = o->st + i;
         if (what & 8) a.lod_bias = bias + i;
         if (what & 16) a.corners = quad + i;
-        CHECK(sample_batch(tex, &s, &a) == SAMPLE_OK, "sample_batch");
+        CHECK((scalar ? sample_batch_reference(tex, &s, &a) : sample_batch(tex, &s, &a)) == SAMPLE_OK,
+              "sample_batch");
     }
-    CHECK(sample_isa_force(test_isa) == 0, "%s kernels", test_isa);
 }
 
 static int same(const outputs *x, const outputs *y, const sample_texture *tex, const sample_sampler *s,
@@ -467,12 +462,6 @@ static void test_lambda_lanes(void)
     sample_texture_destroy(tex);
 }
 
-static void test_scalar_option_value(void)
-{
-    /* Additive: the next free bit after the existing options. */
-    CHECK(SAMPLE_OPT_SCALAR_PATH == 1u << 4, "bit %u", (unsigned)SAMPLE_OPT_SCALAR_PATH);
-}
-
 /* floats_finite's bit test against isfinite on the boundaries of every
  * class (±0, subnormals, FLT_MAX, ±inf, quiet and signalling NaNs) and on
  * random bit patterns; batch_range_finite sees a non-finite float in any
@@ -537,7 +526,6 @@ int main(void)
         RUN(test_threads);
     }
     CHECK(sample_isa_force(NULL) == 0, "automatic choice");
-    RUN(test_scalar_option_value);
     RUN(test_range_finite);
     return check_finish();
 }

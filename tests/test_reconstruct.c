@@ -5,6 +5,7 @@
  */
 #include "check.h"
 #include "internal.h"
+#include "sample/testing.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -130,13 +131,13 @@ static void unorm8_every_code(void)
         for (path = 0; path < 2; ++path) {
             sample_sampler s;
             sampler_for(&s, SAMPLE_NEAREST, SAMPLE_WRAP_CLAMP_TO_EDGE);
-            if (path) s.options |= SAMPLE_OPT_SCALAR_PATH;
             for (c = 0; c < 256; ++c) {
                 sample_query q = {0};
                 float out[4];
                 q.s = ((float)c + 0.5f) / 256.0f;
                 q.t = 0.5f;
-                CHECK(sample_one(t, &s, &q, out) == SAMPLE_OK, "sample");
+                sample_batch_args a = {.count = 1, .queries = &q, .rgba = out};
+                CHECK((path ? sample_batch_reference(t, &s, &a) : sample_batch(t, &s, &a)) == SAMPLE_OK, "sample");
                 for (k = f == SAMPLE_FORMAT_SRGB8 ? 3 : 0; k < 4; ++k) {
                     float want = (float)((double)raw[4 * c + k] / 255.0);
                     CHECK(memcmp(&out[k], &want, 4) == 0, "%s path %d code %d channel %d: %.9g vs %.9g",

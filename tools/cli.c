@@ -109,8 +109,7 @@ const char cli_sampler_help[] =
     "  --nearest-level-floor                    NEAREST_MIPMAP_*: floor(base+lambda+1/2)\n"
     "  --legacy-switchover                      pre-GL-4.5 c = 0.5 rule\n"
     "  --aniso-pow2                             round the anisotropic probe count up to 2^k\n"
-    "  --bn-area-weight                         Blinn-Newell corners: screen-space (area) weights\n"
-    "  --scalar-path                            force the reference path (same results, slower)\n";
+    "  --bn-area-weight                         Blinn-Newell corners: screen-space (area) weights\n";
 
 #define ENUM_FLAG(opt, parse, field, what)                                          \
     if (cli_opt(argc, argv, i, opt, &v)) {                                          \
@@ -184,7 +183,6 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     if (cli_opt(argc, argv, i, "--legacy-switchover", NULL)) { s->options |= SAMPLE_OPT_LEGACY_SWITCHOVER; return 1; }
     if (cli_opt(argc, argv, i, "--aniso-pow2", NULL)) { s->options |= SAMPLE_OPT_ANISO_POW2; return 1; }
     if (cli_opt(argc, argv, i, "--bn-area-weight", NULL)) { s->options |= SAMPLE_OPT_BN_AREA_WEIGHT; return 1; }
-    if (cli_opt(argc, argv, i, "--scalar-path", NULL)) { s->options |= SAMPLE_OPT_SCALAR_PATH; return 1; }
     return 0;
 }
 

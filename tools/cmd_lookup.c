@@ -4,6 +4,7 @@
  * same texels, same sampler state, same queries, compare the floats.
  */
 #include "cli.h"
+#include "sample/testing.h"
 #include "commands.h"
 #include "texload.h"
 
@@ -30,7 +31,9 @@ static const char help[] =
     "                          (used by --filter blinn-newell)\n"
     "  --out FILE              float32 RGBA per query (default: none)\n"
     "  --text                  print 's t -> r g b a' per query on stdout\n"
-    "  --stats                 print texels read per query (mean, max) on stderr\n\n";
+    "  --stats                 print texels read per query (mean, max) on stderr\n"
+    "  --reference-path        sample through the reference path (the same results,\n"
+    "                          slower; sample/testing.h)\n\n";
 
 int cmd_lookup(int argc, char **argv)
 {
@@ -39,7 +42,7 @@ int cmd_lookup(int argc, char **argv)
     sample_sampler smp;
     sample_mip_params mip;
     const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v;
-    int text = 0, want_stats = 0, i, rc = EXIT_RUNTIME;
+    int text = 0, want_stats = 0, reference = 0, i, rc = EXIT_RUNTIME;
     void *qdata = NULL, *cdata = NULL;
     size_t qsize = 0, csize = 0, n;
     sample_texture *tex = NULL;
@@ -56,6 +59,10 @@ int cmd_lookup(int argc, char **argv)
         if (cli_is_help(argv[i])) {
             printf("%s%s", help, cli_sampler_help);
             return EXIT_OK;
+        }
+        if (cli_opt(argc, argv, &i, "--reference-path", NULL)) {
+            reference = 1;
+            continue;
         }
         if ((r = cli_sampler_flag(sub, argc, argv, &i, &smp)) != 0) {
             if (r < 0) return EXIT_USAGE;
@@ -120,7 +127,7 @@ int cmd_lookup(int argc, char **argv)
     a.corners = (const sample_quad *)cdata;
     a.rgba = out;
     a.stats = stats;
-    if ((st = sample_batch(tex, &smp, &a)) != SAMPLE_OK) {
+    if ((st = (reference ? sample_batch_reference : sample_batch)(tex, &smp, &a)) != SAMPLE_OK) {
         cli_runtime_error(sub, "sampling failed: %s", sample_strerror(st));
         goto done;
     }

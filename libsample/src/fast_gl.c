@@ -34,9 +34,9 @@
  *    tables tex_decode_v4 reads, and RGBA halves two texels at a time
  *    (texel_v4, texel_pair): the same values by fewer instructions.
  *
- * Identity with the general path is tested for every format, channel
- * count, wrap mode and filter (tests/test_fastpath.c);
- * SAMPLE_OPT_SCALAR_PATH turns this file off.
+ * Identity with the reference path (sample_batch_reference, the testing
+ * header) is tested for every format, channel count, wrap mode and filter
+ * (tests/test_fastpath.c).
  */
 #include "internal.h"
 #include "lod_lanes.h"
@@ -500,8 +500,8 @@ SAMPLE_FORCE_INLINE void plan_taps_block(const sample_ctx *c, const sample_query
 {
     size_t k = 0;
 #if SAMPLE_VEC_AVX2
-    if ((fmt == SAMPLE_FORMAT_F32 || fmt == SAMPLE_FORMAT_F16) && c->smp->wrap_s < SAMPLE_WRAP_CLAMP &&
-        c->smp->wrap_t < SAMPLE_WRAP_CLAMP)
+    if ((fmt == SAMPLE_FORMAT_F32 || fmt == SAMPLE_FORMAT_F16) && !wrap_transforms_coord(c->smp->wrap_s) &&
+        !wrap_transforms_coord(c->smp->wrap_t))
         for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, pl + k);
 #else
     (void)fmt;
@@ -637,7 +637,7 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
     const int n = an->n, lanes = (n + ANISO_LANES - 1) / ANISO_LANES * ANISO_LANES;
     int lv, k, b0;
     at->n = 0;
-    if (n > ANISO_FAST_PROBES || c->smp->wrap_s >= SAMPLE_WRAP_CLAMP || c->smp->wrap_t >= SAMPLE_WRAP_CLAMP)
+    if (n > ANISO_FAST_PROBES || wrap_transforms_coord(c->smp->wrap_s) || wrap_transforms_coord(c->smp->wrap_t))
         return 0;
     /* Lanes past n hold probes beyond the footprint's end: computed, never
      * read. */
@@ -711,38 +711,48 @@ SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args
         fp_aniso_prefetch(c, &a->queries[i], &pl->u.an);
 }
 
-#define TEX_READERS(fmt, nc)                                                   \
-    static void row_##fmt##_##nc(const unsigned char *p, size_t pitch, int n, float (*out)[4]) \
+/* A kernel set is generated for a texel format and channel count given as
+ * the expressions FMT and NC: constants (SAMPLE_FORMAT_F32, 4) in the
+ * kernels specialised for one format (the switches of tex_decode_v4 then
+ * vanish), or the texture's own (fast_any) in the one generic set that
+ * serves every other format and channel count. `name` names the set. In
+ * the readers, FMT and NC may use fmt_/nc_, which every reader defines
+ * from its arguments or its texture. */
+#define TEX_READERS(name, FMT, NC)                                             \
+    static void row_##name(sample_format fmt_, int nc_, const unsigned char *p, size_t pitch, int n, \
+                           float (*out)[4])                                    \
     {                                                                          \
-        decode_row(SAMPLE_FORMAT_##fmt, nc, p, pitch, n, out);                 \
+        (void)fmt_;                                                            \
+        (void)nc_;                                                             \
+        decode_row(FMT, NC, p, pitch, n, out);                                 \
     }                                                                          \
-    SAMPLE_FORCE_INLINE uint32_t bilinear_inline_##fmt##_##nc(const sample_ctx *c, int lv, float s, \
-                                                              float t, float out[4], float dds[4], \
-                                                              float ddt[4])  \
+    SAMPLE_FORCE_INLINE uint32_t bilinear_inline_##name(const sample_ctx *c, int lv, float s, float t, \
+                                                        float out[4], float dds[4], float ddt[4]) \
     {                                                                          \
-        return bilinear_level(c, SAMPLE_FORMAT_##fmt, nc, lv, s, t, out, dds, ddt); \
+        const sample_format fmt_ = c->tex->format;                             \
+        const int nc_ = c->tex->channels;                                      \
+        (void)fmt_;                                                            \
+        (void)nc_;                                                             \
+        return bilinear_level(c, FMT, NC, lv, s, t, out, dds, ddt);            \
     }                                                                          \
-    static uint32_t bilinear_##fmt##_##nc(const sample_ctx *c, int lv, float s, float t, \
-                                          float out[4], float dds[4], float ddt[4]) \
+    static uint32_t bilinear_##name(const sample_ctx *c, int lv, float s, float t, float out[4], \
+                                    float dds[4], float ddt[4])                \
     {                                                                          \
-        return bilinear_inline_##fmt##_##nc(c, lv, s, t, out, dds, ddt);      \
+        return bilinear_inline_##name(c, lv, s, t, out, dds, ddt);             \
     }                                                                          \
     /* fp_anisotropic's probes: those addressed ahead read from their      \
      * addresses, the others with this format's bilinear inlined. */         \
-    static SAMPLE_NOINLINE uint32_t aniso_##fmt##_##nc(const sample_ctx *c, const sample_query *q, \
-                                                       const fp_aniso_setup *an,            \
-                                                       const aniso_taps *at, float out[4],  \
-                                                       float dds[4], float ddt[4])          \
+    static SAMPLE_NOINLINE uint32_t aniso_##name(const sample_ctx *c, const sample_query *q, \
+                                                 const fp_aniso_setup *an, const aniso_taps *at, \
+                                                 float out[4], float dds[4], float ddt[4]) \
     {                                                                          \
-        if (at->n && !dds && !ddt) return aniso_read(c, SAMPLE_FORMAT_##fmt, nc, an, at, out); \
-        return fp_aniso_probes(c, q, an, bilinear_inline_##fmt##_##nc, out, dds, ddt); \
+        const sample_format fmt_ = c->tex->format;                             \
+        const int nc_ = c->tex->channels;                                      \
+        (void)fmt_;                                                            \
+        (void)nc_;                                                             \
+        if (at->n && !dds && !ddt) return aniso_read(c, FMT, NC, an, at, out); \
+        return fp_aniso_probes(c, q, an, bilinear_inline_##name, out, dds, ddt); \
     }
-#define TEX_READERS_FMT(fmt)                                                   \
-    TEX_READERS(fmt, 1) TEX_READERS(fmt, 2) TEX_READERS(fmt, 3) TEX_READERS(fmt, 4)
-TEX_READERS_FMT(F32)
-TEX_READERS_FMT(F16)
-TEX_READERS_FMT(UNORM8)
-TEX_READERS_FMT(SRGB8)
 
 /* The filter's own plan of query i when plan_query handed it to the
  * footprint filter (Blinn–Newell, EWA). */
@@ -851,17 +861,38 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
         gl_blocks(c, a, fmt, nc, fixed ? &mg : NULL, 0);
 }
 
-#define FAST_GL_KERNEL(fmt, nc)                                                \
-    static void fast_gl_##fmt##_##nc(const sample_ctx *c, const sample_batch_args *a) \
+/* The batch loop of a kernel set (TEX_READERS). */
+#define FAST_GL_KERNEL(name, FMT, NC)                                          \
+    static void fast_gl_##name(const sample_ctx *c, const sample_batch_args *a) \
     {                                                                          \
-        fast_gl_batch(c, a, SAMPLE_FORMAT_##fmt, nc, aniso_##fmt##_##nc);      \
+        const sample_format fmt_ = c->tex->format;                             \
+        const int nc_ = c->tex->channels;                                      \
+        (void)fmt_;                                                            \
+        (void)nc_;                                                             \
+        fast_gl_batch(c, a, FMT, NC, aniso_##name);                            \
     }
-#define FAST_GL_KERNELS(fmt)                                                   \
-    FAST_GL_KERNEL(fmt, 1) FAST_GL_KERNEL(fmt, 2) FAST_GL_KERNEL(fmt, 3) FAST_GL_KERNEL(fmt, 4)
-FAST_GL_KERNELS(F32)
-FAST_GL_KERNELS(F16)
-FAST_GL_KERNELS(UNORM8)
-FAST_GL_KERNELS(SRGB8)
+#define FAST_KERNEL_SET(name, FMT, NC) TEX_READERS(name, FMT, NC) FAST_GL_KERNEL(name, FMT, NC)
+
+/* Specialised only where it pays: RGBA float, half and sRGB8 — the
+ * textures a renderer samples most and the bench measures
+ * (doc/benchmarks.md). Each set costs a copy of the batch loop in every
+ * instruction set's object (about 18 s of compile time each with GCC 12
+ * at -O3, against 38 s for the generic set); every other format and
+ * channel count runs the generic set, whose per-texel format and channel
+ * switches predict perfectly within a batch. The scalar build on x86-64 (SAMPLE_FAST_SPECIALIZE 0)
+ * exists for tests and comparisons only and has the generic set alone. */
+#ifndef SAMPLE_FAST_SPECIALIZE
+#define SAMPLE_FAST_SPECIALIZE 1
+#endif
+FAST_KERNEL_SET(any, fmt_, nc_)
+#if SAMPLE_FAST_SPECIALIZE
+FAST_KERNEL_SET(F32_4, SAMPLE_FORMAT_F32, 4)
+FAST_KERNEL_SET(F16_4, SAMPLE_FORMAT_F16, 4)
+FAST_KERNEL_SET(SRGB8_4, SAMPLE_FORMAT_SRGB8, 4)
+#define FAST_RGBA(fmt) fmt##_4
+#else
+#define FAST_RGBA(fmt) any
+#endif
 
 /* ---- This build's table (isa.c) -----------------------------------------
  * The build compiles this file once per instruction set (scalar, SSE2,
@@ -873,15 +904,23 @@ FAST_GL_KERNELS(SRGB8)
 #error "fast_gl.c is built once per instruction set with SAMPLE_ISA set (libsample/CMakeLists.txt)"
 #endif
 
+#define ISA_CAT3_(a, b) a##b
+#define ISA_CAT3(a, b) ISA_CAT3_(a, b)
+/* Channels 1–3 in the generic set, 4 in the format's own (FAST_RGBA) or,
+ * for a format without one (ISA_*_ANY_ROW), the generic set too. */
 #define ISA_KERNELS_ROW(fmt)                                                   \
-    [SAMPLE_FORMAT_##fmt] = {fast_gl_##fmt##_1, fast_gl_##fmt##_2, fast_gl_##fmt##_3, fast_gl_##fmt##_4}
+    [SAMPLE_FORMAT_##fmt] = {fast_gl_any, fast_gl_any, fast_gl_any, ISA_CAT3(fast_gl_, FAST_RGBA(fmt))}
+#define ISA_KERNELS_ANY_ROW(fmt) [SAMPLE_FORMAT_##fmt] = {fast_gl_any, fast_gl_any, fast_gl_any, fast_gl_any}
+#define ISA_READERS_ANY {row_any, bilinear_any}
 #define ISA_READERS_ROW(fmt)                                                   \
-    [SAMPLE_FORMAT_##fmt] = {{row_##fmt##_1, bilinear_##fmt##_1}, {row_##fmt##_2, bilinear_##fmt##_2}, \
-                             {row_##fmt##_3, bilinear_##fmt##_3}, {row_##fmt##_4, bilinear_##fmt##_4}}
+    [SAMPLE_FORMAT_##fmt] = {ISA_READERS_ANY, ISA_READERS_ANY, ISA_READERS_ANY,  \
+                             {ISA_CAT3(row_, FAST_RGBA(fmt)), ISA_CAT3(bilinear_, FAST_RGBA(fmt))}}
+#define ISA_READERS_ANY_ROW(fmt)                                               \
+    [SAMPLE_FORMAT_##fmt] = {ISA_READERS_ANY, ISA_READERS_ANY, ISA_READERS_ANY, ISA_READERS_ANY}
 extern const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels); /* footprint_rows.c */
 const isa_kernels SAMPLE_ISA_NAME(isa_kernels) = {
-    .fast_gl = {ISA_KERNELS_ROW(F32), ISA_KERNELS_ROW(F16), ISA_KERNELS_ROW(UNORM8), ISA_KERNELS_ROW(SRGB8)},
-    .readers = {ISA_READERS_ROW(F32), ISA_READERS_ROW(F16), ISA_READERS_ROW(UNORM8), ISA_READERS_ROW(SRGB8)},
+    .fast_gl = {ISA_KERNELS_ROW(F32), ISA_KERNELS_ROW(F16), ISA_KERNELS_ANY_ROW(UNORM8), ISA_KERNELS_ROW(SRGB8)},
+    .readers = {ISA_READERS_ROW(F32), ISA_READERS_ROW(F16), ISA_READERS_ANY_ROW(UNORM8), ISA_READERS_ROW(SRGB8)},
     .rows = &SAMPLE_ISA_NAME(fp_row_kernels),
 };
 _Static_assert(SAMPLE_FORMAT_COUNT == 4, "one row of isa_kernels per format");

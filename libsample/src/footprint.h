@@ -167,7 +167,7 @@ typedef struct fp_level_rows {
     int in_place; /* float RGBA: texels inside the level are read where they are */
     double jlo, u0, v0, wlim, hlim;
     const unsigned char *data; /* the level's texel (0, 0) */
-    const isa_kernels *k;      /* the instruction set's kernels, chosen once a level */
+    const isa_kernels *k;      /* the batch's kernels (sample_ctx.isa) */
     size_t pitch, lstride;
 } fp_level_rows;
 
@@ -205,7 +205,7 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     lr->wlim = (double)(tr ? L->h : L->w);
     lr->hlim = (double)(tr ? L->w : L->h);
     lr->data = L->data;
-    lr->k = isa_kernels_active();
+    lr->k = c->isa;
     lr->pitch = tr ? L->stride : tb;
     lr->lstride = tr ? tb : L->stride;
     return nrows;
@@ -333,7 +333,7 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
             *pitch = lr->pitch;
             return at;
         }
-        tex_readers_in(lr->k, c->tex)->row(at, lr->pitch, n, buf);
+        tex_readers_in(lr->k, c->tex)->row(c->tex->format, c->tex->channels, at, lr->pitch, n, buf);
     } else if (!lr->tr) {
         for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
     } else {
@@ -422,13 +422,6 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_block(const sample_ctx *c, const struct sa
         SAMPLE_PREFETCH(p + L->stride);
         SAMPLE_PREFETCH(p + L->stride + e);
     }
-}
-
-/* The same for a bilinear read near (s, t) on level lv. */
-SAMPLE_FORCE_INLINE void ctx_prefetch_bilinear(const sample_ctx *c, int lv, float s, float t)
-{
-    const struct sample_level *L = &c->tex->level[lv];
-    ctx_prefetch_block(c, L, s * (float)L->w - 0.5f, t * (float)L->h - 0.5f);
 }
 
 /* One level of a footprint filter: when `count_only`, returns (as a double,

@@ -128,8 +128,9 @@ uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_b
     fp_aniso_setup a;
     uint32_t texels;
     fp_aniso_setup_of(c, q, rho2, lr, call_bias, &a);
-    /* recon_level's bilinear, the fast path's way (same bits). */
-    texels = fp_aniso_probes(c, q, &a, tex_readers_of(c->tex)->bilinear, out, dds, ddt);
+    /* recon_level's bilinear, as the batch's kernels read it (the same
+     * bits in every table). */
+    texels = fp_aniso_probes(c, q, &a, ctx_readers(c)->bilinear, out, dds, ddt);
     if (st) fp_aniso_stats(&a, st);
     return texels;
 }

@@ -149,8 +149,8 @@ void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double
     *flip_t = mirror_clamp(mt) && t < 0.0f;
     /* A float times an int below 2^17 is exact in double. Texel centres sit
      * at integers after the −½ (DESIGN §2). */
-    if (ms >= SAMPLE_WRAP_CLAMP) s = wrap_coord(ms, s, L->w);
-    if (mt >= SAMPLE_WRAP_CLAMP) t = wrap_coord(mt, t, L->h);
+    if (wrap_transforms_coord(ms)) s = wrap_coord(ms, s, L->w);
+    if (wrap_transforms_coord(mt)) t = wrap_coord(mt, t, L->h);
     *u0 = reduce_period(ms, (double)s * L->w, L->w) - 0.5;
     *v0 = reduce_period(mt, (double)t * L->h, L->h) - 0.5;
 }

@@ -341,4 +341,11 @@ static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double abc[3]) 
 
 /* ---- This build's level kernels (isa.c) --------------------------------- */
 
-const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels) = {bn_level, ewa_level, bn_count, ewa_count, bn_span, ewa_span};
+const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels) = {
+    .bn_level = bn_level,
+    .ewa_level = ewa_level,
+    .bn_count = bn_count,
+    .ewa_count = ewa_count,
+    .bn_span = bn_span,
+    .ewa_span = ewa_span,
+};

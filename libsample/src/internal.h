@@ -140,6 +140,21 @@ sample_status tex_alloc_level(sample_texture *tex, int k, sample_error *err);
  * Other modes return s unchanged. NaN must be rejected before. */
 float wrap_coord(sample_wrap mode, float s, int n);
 
+/* Whether `mode` transforms the coordinate (wrap_coord) before indexing:
+ * legacy CLAMP and the EXT mirror-clamps (DESIGN §3). A predicate, so that
+ * nothing depends on the enum's numeric order. */
+static inline int wrap_transforms_coord(sample_wrap mode)
+{
+    switch (mode) {
+    case SAMPLE_WRAP_CLAMP:
+    case SAMPLE_WRAP_MIRROR_CLAMP:
+    case SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
 /* The single addressing function (DESIGN §3): integral index i (a double so
  * that any float coordinate's floor is exact) on an axis of n texels → a
  * texel index in [0, n), or −1 for "border colour". `linear` selects the
@@ -149,13 +164,23 @@ int wrap_index(sample_wrap mode, double i, int n, int linear);
 
 /* ---- Per-batch context --------------------------------------------------- */
 
+struct isa_kernels;
 typedef struct sample_ctx {
     const sample_texture *tex;
     const sample_sampler *smp;
     float border[4];
     int base;      /* effective base level */
     int maxlev;    /* q: last level that may be used (GL 4.6 §8.14.3) */
+    /* The kernels of this batch, chosen once when the batch starts (as
+     * zstd's dctx->bmi2): every loop below reads this, never a global. */
+    const struct isa_kernels *isa;
 } sample_ctx;
+
+/* The context of a batch: level_base and q (GL 4.6 §8.14.3) from the
+ * sampler and the levels present, the border colour, and the kernels k
+ * (isa_kernels_active(), or isa_kernels_reference). */
+void ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp,
+              const struct isa_kernels *k);
 
 /* Read texel (i, j) of level `lv` through the wrap modes; border colour where
  * the wrap says so. Every filter reads texels through this. */
@@ -235,15 +260,17 @@ static inline int batch_query_finite(const sample_batch_args *a, size_t k)
  * results (tests/test_fastpath.c). */
 typedef void (*fast_gl_fn)(const sample_ctx *c, const sample_batch_args *a);
 
-/* The fast path's readers for the other filters, one set per (format ×
- * channel count), chosen per query by tex_readers_of (a table look-up, so
- * that a sample_ctx needs no extra field):
+/* The readers the footprint filters use, one per (format × channel
+ * count) in each kernel table, reached through the batch's kernels
+ * (ctx_readers):
  *   row       decodes n in-range texels at p, pitch bytes apart (a level
- *             row or column; tex_decode_v4);
+ *             row or column; tex_decode_v4), of format fmt with nc
+ *             channels (the texture's; a reader for one format ignores
+ *             them);
  *   bilinear  recon_level(c, lv, SAMPLE_LINEAR, s, t, …) bit for bit (the
  *             fast path's addressing; tests/test_fastpath.c). */
 typedef struct tex_readers {
-    void (*row)(const unsigned char *p, size_t pitch, int n, float (*out)[4]);
+    void (*row)(sample_format fmt, int nc, const unsigned char *p, size_t pitch, int n, float (*out)[4]);
     uint32_t (*bilinear)(const sample_ctx *c, int lv, float s, float t, float out[4],
                          float dds[4], float ddt[4]);
 } tex_readers;
@@ -300,27 +327,17 @@ typedef struct isa_kernels {
 extern const isa_kernels isa_kernels_scalar, isa_kernels_sse2, isa_kernels_avx2,
     isa_kernels_avx512;
 
-/* The table this process runs: chosen on first use, thread-safe, then a
- * relaxed atomic load. An out-of-line call, so that this header (also read
- * by C++, libsample_io) needs no <stdatomic.h>. */
+/* The reference kernels (reference.c): no batch loop (fast_gl all NULL),
+ * readers that decode texel by texel (tex_decode_v4) and reconstruct
+ * through recon_level, and the scalar build's footprint rows. What
+ * sample_batch_reference runs; every other table must give its bits. */
+extern const isa_kernels isa_kernels_reference;
+
+/* The table sample_batch runs: chosen on the first call from the CPU and
+ * LIBSAMPLE_ISA (thread-safe), then a relaxed atomic load — once per
+ * batch (ctx_init), never inside a loop. An out-of-line call, so that
+ * this header (also read by C++, libsample_io) needs no <stdatomic.h>. */
 const isa_kernels *isa_kernels_active(void);
-
-/* For tests (not public API): run `name` ("scalar", "sse2", "avx2",
- * "avx512") from now on, process-wide. Returns 0 when done; −1 for an
- * unknown name, −2 when this build has no kernels for it (compiler without
- * the flags, or not x86), −3 when this CPU lacks it; the choice is then
- * unchanged. NULL returns to the automatic choice (CPU and LIBSAMPLE_ISA,
- * read again). Not meant to race with sampling: a batch already running
- * keeps the kernels it started with, the footprint filters switch at their
- * next level (fp_level_rows.k), and all give the same bits anyway. */
-int sample_isa_force(const char *name);
-
-/* The kernel for this batch's format and channel count (sampler.c). */
-static inline fast_gl_fn fast_gl_select(const sample_ctx *c, const sample_batch_args *a)
-{
-    (void)a;
-    return isa_kernels_active()->fast_gl[c->tex->format][c->tex->channels - 1];
-}
 
 /* Texture t's readers in the kernels k. */
 static inline const tex_readers *tex_readers_in(const isa_kernels *k, const sample_texture *t)
@@ -328,9 +345,10 @@ static inline const tex_readers *tex_readers_in(const isa_kernels *k, const samp
     return &k->readers[t->format][t->channels - 1];
 }
 
-static inline const tex_readers *tex_readers_of(const sample_texture *t)
+/* The readers of a batch's texture in the batch's kernels. */
+static inline const tex_readers *ctx_readers(const sample_ctx *c)
 {
-    return tex_readers_in(isa_kernels_active(), t);
+    return tex_readers_in(c->isa, c->tex);
 }
 
 /* The footprint queries of a batch (sampler.c): query i (finite, λ > 0)
@@ -380,7 +398,7 @@ SAMPLE_FORCE_INLINE void recon_blend(float a[4], const float b[4], float f)
  * defined (α = u − ⌊u⌋ would be inf − inf). */
 static inline float recon_texel_coord(sample_wrap mode, float s, int n)
 {
-    float u = (mode >= SAMPLE_WRAP_CLAMP ? wrap_coord(mode, s, n) : s) * (float)n;
+    float u = (wrap_transforms_coord(mode) ? wrap_coord(mode, s, n) : s) * (float)n;
     return u > FLT_MAX ? FLT_MAX : (u < -FLT_MAX ? -FLT_MAX : u);
 }
 

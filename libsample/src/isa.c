@@ -15,6 +15,7 @@
  * without it only the baseline tables are used.
  */
 #include "internal.h"
+#include "sample/testing.h"
 
 #include <stdatomic.h>
 #include <stdlib.h>

@@ -3,6 +3,7 @@
  * the per-batch context built once; each query then takes one path.
  */
 #include "internal.h"
+#include "sample/testing.h"
 
 void sample_sampler_init(sample_sampler *s)
 {
@@ -79,37 +80,6 @@ uint32_t sample_gl(const sample_ctx *c, const sample_query *q, float call_bias, 
     return gl_apply(c, q, lam, &ch, out, dds, ddt, st);
 }
 
-/* What a query will do, decided for a block of queries before any texel is
- * read, so that the texel rows can be prefetched: random queries into a
- * large texture are bound by memory latency, and overlapping the misses of
- * several queries is worth more than any arithmetic saving. */
-typedef struct query_plan {
-    enum { PLAN_BORDER, PLAN_GL, PLAN_FOOTPRINT } kind;
-    float lam;
-    lod_choice ch;
-} query_plan;
-
-enum { PLAN_BLOCK = 16 };
-
-static void plan_query(const sample_ctx *c, const sample_batch_args *a, size_t i, query_plan *pl)
-{
-    const sample_query *q = &a->queries[i];
-    float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
-    if (!batch_query_finite(a, i)) {
-        pl->kind = PLAN_BORDER;
-        return;
-    }
-    pl->lam = lod_lambda(c, lod_lambda_base(c, q), bias);
-    if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && pl->lam > 0.0f) {
-        pl->kind = PLAN_FOOTPRINT;
-        return;
-    }
-    pl->kind = PLAN_GL;
-    pl->ch = lod_select(c, pl->lam);
-    ctx_prefetch_bilinear(c, pl->ch.level0, q->s, q->t);
-    if (pl->ch.level1 >= 0) ctx_prefetch_bilinear(c, pl->ch.level1, q->s, q->t);
-}
-
 void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i,
                           const struct fp_plan *pl)
 {
@@ -144,72 +114,102 @@ void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_
     st->texels = n;
 }
 
-static void run_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const query_plan *pl)
+/* One query of the reference path: the border colour for non-finite
+ * input (DESIGN §10), else λ (GL 4.6 §8.14.1), then the footprint filter
+ * when one is set and λ > 0, else the level choice of §8.14.2–8.14.3 and
+ * the reconstruction of each chosen level. */
+static void reference_query(const sample_ctx *c, const sample_batch_args *a, size_t i)
 {
     const sample_query *q = &a->queries[i];
     float *out = a->rgba + 4 * i;
     float *dds = a->drgba_ds ? a->drgba_ds + 4 * i : NULL;
     float *ddt = a->drgba_dt ? a->drgba_dt + 4 * i : NULL;
     sample_stats local, *st = a->stats ? &a->stats[i] : &local;
-    uint32_t n = 0;
+    float lam;
+    lod_choice ch;
 
-    if (pl->kind == PLAN_FOOTPRINT) {
-        sample_run_footprint(c, a, i, NULL);
+    if (batch_query_finite(a, i)) {
+        lam = lod_lambda(c, lod_lambda_base(c, q), a->lod_bias ? a->lod_bias[i] : 0.0f);
+        if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && lam > 0.0f) {
+            sample_run_footprint(c, a, i, NULL);
+            return;
+        }
+        ch = lod_select(c, lam);
+        st->texels = gl_apply(c, q, lam, &ch, out, dds, ddt, st);
         return;
     }
     st->level0 = st->level1 = -1;
     st->level_frac = 0.0f;
     st->lod = 0.0f;
-    switch (pl->kind) {
-    case PLAN_BORDER:
-        memcpy(out, c->border, sizeof c->border);
-        if (dds) memset(dds, 0, 4 * sizeof(float));
-        if (ddt) memset(ddt, 0, 4 * sizeof(float));
-        break;
-    case PLAN_GL:
-        n = gl_apply(c, q, pl->lam, &pl->ch, out, dds, ddt, st);
-        break;
-    case PLAN_FOOTPRINT: /* above */
-        break;
-    }
-    st->texels = n;
+    st->texels = 0;
+    memcpy(out, c->border, sizeof c->border);
+    if (dds) memset(dds, 0, 4 * sizeof(float));
+    if (ddt) memset(ddt, 0, 4 * sizeof(float));
+}
+
+void ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp, const isa_kernels *k)
+{
+    c->tex = tex;
+    c->smp = smp;
+    memcpy(c->border, smp->border_color, sizeof c->border);
+    /* level_base and q (§8.14.3): base clamped to the levels present (an
+     * OpenGL texture would be incomplete; we read the last level instead),
+     * q = min(level_max, last level). */
+    c->base = smp->base_level < tex->nlevels ? smp->base_level : tex->nlevels - 1;
+    c->maxlev = smp->max_level < tex->nlevels - 1 ? smp->max_level : tex->nlevels - 1;
+    if (c->maxlev < c->base) c->maxlev = c->base;
+    c->isa = k;
+}
+
+/* The checks every batch makes; *run is 0 when there is nothing to do. */
+static sample_status batch_check(const sample_texture *tex, const sample_sampler *smp,
+                                 const sample_batch_args *a, int *run)
+{
+    sample_status st;
+    *run = 0;
+    if (!tex || !a) return SAMPLE_E_INVALID_ARGUMENT;
+    if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
+    if (a->count == 0) return SAMPLE_OK;
+    if (!a->queries || !a->rgba) return SAMPLE_E_INVALID_ARGUMENT;
+    *run = 1;
+    return SAMPLE_OK;
+}
+
+static void reference_batch(const sample_ctx *c, const sample_batch_args *a)
+{
+    size_t i;
+    for (i = 0; i < a->count; ++i) reference_query(c, a, i);
 }
 
 sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
                            const sample_batch_args *a)
 {
     sample_ctx c;
-    sample_status st;
     fast_gl_fn fast;
-    size_t i;
-    if (!tex || !a) return SAMPLE_E_INVALID_ARGUMENT;
-    if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
-    if (a->count == 0) return SAMPLE_OK;
-    if (!a->queries || !a->rgba) return SAMPLE_E_INVALID_ARGUMENT;
-    c.tex = tex;
-    c.smp = smp;
-    memcpy(c.border, smp->border_color, sizeof c.border);
-    /* level_base and q (§8.14.3): base clamped to the levels present (an
-     * OpenGL texture would be incomplete; we read the last level instead),
-     * q = min(level_max, last level). */
-    c.base = smp->base_level < tex->nlevels ? smp->base_level : tex->nlevels - 1;
-    c.maxlev = smp->max_level < tex->nlevels - 1 ? smp->max_level : tex->nlevels - 1;
-    if (c.maxlev < c.base) c.maxlev = c.base;
-    /* The specialized loop where one applies; the general one below is the
-     * reference it must match bit for bit. */
-    if (!(smp->options & SAMPLE_OPT_SCALAR_PATH) && (fast = fast_gl_select(&c, a)) != NULL) {
+    int run;
+    sample_status st = batch_check(tex, smp, a, &run);
+    if (!run) return st;
+    /* The instruction set is chosen here, once per batch. */
+    ctx_init(&c, tex, smp, isa_kernels_active());
+    fast = c.isa->fast_gl[tex->format][tex->channels - 1];
+    if (fast)
         fast(&c, a);
-        return SAMPLE_OK;
-    }
-    for (i = 0; i < a->count; i += PLAN_BLOCK) {
-        query_plan plan[PLAN_BLOCK];
-        size_t k, m = a->count - i < PLAN_BLOCK ? a->count - i : PLAN_BLOCK;
-        for (k = 0; k < m; ++k) plan_query(&c, a, i + k, &plan[k]);
-        for (k = 0; k < m; ++k) run_query(&c, a, i + k, &plan[k]);
-    }
+    else
+        reference_batch(&c, a);
     return SAMPLE_OK;
 }
 
+sample_status sample_batch_reference(const sample_texture *tex, const sample_sampler *smp,
+                                     const sample_batch_args *a)
+{
+    sample_ctx c;
+    int run;
+    sample_status st = batch_check(tex, smp, a, &run);
+    if (!run) return st;
+    ctx_init(&c, tex, smp, &isa_kernels_reference);
+    reference_batch(&c, a);
+    return SAMPLE_OK;
+}
 sample_status sample_one(const sample_texture *tex, const sample_sampler *smp,
                          const sample_query *query, float rgba[4])
 {

@@ -81,6 +81,7 @@ typedef struct bench_engine {
     int oiio;          /* 0: libsample, 1: OIIO's TextureSystem */
     int match;         /* for libsample rows: index of OIIO's matching row, or −1 */
     sample_sampler smp;
+    int reference;     /* libsample rows: 1 runs sample_batch_reference (--scalar) */
     oiio_ts_opts opts;
 } bench_engine;
 
@@ -136,7 +137,7 @@ typedef struct bench_report {
     int size, threads_max, runs;
     size_t queries, batch;
     const char *command; /* the command line, for the record */
-    int scalar;          /* 1: libsample ran with SAMPLE_OPT_SCALAR_PATH */
+    int scalar;          /* 1: libsample ran through its reference path */
     const char *isa;     /* sample_isa_name(): the instruction set it ran on */
     double load[2];      /* 1-minute load average before and after (< 0: unknown) */
 } bench_report;

@@ -41,7 +41,7 @@ static const char help[] =
     "  --filters LIST     comma-separated filters (default all)\n"
     "  --no-oiio          measure libsample only\n"
     "  --scalar           libsample through its general per-query path\n"
-    "                     (SAMPLE_OPT_SCALAR_PATH), to measure the fast path\n"
+    "                     (sample_batch_reference), to measure the fast path\n"
     "  --tmpdir DIR       where OIIO's texture files are written (default $TMPDIR\n"
     "                     or /tmp); they are removed at the end (--save keeps\n"
     "                     them in its directory instead)\n"
@@ -378,7 +378,7 @@ int cmd_bench(int argc, char **argv)
     b.o.filters = ~0u;
     if (b.neng < 0 || parse_args(argc, argv, b.eng, b.neng, &b.o) != 0) return EXIT_USAGE;
     for (i = 0; i < b.neng; ++i)
-        if (b.o.scalar && !b.eng[i].oiio) b.eng[i].smp.options |= SAMPLE_OPT_SCALAR_PATH;
+        if (b.o.scalar && !b.eng[i].oiio) b.eng[i].reference = 1;
 
     tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
     snprintf(dir, sizeof dir, "%s/texsample-bench-XXXXXX", tmp && *tmp ? tmp : "/tmp");

@@ -5,6 +5,7 @@
  * Catmull–Rom reads the same 4 × 4 texels at the same cost.
  */
 #include "bench.h"
+#include "sample/testing.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -80,7 +81,7 @@ int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
         a.queries = q;
         a.rgba = rgba;
         a.stats = stats;
-        if ((st = sample_batch(t->ours, &e->smp, &a)) != SAMPLE_OK) {
+        if ((st = (e->reference ? sample_batch_reference : sample_batch)(t->ours, &e->smp, &a)) != SAMPLE_OK) {
             fprintf(stderr, "texsample bench: %s: %s\n", e->name, sample_strerror(st));
             return -1;
         }

@@ -59,7 +59,7 @@ void bench_print_table(const bench_report *r)
            "libsample path: %s.\n"
            "libsample ISA: %s.\n",
            r->size, r->size, r->queries, r->batch, r->runs, r->load[0], r->load[1],
-           r->scalar ? "general (SAMPLE_OPT_SCALAR_PATH)" : "default (fast path where it applies)",
+           r->scalar ? "reference (sample_batch_reference)" : "default (fast path where it applies)",
            r->isa);
     for (set = 0; set < BENCH_SET_COUNT; ++set)
         for (fmt = 0; fmt < BENCH_FMT_COUNT; ++fmt) {

@@ -84,7 +84,6 @@ static void sampler(FILE *f, const sample_sampler *s)
         {SAMPLE_OPT_NEAREST_LEVEL_FLOOR, "nearest_level_floor"},
         {SAMPLE_OPT_CUBIC_CLAMP, "cubic_clamp"},
         {SAMPLE_OPT_ANISO_POW2, "aniso_pow2"},
-        {SAMPLE_OPT_SCALAR_PATH, "scalar_path"},
         {SAMPLE_OPT_BN_AREA_WEIGHT, "bn_area_weight"},
     };
     size_t k;

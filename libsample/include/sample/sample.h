@@ -247,10 +247,7 @@ enum {
     SAMPLE_OPT_CUBIC_CLAMP = 1u << 2,
     /* Anisotropic: round the probe count up to a power of two. */
     SAMPLE_OPT_ANISO_POW2 = 1u << 3,
-    /* Use the general (reference) code path for every query instead of the
-     * specialized fast path. Results are bit-for-bit the same either way;
-     * this exists for tests and for measuring the fast path. */
-    SAMPLE_OPT_SCALAR_PATH = 1u << 4,
+    /* 1u << 4 is reserved. */
     /* Blinn–Newell corners: texel weight pyramid / |det| of the quad map (screen-space integral). */
     SAMPLE_OPT_BN_AREA_WEIGHT = 1u << 5,
 };
