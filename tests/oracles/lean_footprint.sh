@@ -1,1 +1,1 @@
-perf_probe.sh
+../../dev/perf_probe.sh
