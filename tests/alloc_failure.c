@@ -1,9 +1,10 @@
 /*
- * Allocation failure (issue 9): every malloc/calloc made while creating a
- * texture (copy, pyramid, explicit levels) is made to fail in turn. Each
- * time the call must return SAMPLE_E_OUT_OF_MEMORY with *out == NULL and a
- * message, and leave nothing allocated (LeakSanitizer checks that in the
- * sanitizer build; the counters below check it everywhere).
+ * Allocation failure (DESIGN §10, doc/guarantees.md): every malloc/calloc
+ * made while creating a texture (copy, pyramid, explicit levels) is made to
+ * fail in turn. Each time the call must return SAMPLE_E_OUT_OF_MEMORY with
+ * *out == NULL and a message, and leave nothing allocated (LeakSanitizer
+ * checks that in the sanitizer build; the counters below check it
+ * everywhere).
  * Linked with -Wl,--wrap=malloc,--wrap=calloc,--wrap=free.
  */
 #include "check.h"

@@ -1,5 +1,5 @@
 /*
- * texsample compare end to end (issue 7):
+ * texsample compare end to end (doc/comparison.md, DESIGN §8):
  *   - the ground truth converges: 32 × 32 and 64 × 64 samples per footprint
  *     agree within a stated bound on every scene of the comparison set
  *     (32 × 32 images; max |Δ| < 0.06 and RMS Δ < 0.015 over R, G, B of the

@@ -1,5 +1,5 @@
 /*
- * Adversarial queries (issue 9, DESIGN §10): every filter configuration and
+ * Adversarial queries (DESIGN §10): every filter configuration and
  * wrap mode, on textures of 1×1, 1×N, N×1 and ordinary sizes, against NaN,
  * ±inf, ±1e30, −0.0 and denormals in every coordinate and Jacobian entry,
  * zero, rank-one and 1e20-sized Jacobians, and self-intersecting or

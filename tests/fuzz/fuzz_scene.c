@@ -1,7 +1,7 @@
 /*
- * Fuzzes the scene-file parser (issue 9): arbitrary bytes as a scene text,
- * then, when a scene comes out, a 4 × 4 render of it with every per-pixel
- * buffer. The oracle is the sanitizers (ASan, UBSan, LeakSanitizer) and
+ * Fuzzes the scene-file parser (doc/renderer.md, "Limits"): arbitrary bytes
+ * as a scene text, then, when a scene comes out, a 4 × 4 render of it with
+ * every per-pixel buffer. The oracle is the sanitizers (ASan, UBSan, LeakSanitizer) and
  * libFuzzer's time and memory limits: every loop and allocation that scene
  * data drives must be bounded.
  *

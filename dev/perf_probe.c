@@ -1,10 +1,10 @@
 /*
- * perf_probe: the developer's timing probe behind doc/performance-passes.md's
- * step tables (issue 10, sixth pass on). One filter, one of bench's query
- * sets, one format: the best 1-thread CPU time of several passes over the
- * queries (warm-up excluded), in batches of 256, and a hash of the
+ * perf_probe: the developer's timing probe (the step tables of
+ * doc/history/performance-passes*.md were measured with it). One filter,
+ * one of bench's query sets, one format: the best 1-thread CPU time of
+ * several passes over the queries (warm-up excluded), in batches of 256, and a hash of the
  * results, so that a change can be timed and shown to keep the bits.
- * Built and run by scripts/perf_probe.sh; not part of the product build.
+ * Built and run by dev/perf_probe.sh; not part of the product build.
  *
  *   perf_probe FILTER SET FORMAT [QUERIES [RUNS]]
  *   (FILTER, SET, FORMAT as `texsample bench` names them; env PB_SCALAR=1:

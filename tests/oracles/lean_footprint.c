@@ -1,9 +1,10 @@
 /*
- * lean_footprint: how fast Blinn–Newell (or EWA) could be, timed beside
- * libsample's own trilinear and footprint filter in the same run (issue
- * 10's targets "Blinn–Newell at most 3× the time of our trilinear on the
- * isotropic set" and "EWA ≥ 10× OpenImageIO's anisotropic mode on the 8:1
- * set"; doc/performance-passes-2.md, fourteenth pass).
+ * lean_footprint: an independent implementation of libsample's
+ * Jacobian-mode Blinn–Newell and EWA, the oracle the suite checks them
+ * against (tests/oracles.cmake), and a measuring stick for how fast the two
+ * filters could be, timed beside libsample's own trilinear and footprint
+ * filter in the same run (the measurements are in
+ * doc/history/performance-passes-2.md).
  *
  * "lean" is the same filter as libsample's Jacobian-mode Blinn–Newell or
  * EWA (DESIGN §7, doc/footprint-filters.md: the level where the minor
@@ -21,11 +22,11 @@
  * libsample's, so the results are compared by their largest difference,
  * not by a hash: an independent implementation of the two filters, which
  * must agree with libsample's to 1e-5 (exit status 1 otherwise; ctest runs
- * it so, tests/probes.cmake). A measuring stick, not a second
+ * it so, tests/oracles.cmake). A measuring stick, not a second
  * implementation: nothing in the product calls it.
  *
  *   lean_footprint [blinn-newell|ewa [SET [QUERIES [RUNS]]]]   (env PB_SIZE: texture side, default 2048)
- *   scripts/lean_footprint.sh BUILD_DIR …   (a link to perf_probe.sh, which builds it)
+ *   tests/oracles/lean_footprint.sh BUILD_DIR …   (a link to dev/perf_probe.sh, which builds it)
  */
 #define _GNU_SOURCE
 #include "probe_util.h"

@@ -1,9 +1,10 @@
 /*
- * What the developer's probes (perf_probe.c, lean_footprint.c) share: the
+ * What the developer's probes (dev/perf_probe.c, tests/oracles/lean_footprint.c) share: the
  * bench sources they link without OIIO (bench_no_oiio.h; the probes time
  * libsample only), the clock, the texture and the timed loop of
  * sample_batch calls. Header-only: each probe is one translation unit
- * (scripts/perf_probe.sh builds it).
+ * (dev/perf_probe.sh builds it; CMake builds both, tests/probes.cmake and
+ * tests/oracles.cmake).
  */
 #ifndef PROBE_UTIL_H
 #define PROBE_UTIL_H

@@ -1,1 +1,0 @@
-perf_probe.sh

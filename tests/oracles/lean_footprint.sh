@@ -1,0 +1,1 @@
+../../dev/perf_probe.sh
