@@ -8,10 +8,11 @@
  *
  *   perf_probe FILTER SET FORMAT [QUERIES [RUNS]]
  *   (FILTER, SET, FORMAT as `texsample bench` names them; env PB_SCALAR=1:
- *   the general path, PB_SIZE: texture side, default 2048)
+ *   the reference path, PB_SIZE: texture side, default 2048)
  */
 #define _GNU_SOURCE
 #include "probe_util.h"
+#include "sample/testing.h"
 
 static int find(const char *const *names, int n, const char *want)
 {
@@ -69,8 +70,8 @@ int main(int argc, char **argv)
     if (!(tex = probe_texture(&img))) return 1;
     bench_queries((bench_set)si, size, q, n);
     smp = eng[ei].smp;
-    if (getenv("PB_SCALAR")) smp.options |= SAMPLE_OPT_SCALAR_PATH;
-    best = probe_time_batches(tex, &smp, q, n, runs, out);
+    best = probe_time_batches(getenv("PB_SCALAR") ? sample_batch_reference : sample_batch, tex, &smp, q, n, runs,
+                              out);
     if (best < 0.0) return 1;
     for (i = 0; i < n * 4; ++i) {
         uint32_t u;

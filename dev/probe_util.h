@@ -62,11 +62,14 @@ static sample_texture *probe_texture(const sample_image *img)
     return NULL;
 }
 
+/* A batch entry point: sample_batch, or sample_batch_reference. */
+typedef sample_status (*probe_batch_fn)(const sample_texture *, const sample_sampler *, const sample_batch_args *);
+
 /* The best CPU time of `runs` passes (after one untimed warm-up) of
- * sample_batch over the n queries in batches of 256, as the bench calls
- * it; −1 if a call fails. */
-static double probe_time_batches(const sample_texture *tex, const sample_sampler *smp, const sample_query *q, size_t n,
-                                 int runs, float *out)
+ * `batch` over the n queries in batches of 256, as the bench calls
+ * sample_batch; −1 if a call fails. */
+static double probe_time_batches(probe_batch_fn batch, const sample_texture *tex, const sample_sampler *smp,
+                                 const sample_query *q, size_t n, int runs, float *out)
 {
     double best = 1e30;
     int r;
@@ -79,7 +82,7 @@ static double probe_time_batches(const sample_texture *tex, const sample_sampler
             a.count = n - b < 256 ? n - b : 256;
             a.queries = q + b;
             a.rgba = out + 4 * b;
-            if (sample_batch(tex, smp, &a) != SAMPLE_OK) return -1.0;
+            if (batch(tex, smp, &a) != SAMPLE_OK) return -1.0;
         }
         t = probe_cpu_now() - t0;
         if (r > 0 && t < best) best = t;

@@ -426,8 +426,8 @@ int main(int argc, char **argv)
     img = (sample_image){size, size, 4, SAMPLE_FORMAT_F32, content, 0};
     if (!(tex = probe_texture(&img))) return 1;
     bench_queries((bench_set)si, size, q, n);
-    t_tri = probe_time_batches(tex, &eng[tri].smp, q, n, runs, o_tri);
-    t_fp = probe_time_batches(tex, &eng[fp].smp, q, n, runs, o_fp);
+    t_tri = probe_time_batches(sample_batch, tex, &eng[tri].smp, q, n, runs, o_tri);
+    t_fp = probe_time_batches(sample_batch, tex, &eng[fp].smp, q, n, runs, o_fp);
     if (t_tri < 0.0 || t_fp < 0.0) return 1;
     printf("%s on %s, float RGBA %d², %zu queries, best of %d (1 thread, CPU time)\n", filt, set, size, n, runs);
     printf("  %-22s %8.2f M/s %8.1f ns  %6.2f× trilinear's time\n", "libsample trilinear", n / t_tri / 1e6,
