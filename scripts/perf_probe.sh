@@ -26,7 +26,7 @@ shift
 src=$(cd "$(dirname "$0")/.." && pwd)
 exe="$build/$probe"
 cc -O2 -ffp-contract=off -std=c11 -I"$src/libsample/include" -I"$src/libsample/src" -I"$src/tools/bench" \
-    -I"$src/tools/oiio" -I"$src/tools" "$src/scripts/$probe.c" "$src/tools/bench/queries.c" \
+    -I"$src/tools/oiio" "$src/scripts/$probe.c" "$src/tools/bench/queries.c" \
     "$src/tools/bench/engines.c" "$src/tools/filters.c" \
     "$build/libsample/libsample.a" -lm -lpthread -o "$exe"
 if [ -n "${PB_CALLGRIND:-}" ]; then

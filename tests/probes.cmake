@@ -10,8 +10,7 @@ foreach(probe perf_probe lean_footprint)
   add_executable(${probe} ${PROJECT_SOURCE_DIR}/scripts/${probe}.c ${PROJECT_SOURCE_DIR}/tools/bench/queries.c
                           ${PROJECT_SOURCE_DIR}/tools/bench/engines.c ${PROJECT_SOURCE_DIR}/tools/filters.c)
   target_include_directories(${probe} PRIVATE ${PROJECT_SOURCE_DIR}/libsample/src ${PROJECT_SOURCE_DIR}/tools/bench
-                                              ${PROJECT_SOURCE_DIR}/tools/oiio ${PROJECT_SOURCE_DIR}/tools
-                                              ${PROJECT_SOURCE_DIR}/scripts)
+                                              ${PROJECT_SOURCE_DIR}/tools/oiio ${PROJECT_SOURCE_DIR}/scripts)
   target_link_libraries(${probe} PRIVATE sample m)
   target_compile_options(${probe} PRIVATE ${SAMPLE_WARNINGS})
 endforeach()
@@ -20,7 +19,7 @@ add_executable(bench_timer ${CMAKE_CURRENT_SOURCE_DIR}/bench_timer.c ${PROJECT_S
                            ${PROJECT_SOURCE_DIR}/tools/bench/queries.c ${PROJECT_SOURCE_DIR}/tools/bench/engines.c
                            ${PROJECT_SOURCE_DIR}/tools/filters.c)
 target_include_directories(bench_timer PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/tools/bench
-                                               ${PROJECT_SOURCE_DIR}/tools/oiio ${PROJECT_SOURCE_DIR}/tools)
+                                               ${PROJECT_SOURCE_DIR}/tools/oiio)
 target_link_libraries(bench_timer PRIVATE sample Threads::Threads m)
 target_compile_options(bench_timer PRIVATE ${SAMPLE_WARNINGS})
 add_test(NAME bench_timer COMMAND bench_timer)

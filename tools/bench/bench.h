@@ -17,7 +17,9 @@
 #ifndef TEXSAMPLE_BENCH_H
 #define TEXSAMPLE_BENCH_H
 
-#include "filters.h"
+/* By its path: programs built from bench's sources (tests/probes.cmake,
+ * scripts/perf_probe.sh) name only tools/bench in their include path. */
+#include "../filters.h"
 #include "oiio_ts.h"
 #include "sample/sample.h"
 
