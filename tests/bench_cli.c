@@ -112,7 +112,7 @@ static void tiny_json(void)
         }
         if (strcmp(filter, "nearest") == 0) CHECK(tps == 1.0, "nearest reads 1 texel: %g", tps);
         if (strcmp(filter, "bilinear") == 0) CHECK(tps == 4.0, "bilinear reads 4: %g", tps);
-        if (strcmp(filter, "bicubic") == 0) CHECK(tps == 16.0, "bicubic reads 16: %g", tps);
+        if (strcmp(filter, "bicubic-bspline") == 0) CHECK(tps == 16.0, "bicubic-bspline reads 16: %g", tps);
         if (strcmp(filter, "blinn-newell") == 0 || strcmp(filter, "ewa") == 0)
             CHECK(cJSON_IsNull(ratio), "%s has no OIIO twin", filter);
         else

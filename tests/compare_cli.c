@@ -137,8 +137,9 @@ static double csv_rmse(const char *csv, const char *scene, const char *config)
 
 static void ordering_and_outputs(void)
 {
-    static const char *const configs[] = {"nearest", "bilinear", "nmn", "trilinear", "aniso16",
-                                          "bicubic", "bn-jacobian", "bn-corners", "ewa"};
+    static const char *const configs[] = {"nearest", "bilinear", "nearest_mipmap_nearest", "trilinear",
+                                          "aniso16", "cubic_mipmap_linear", "blinn-newell",
+                                          "blinn-newell-corners", "ewa"};
     static const char *const files[] = {"truth.png", "truth_crop.png", "contact.png",
                                         "trilinear.png", "trilinear_err.png", "trilinear_crop.png"};
     double e[9];
@@ -171,7 +172,7 @@ static void ordering_and_outputs(void)
           "results.json lists the configurations and pictures");
     free(json);
     html = slurp("ord", "index.html", &len);
-    CHECK(html && strstr(html, "<img src=\"plane/bn-corners_err.png\"") && strstr(html, "</html>"),
+    CHECK(html && strstr(html, "<img src=\"plane/blinn-newell-corners_err.png\"") && strstr(html, "</html>"),
           "index.html links the pictures");
     free(html);
     csv = slurp(".", "out.txt", &len);

@@ -9,12 +9,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+/* The libsample backend of registry entry `name` (tools/filters.h). */
 static const fq_backend *backend(const char *name)
 {
-    int k;
-    for (k = 0; k < fq_libsample_backend_count; ++k)
-        if (strcmp(fq_libsample_backends[k].name, name) == 0) return &fq_libsample_backends[k];
-    return NULL;
+    static fq_backend b;
+    const tool_filter *f = tool_filter_by_name(name);
+    if (!f) return NULL;
+    fq_libsample_backend(f, &b);
+    return &b;
 }
 
 /* Measure wave (p, q) on an n-texel texture with backend `name`. */
@@ -197,8 +199,8 @@ static void test_dc(void)
     fq_result r;
     int k;
     fq_layout_init(&l, 3.0, 4.0);
-    for (k = 0; k < fq_libsample_backend_count; ++k) {
-        r = measure(fq_libsample_backends[k].name, 64, 0, 0, &l);
+    for (k = 0; k < tool_filter_count; ++k) {
+        r = measure(tool_filter_name(&tool_filters[k]), 64, 0, 0, &l);
         CHECK_NEAR(r.amp, 1.0, 1e-6);
     }
 }

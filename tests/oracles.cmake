@@ -7,7 +7,8 @@
 # OpenImageIO (tools/bench/bench_no_oiio.h) and shares the developer's
 # probe helpers (dev/probe_util.h).
 add_executable(lean_footprint ${CMAKE_CURRENT_SOURCE_DIR}/oracles/lean_footprint.c
-                              ${PROJECT_SOURCE_DIR}/tools/bench/queries.c ${PROJECT_SOURCE_DIR}/tools/bench/engines.c)
+                              ${PROJECT_SOURCE_DIR}/tools/bench/queries.c ${PROJECT_SOURCE_DIR}/tools/bench/engines.c
+                              ${PROJECT_SOURCE_DIR}/tools/filters.c)
 target_include_directories(lean_footprint PRIVATE ${PROJECT_SOURCE_DIR}/libsample/src ${PROJECT_SOURCE_DIR}/tools/bench
                                                   ${PROJECT_SOURCE_DIR}/tools/oiio ${PROJECT_SOURCE_DIR}/dev)
 target_link_libraries(lean_footprint PRIVATE sample m)

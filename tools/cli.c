@@ -1,6 +1,7 @@
 /* Shared command-line plumbing. */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
+#include "filters.h"
 
 #include <errno.h>
 #include <math.h>
@@ -91,7 +92,7 @@ int cli_parse_float4(const char *s, float out[4])
     return n == 1 || n == 4;
 }
 
-const char cli_sampler_help[] =
+static const char sampler_help[] =
     "Sampler state (named after OpenGL sampler parameters):\n"
     "  --wrap-s MODE, --wrap-t MODE, --wrap MODE (both)\n"
     "        repeat | mirrored_repeat | clamp_to_edge | clamp_to_border |\n"
@@ -105,11 +106,52 @@ const char cli_sampler_help[] =
     "  --cubic-clamp                            clamp cubic overshoot to the 2x2 range\n"
     "  --lod-bias B, --min-lod L, --max-lod L, --base-level N, --max-level N\n"
     "  --filter none|aniso|blinn-newell|ewa     footprint filter for minification\n"
+    "  --filter NAME                            a filter of the tools' registry (below): its\n"
+    "                                           min, mag, footprint, cubic, max anisotropy and\n"
+    "                                           options; options after it override them\n"
     "  --aniso N                                max anisotropy (default 1; 16 with --filter aniso)\n"
     "  --nearest-level-floor                    NEAREST_MIPMAP_*: floor(base+lambda+1/2)\n"
     "  --legacy-switchover                      pre-GL-4.5 c = 0.5 rule\n"
     "  --aniso-pow2                             round the anisotropic probe count up to 2^k\n"
-    "  --bn-area-weight                         Blinn-Newell corners: screen-space (area) weights\n";
+    "  --bn-area-weight                         Blinn-Newell corners: screen-space (area) weights\n"
+    "Registry filters for --filter NAME (doc/comparison.md; blinn-newell and ewa\n"
+    "set the footprint only, which samples the same: it replaces min whenever\n"
+    "lambda > 0; Blinn-Newell's corner mode is --filter blinn-newell --corners FILE):\n";
+
+/* The registry entries --filter takes: libsample's, without the corner
+ * entries (the corners come with the queries, where a tool has them). */
+static const char *const no_defaults[] = {NULL};
+
+void cli_sampler_help_print(void)
+{
+    fputs(sampler_help, stdout);
+    tool_picks_help(stdout, "  ", no_defaults, 0);
+}
+
+/* --filter: a footprint filter name keeps meaning the footprint alone, so
+ * that lookups written against it sample as before; otherwise a registry
+ * entry. Returns 0, or −1 after reporting. */
+static int filter_flag(const char *sub, const char *v, sample_sampler *s)
+{
+    int e = v ? sample_footprint_parse(v) : -1;
+    tool_pick p;
+    if (e >= 0) {
+        s->footprint = (sample_footprint)e;
+        if (e == SAMPLE_FOOTPRINT_ANISOTROPIC && s->max_anisotropy == 1.0f) s->max_anisotropy = 16.0f;
+        return 0;
+    }
+    if (!v || tool_pick_read(sub, v, &p) != 0) {
+        cli_usage_error(sub, "--filter: unknown filter '%s'", v ? v : "");
+        return -1;
+    }
+    if (!tool_pick_allowed(&p, 0)) {
+        cli_usage_error(sub, "--filter: '%s' is not a libsample filter by itself%s", v,
+                        p.oiio ? "" : " (corner mode: --filter blinn-newell --corners FILE)");
+        return -1;
+    }
+    tool_filter_apply(p.f, s);
+    return 0;
+}
 
 #define ENUM_FLAG(opt, parse, field, what)                                          \
     if (cli_opt(argc, argv, i, opt, &v)) {                                          \
@@ -152,10 +194,7 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     ENUM_FLAG("--wrap", sample_wrap_parse, s->wrap_s = s->wrap_t = (sample_wrap)e, "wrap mode")
     ENUM_FLAG("--min", sample_filter_parse, s->min_filter = (sample_filter)e, "filter")
     ENUM_FLAG("--cubic", sample_cubic_parse, s->cubic = (sample_cubic)e, "cubic variant")
-    ENUM_FLAG("--filter", sample_footprint_parse,
-              { s->footprint = (sample_footprint)e;
-                if (e == SAMPLE_FOOTPRINT_ANISOTROPIC && s->max_anisotropy == 1.0f) s->max_anisotropy = 16.0f; },
-              "footprint filter")
+    if (cli_opt(argc, argv, i, "--filter", &v)) return filter_flag(sub, v, s) == 0 ? 1 : -1;
     if (cli_opt(argc, argv, i, "--mag", &v)) {
         int e = v ? sample_filter_parse(v) : -1;
         if (e != SAMPLE_NEAREST && e != SAMPLE_LINEAR && e != SAMPLE_CUBIC) {

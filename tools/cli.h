@@ -30,13 +30,15 @@ int cli_parse_float4(const char *s, float out[4]);
 /* The sampler flags shared by lookup, render and compare:
  *   --wrap-s/--wrap-t/--wrap, --min, --mag, --border, --cubic, --cubic-clamp,
  *   --lod-bias, --min-lod, --max-lod, --base-level, --max-level,
- *   --filter none|aniso|blinn-newell|ewa, --aniso N,
+ *   --filter none|aniso|blinn-newell|ewa or a filter registry name
+ *   (tools/filters.h), --aniso N,
  *   --nearest-level-floor, --legacy-switchover
  * Returns 1 if argv[*i] was one of them (consumed), 0 if not, −1 on a bad
  * value (already reported). */
 int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_sampler *s);
-/* The help text for those flags. */
-extern const char cli_sampler_help[];
+/* The help text for those flags, on stdout (the registry's names
+ * generated). */
+void cli_sampler_help_print(void);
 
 /* Whole-file read/write (write goes to FILE.tmp, then renames, so a failed
  * write leaves no truncated file). */

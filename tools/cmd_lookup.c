@@ -57,7 +57,8 @@ int cmd_lookup(int argc, char **argv)
     for (i = 1; i < argc; ++i) {
         int r;
         if (cli_is_help(argv[i])) {
-            printf("%s%s", help, cli_sampler_help);
+            fputs(help, stdout);
+            cli_sampler_help_print();
             return EXIT_OK;
         }
         if (cli_opt(argc, argv, &i, "--reference-path", NULL)) {

@@ -4,8 +4,11 @@
 # CLI helpers and (when built) the OpenImageIO shim.
 file(GLOB TEXSAMPLE_FREQ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/freq/*.c)
 list(FILTER TEXSAMPLE_FREQ_SOURCES EXCLUDE REGEX "/(cmd_freq|out|oiio_backend)\\.c$")
+# The filter registry (filters.h) that freq's backends and the other tools
+# select from rides in the same library, so the tests see it too.
+list(APPEND TEXSAMPLE_FREQ_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/filters.c)
 add_library(texsample_freq STATIC ${TEXSAMPLE_FREQ_SOURCES})
-target_include_directories(texsample_freq PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/freq)
+target_include_directories(texsample_freq PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/freq ${CMAKE_CURRENT_SOURCE_DIR})
 target_compile_options(texsample_freq PRIVATE ${SAMPLE_WARNINGS})
 target_link_libraries(texsample_freq PUBLIC sample m)
 # texsample globbed tools/*/*.c already; drop the library's sources from it.

@@ -3,7 +3,8 @@
  *
  *   queries.c    the standard query sets, from a fixed seed
  *   textures.c   synthetic textures: libsample objects and OIIO files
- *   engines.c    the filters measured: libsample's and OIIO's, one table
+ *   engines.c    the filters measured: registry entries (tools/filters.h),
+ *                on libsample and on their OIIO twins
  *   timing.c     runs over pthreads, medians
  *   report.c     the text table and the JSON
  *   save.c       --save: the queries and a manifest, for re-timing elsewhere
@@ -16,6 +17,9 @@
 #ifndef TEXSAMPLE_BENCH_H
 #define TEXSAMPLE_BENCH_H
 
+/* By its path: programs built from bench's sources (tests/probes.cmake,
+ * scripts/perf_probe.sh) name only tools/bench in their include path. */
+#include "../filters.h"
 #include "oiio_ts.h"
 #include "sample/sample.h"
 
@@ -85,7 +89,13 @@ typedef struct bench_engine {
     oiio_ts_opts opts;
 } bench_engine;
 
-/* All engines: libsample's filters first, then OIIO's. */
+/* bench's default filters, NULL-terminated registry names. */
+extern const char *const bench_default_filters[];
+/* Engines for registry entries filters[0 … count): libsample's in that
+ * order, then the OIIO twins of those that have one. Returns how many, or
+ * −1 if max is less than 2 × count. */
+int bench_engines_of(const tool_filter *const *filters, int count, bench_engine *out, int max);
+/* The same for bench_default_filters. */
 int bench_engines(bench_engine *out, int max);
 
 /* Sample queries [0, n) with an engine into rgba (n × 4), optionally with

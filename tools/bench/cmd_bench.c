@@ -27,8 +27,8 @@ static const char help[] =
     "aniso8 (8:1, random angles), plane (a ground plane to the horizon in scanline\n"
     "order, exact Jacobians), plane-shuffled (the same queries in random order).\n"
     "Formats: float, half, srgb8 (OIIO gets the same 8-bit codes; it does not\n"
-    "decode sRGB). Filters: nearest, bilinear, bicubic (B-spline, as OIIO's),\n"
-    "trilinear, aniso16, blinn-newell, ewa (the last two have no OIIO twin).\n\n"
+    "decode sRGB). Filters: the tools' filter registry (doc/comparison.md); each\n"
+    "runs on libsample and, where it has one, on its OIIO twin.\n\n"
     "Options:\n"
     "  --quick            a short run: --size 512 --queries 16384 --runs 3\n"
     "  --size N           texture side in texels (default 2048)\n"
@@ -38,7 +38,8 @@ static const char help[] =
     "  --batch N          queries per sample_batch call (default 256)\n"
     "  --sets LIST        comma-separated set names (default all)\n"
     "  --formats LIST     comma-separated formats (default all)\n"
-    "  --filters LIST     comma-separated filters (default all)\n"
+    "  --filters LIST     comma-separated filters, from the list below (default, or\n"
+    "                     'all': those marked *)\n"
     "  --no-oiio          measure libsample only\n"
     "  --scalar           libsample through its general per-query path\n"
     "                     (sample_batch_reference), to measure the fast path\n"
@@ -52,15 +53,16 @@ static const char help[] =
     "                     files (written even with --no-oiio) and manifest.json\n"
     "                     (layout, settings of both sides, 1-thread samples/s),\n"
     "                     for re-timing by tools/bench/oiio_replay\n\n"
-    "Exit codes: 0 success, 1 runtime error, 2 usage error.\n";
+    "Filters:\n";
+static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
 enum { MAX_ENGINES = 32 };
 
 typedef struct bench_opts {
     int size, runs, threads, oiio, scalar;
     size_t queries, batch;
-    unsigned sets, formats, filters; /* bit masks */
-    const char *json, *tmpdir, *save;
+    unsigned sets, formats; /* bit masks */
+    const char *json, *tmpdir, *save, *filters;
 } bench_opts;
 
 /* "a,b,c" over `names` into a bit mask; returns 0, or EXIT_USAGE after
@@ -96,12 +98,11 @@ static int parse_size(const char *opt, const char *v, long lo, long hi, long *ou
 }
 
 /* Returns 0, or nonzero after reporting a usage error. */
-static int parse_args(int argc, char **argv, const bench_engine *eng, int neng, bench_opts *o)
+static int parse_args(int argc, char **argv, bench_opts *o)
 {
-    const char *names[MAX_ENGINES], *v;
-    int i, nours = 0;
+    const char *v;
+    int i;
     long x = 0; /* set by parse_size before every use; GCC cannot see it */
-    for (i = 0; i < neng && !eng[i].oiio; ++i) names[nours++] = eng[i].name;
     for (i = 1; i < argc; ++i) {
         if (cli_opt(argc, argv, &i, "--quick", NULL)) {
             o->size = 512;
@@ -132,7 +133,8 @@ static int parse_args(int argc, char **argv, const bench_engine *eng, int neng, 
             if (parse_list("--formats", v, bench_format_names, BENCH_FMT_COUNT, &o->formats))
                 return -1;
         } else if (cli_opt(argc, argv, &i, "--filters", &v)) {
-            if (parse_list("--filters", v, names, nours, &o->filters)) return -1;
+            if (!v || !*v) return cli_usage_error("bench", "--filters needs a list");
+            o->filters = v;
         } else if (cli_opt(argc, argv, &i, "--json", &v)) {
             if (!v) return cli_usage_error("bench", "--json needs a file name");
             o->json = v;
@@ -167,17 +169,6 @@ static char *join_args(int argc, char **argv)
     return s;
 }
 
-/* Which engines a --filters mask selects: the named libsample filters and
- * their OIIO twins. */
-static int engine_selected(const bench_engine *eng, int neng, int e, unsigned filters)
-{
-    int k;
-    if (!eng[e].oiio) return (filters >> e) & 1u;
-    for (k = 0; k < neng && !eng[k].oiio; ++k)
-        if (eng[k].match == e) return (filters >> k) & 1u;
-    return 0;
-}
-
 /* Mean texels read per sample over the whole set (an untimed pass).
  * Returns 0, or −1 after reporting. */
 static int texels_per_sample(const bench_engine *e, const bench_texture *t,
@@ -203,11 +194,15 @@ static int texels_per_sample(const bench_engine *e, const bench_texture *t,
 typedef struct bench_run {
     bench_opts o;
     bench_engine eng[MAX_ENGINES];
-    int neng;
+    int neng, nours; /* engines, of which libsample's (the first nours) */
     oiio_ts *ts;
     bench_result *res;
     size_t nres;
 } bench_run;
+
+/* Is engine e measured? Every engine is one the filters named (the table
+ * is built from them); OIIO's only when OIIO runs. */
+static int engine_selected(const bench_run *b, int e) { return !b->eng[e].oiio || b->ts; }
 
 /* Every selected engine on one texture and query set, at 1 and at all
  * threads. The 1-thread passes take turns: pass r of every engine runs
@@ -232,7 +227,7 @@ static int measure(bench_run *b, const bench_texture *tex, bench_format fmt, ben
     for (e = 0; e < b->neng; ++e) {
         const bench_engine *en = &b->eng[e];
         double tps = -1.0;
-        if (!engine_selected(b->eng, b->neng, e, b->o.filters) || (en->oiio && !b->ts)) continue;
+        if (!engine_selected(b, e)) continue;
         if (!en->oiio && texels_per_sample(en, tex, q, b->o.queries, &tps) != 0) return -1;
         slot[e] = b->nres;
         sel[e] = 1;
@@ -289,7 +284,7 @@ static int run_all(bench_run *b, const char *files)
     size_t done = 0, total;
     int fmt, set, e, nsel = 0, rc = 0, saved_any_format = 0;
     for (e = 0; e < b->neng; ++e)
-        nsel += engine_selected(b->eng, b->neng, e, b->o.filters) && (!b->eng[e].oiio || b->ts);
+        nsel += engine_selected(b, e);
     total = (size_t)(count_bits(b->o.sets) * count_bits(b->o.formats) * nsel *
                      (b->o.threads > 1 ? 2 : 1));
     b->res = calloc(total ? total : 1, sizeof *b->res);
@@ -350,6 +345,24 @@ static int make_save_dir(const char *dir)
     return 0;
 }
 
+/* The engine table from --filters: the named registry entries (libsample
+ * only: the twins come with them; no corners, the query sets have only
+ * Jacobians). Returns 0, or EXIT_USAGE after reporting. */
+static int make_engines(bench_run *b)
+{
+    tool_pick picks[MAX_ENGINES / 2];
+    const tool_filter *f[MAX_ENGINES / 2];
+    char err[160];
+    int k, n = tool_picks_parse("bench", b->o.filters, bench_default_filters, 0, picks,
+                                MAX_ENGINES / 2, err, sizeof err);
+    if (n < 0) return cli_usage_error("bench", "--filters: %s", err);
+    if (n == 0) return cli_usage_error("bench", "--filters names no filter");
+    for (k = 0; k < n; ++k) f[k] = picks[k].f;
+    b->nours = n;
+    b->neng = bench_engines_of(f, n, b->eng, MAX_ENGINES);
+    return b->neng < 0 ? cli_usage_error("bench", "--filters: too many") : 0;
+}
+
 int cmd_bench(int argc, char **argv)
 {
     bench_run b;
@@ -363,10 +376,11 @@ int cmd_bench(int argc, char **argv)
     for (i = 1; i < argc; ++i)
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
+            tool_picks_help(stdout, "  ", bench_default_filters, 0);
+            fputs(help_tail, stdout);
             return EXIT_OK;
         }
     memset(&b, 0, sizeof b);
-    b.neng = bench_engines(b.eng, MAX_ENGINES);
     b.o.size = 2048;
     b.o.queries = 262144;
     b.o.runs = 5;
@@ -375,8 +389,8 @@ int cmd_bench(int argc, char **argv)
     b.o.oiio = 1;
     b.o.sets = (1u << BENCH_SET_COUNT) - 1;
     b.o.formats = (1u << BENCH_FMT_COUNT) - 1;
-    b.o.filters = ~0u;
-    if (b.neng < 0 || parse_args(argc, argv, b.eng, b.neng, &b.o) != 0) return EXIT_USAGE;
+    b.o.filters = "all";
+    if (parse_args(argc, argv, &b.o) != 0 || make_engines(&b) != 0) return EXIT_USAGE;
     for (i = 0; i < b.neng; ++i)
         if (b.o.scalar && !b.eng[i].oiio) b.eng[i].reference = 1;
 
@@ -417,7 +431,7 @@ int cmd_bench(int argc, char **argv)
         if (!b.o.json || strcmp(b.o.json, "-") != 0) bench_print_table(&r);
         if (b.o.json && bench_write_json(&r, b.o.json) != 0) rc = EXIT_RUNTIME;
         if (b.o.save) {
-            bench_save sv = {b.o.save, b.o.sets, b.o.formats, b.o.filters};
+            bench_save sv = {b.o.save, b.o.sets, b.o.formats, (1u << b.nours) - 1u};
             if (bench_save_manifest(&sv, &r) != 0) rc = EXIT_RUNTIME;
         }
     }

@@ -1,8 +1,9 @@
 /*
- * The filters the benchmark measures, and how each maps to OpenImageIO's
- * TextureSystem where it has a twin. All wrap with REPEAT ("periodic").
- * bicubic uses the cubic B-spline because that is OIIO's bicubic kernel;
- * Catmull–Rom reads the same 4 × 4 texels at the same cost.
+ * The filters the benchmark measures: rows of the tools' filter registry
+ * (tools/filters.h), each on libsample and, where the entry has one, on its
+ * OpenImageIO twin. All wrap with REPEAT ("periodic"). bicubic-bspline is
+ * the bicubic measured by default because the B-spline is OIIO's bicubic
+ * kernel; Catmull–Rom reads the same 4 × 4 texels at the same cost.
  */
 #include "bench.h"
 #include "sample/testing.h"
@@ -10,58 +11,43 @@
 #include <stdio.h>
 #include <string.h>
 
-typedef struct engine_def {
-    const char *name;
-    sample_filter min, mag;
-    sample_footprint footprint;
-    int oiio_mode; /* the OIIO twin's mode, or −1 */
-} engine_def;
-
-static const engine_def defs[] = {
-    {"nearest", SAMPLE_NEAREST, SAMPLE_NEAREST, SAMPLE_FOOTPRINT_NONE, OIIO_TS_CLOSEST},
-    {"bilinear", SAMPLE_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE, OIIO_TS_BILINEAR},
-    {"bicubic", SAMPLE_CUBIC, SAMPLE_CUBIC, SAMPLE_FOOTPRINT_NONE, OIIO_TS_BICUBIC},
-    {"trilinear", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE,
-     OIIO_TS_TRILINEAR},
-    {"aniso16", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_ANISOTROPIC,
-     OIIO_TS_ANISO},
-    {"blinn-newell", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_BLINN_NEWELL,
-     -1},
-    {"ewa", SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_EWA, -1},
+const char *const bench_default_filters[] = {
+    "nearest", "bilinear", "bicubic-bspline", "trilinear", "aniso16", "blinn-newell", "ewa", NULL,
 };
-enum { NDEFS = sizeof defs / sizeof defs[0] };
 
-int bench_engines(bench_engine *out, int max)
+int bench_engines_of(const tool_filter *const *filters, int count, bench_engine *out, int max)
 {
-    int k, n = 0, twin[NDEFS];
-    if (max < 2 * NDEFS) return -1;
+    int k, n = 0;
+    if (max < 2 * count) return -1;
     memset(out, 0, (size_t)max * sizeof *out);
-    for (k = 0; k < NDEFS; ++k) {
+    for (k = 0; k < count; ++k) {
         bench_engine *e = &out[n++];
-        e->name = defs[k].name;
+        e->name = tool_filter_name(filters[k]);
         sample_sampler_init(&e->smp);
-        e->smp.min_filter = defs[k].min;
-        e->smp.mag_filter = defs[k].mag;
-        e->smp.footprint = defs[k].footprint;
-        e->smp.cubic = SAMPLE_CUBIC_BSPLINE;
-        e->smp.max_anisotropy = 16.0f;
+        tool_filter_apply(filters[k], &e->smp);
         e->match = -1;
     }
-    for (k = 0; k < NDEFS; ++k) {
+    for (k = 0; k < count; ++k) {
         bench_engine *e;
-        twin[k] = -1;
-        if (defs[k].oiio_mode < 0) continue;
-        twin[k] = n;
+        if (!filters[k]->oiio.twin) continue;
+        out[k].match = n;
         e = &out[n++];
-        e->name = defs[k].name;
+        e->name = out[k].name;
         e->oiio = 1;
         e->match = -1;
         oiio_ts_opts_init(&e->opts);
-        e->opts.mode = (oiio_ts_mode)defs[k].oiio_mode;
-        e->opts.max_aniso = 16;
+        tool_filter_oiio_opts(filters[k], &e->opts);
     }
-    for (k = 0; k < NDEFS; ++k) out[k].match = twin[k];
     return n;
+}
+
+int bench_engines(bench_engine *out, int max)
+{
+    const tool_filter *f[sizeof bench_default_filters / sizeof bench_default_filters[0]];
+    int n = 0;
+    for (; bench_default_filters[n]; ++n)
+        if (!(f[n] = tool_filter_by_name(bench_default_filters[n]))) return -1;
+    return bench_engines_of(f, n, out, max);
 }
 
 int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,

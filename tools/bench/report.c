@@ -50,8 +50,11 @@ static void cell(const bench_result *x)
 
 void bench_print_table(const bench_report *r)
 {
-    int set, fmt, e, k, nthr = r->threads_max > 1 ? 2 : 1;
+    int set, fmt, e, k, nthr = r->threads_max > 1 ? 2 : 1, nw = 13;
     const int thr[2] = {1, r->threads_max};
+    /* The filter column fits the longest registry name measured. */
+    for (e = 0; e < r->engine_count; ++e)
+        if ((int)strlen(r->engines[e].name) > nw) nw = (int)strlen(r->engines[e].name);
     printf("texsample bench: %dx%d RGBA textures, %zu queries per set, batches of %zu,\n"
            "median [min-max] of %d runs after a warm-up, in millions of samples per second.\n"
            "texels = texels read per sample (libsample's sample_stats); ratio = ours / OIIO.\n"
@@ -67,7 +70,7 @@ void bench_print_table(const bench_report *r)
             for (k = 0; k < (int)r->count; ++k)
                 any |= (int)r->results[k].set == set && (int)r->results[k].format == fmt;
             if (!any) continue;
-            printf("\n== %s, %s ==\n%-13s %7s", bench_set_names[set], bench_format_names[fmt],
+            printf("\n== %s, %s ==\n%-*s %7s", bench_set_names[set], bench_format_names[fmt], nw,
                    "filter", "texels");
             for (k = 0; k < nthr; ++k) printf("  %-20s", k ? "ours (all threads)" : "ours (1 thread)");
             for (k = 0; k < nthr; ++k) printf("  %-20s", k ? "OIIO (all threads)" : "OIIO (1 thread)");
@@ -77,7 +80,7 @@ void bench_print_table(const bench_report *r)
                 const bench_engine *en = &r->engines[e];
                 const bench_result *x1 = find(r, set, fmt, e, 1);
                 if (!x1 && !find(r, set, fmt, e, r->threads_max)) continue;
-                printf("%-13s ", en->name);
+                printf("%-*s ", nw, en->name);
                 if (x1 && x1->texels_per_sample >= 0.0)
                     printf("%7.2f", x1->texels_per_sample);
                 else

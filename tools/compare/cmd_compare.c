@@ -24,16 +24,17 @@ typedef struct opts {
     int nscenes;
     int size, truth, threads, raw;
     const char *out;
-    int cfg[CMP_MAX_CONFIGS], ncfg;
+    cmp_config cfg[CMP_MAX_CONFIGS];
+    int ncfg;
 } opts;
+
+/* The rows compare runs: any registry pick, corners included; OpenImageIO's
+ * twins unless --no-oiio. */
+static unsigned accepted(int no_oiio) { return TOOL_PICK_CORNERS | (no_oiio ? 0u : TOOL_PICK_OIIO); }
 
 static void usage(void)
 {
-    int k, nw = 0;
-    for (k = 0; k < cmp_config_count; ++k) {
-        int n = (int)strlen(cmp_configs[k].name);
-        if (n > nw) nw = n;
-    }
+    int k;
     printf("usage: texsample compare [--scene NAME|FILE]... [options]\n\n"
            "Renders each scene with every filter configuration and scores each against\n"
            "the ground truth (the texture integrated against the 2x2-pixel pyramid through\n"
@@ -49,9 +50,10 @@ static void usage(void)
            "  --truth-samples N   N x N samples per 2x2-pixel footprint, even (default 32)\n"
            "  --threads N         worker threads (default: all processors)\n"
            "  --out DIR           output folder (default out/compare)\n"
-           "  --configs LIST      comma-separated configurations (default all):\n");
-    for (k = 0; k < cmp_config_count; ++k)
-        printf("                        %-*s %s\n", nw, cmp_configs[k].name, cmp_configs[k].label);
+           "  --configs LIST      comma-separated configurations from the tools' filter\n"
+           "                      registry (doc/comparison.md); default, or 'all': those\n"
+           "                      marked *\n");
+    tool_picks_help(stdout, "                     ", cmp_default_configs, accepted(0));
     printf("  --no-oiio           leave out OpenImageIO's TextureSystem\n"
            "  --raw               also write float32 RGBA images (truth.f32, CONFIG.f32) and\n"
            "                      the metric mask (mask.u8) into each scene's folder\n\n"
@@ -60,9 +62,9 @@ static void usage(void)
 
 static int parse_args(int argc, char **argv, opts *o)
 {
-    char bad[80];
+    char err[160];
     int i, k, no_oiio = 0;
-    const char *v;
+    const char *v, *configs = "all";
     memset(o, 0, sizeof *o);
     o->size = 256;
     o->truth = 32;
@@ -71,7 +73,6 @@ static int parse_args(int argc, char **argv, opts *o)
         long n = sysconf(_SC_NPROCESSORS_ONLN);
         o->threads = n < 1 ? 1 : n > 256 ? 256 : (int)n;
     }
-    o->ncfg = cmp_configs_parse("all", o->cfg, CMP_MAX_CONFIGS, bad, sizeof bad);
     for (i = 1; i < argc; ++i) {
         if (cli_opt(argc, argv, &i, "--scene", &v)) {
             if (!v) return cli_usage_error("compare", "--scene needs a value");
@@ -97,9 +98,7 @@ static int parse_args(int argc, char **argv, opts *o)
             o->out = v;
         } else if (cli_opt(argc, argv, &i, "--configs", &v)) {
             if (!v) return cli_usage_error("compare", "--configs needs a list");
-            o->ncfg = cmp_configs_parse(v, o->cfg, CMP_MAX_CONFIGS, bad, sizeof bad);
-            if (o->ncfg < 0) return cli_usage_error("compare", "unknown configuration '%s'", bad);
-            if (o->ncfg == 0) return cli_usage_error("compare", "--configs names no configuration");
+            configs = v;
         } else if (cli_opt(argc, argv, &i, "--no-oiio", NULL)) {
             no_oiio = 1;
         } else if (cli_opt(argc, argv, &i, "--raw", NULL)) {
@@ -108,13 +107,10 @@ static int parse_args(int argc, char **argv, opts *o)
             return cli_usage_error("compare", "unknown option '%s'", argv[i]);
         }
     }
-    if (no_oiio) {
-        int n = 0;
-        for (k = 0; k < o->ncfg; ++k)
-            if (!cmp_configs[o->cfg[k]].oiio) o->cfg[n++] = o->cfg[k];
-        o->ncfg = n;
-        if (n == 0) return cli_usage_error("compare", "no configuration left without OpenImageIO");
-    }
+    /* After the loop: --no-oiio may follow --configs. */
+    o->ncfg = cmp_configs_parse(configs, accepted(no_oiio), o->cfg, CMP_MAX_CONFIGS, err, sizeof err);
+    if (o->ncfg < 0) return cli_usage_error("compare", "--configs: %s", err);
+    if (o->ncfg == 0) return cli_usage_error("compare", "--configs names no configuration");
     if (o->nscenes == 0)
         for (k = 0; cmp_default_scenes[k]; ++k) o->scenes[o->nscenes++] = cmp_default_scenes[k];
     return -1;
@@ -208,12 +204,12 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
     s->truth_samples = t.samples;
     s->truth_seconds = t.seconds;
     for (k = 0; k < o->ncfg; ++k) {
-        const cmp_config *c = &cmp_configs[o->cfg[k]];
+        const cmp_config *c = &o->cfg[k];
         cmp_row *w = &s->rows[s->nrows++];
         cmp_result r;
         w->cfg = c;
         fprintf(stderr, "compare %s: %s\n", s->label, c->label);
-        if (c->oiio ? cmp_run_oiio(&v, c, dir, o->threads, &r, w->note, sizeof w->note)
+        if (c->pick.oiio ? cmp_run_oiio(&v, c, dir, o->threads, &r, w->note, sizeof w->note)
                     : cmp_run_sample(&v, c, o->threads, &r, w->note, sizeof w->note)) {
             fprintf(stderr, "texsample compare: %s: %s (left out)\n", s->label, w->note);
             continue;

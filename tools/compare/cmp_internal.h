@@ -1,7 +1,7 @@
 /*
  * compare's private header: where its pieces meet (doc/comparison.md).
  *
- *   configs.c     the filter configurations and --configs parsing
+ *   configs.c     the default rows and --configs parsing (tools/filters.h)
  *   scenes.c      the built-in comparison set (scene names → scenes)
  *   view.c        one ray cast per pixel: the queries every filter answers
  *   run.c         one configuration over a view (libsample), timed
@@ -18,6 +18,7 @@
 #ifndef TEXSAMPLE_CMP_INTERNAL_H
 #define TEXSAMPLE_CMP_INTERNAL_H
 
+#include "filters.h"
 #include "render/render.h"
 #include "sample/sample.h"
 
@@ -25,23 +26,22 @@
 
 /* ---- Configurations (configs.c) -------------------------------------- */
 
+#define CMP_MAX_CONFIGS 16
+
+/* One row: a registry pick (libsample or its OpenImageIO twin). */
 typedef struct cmp_config {
-    const char *name;  /* command-line and file name: "trilinear" */
-    const char *label; /* what the page calls it */
-    sample_filter min, mag;
-    sample_footprint footprint;
-    float max_aniso;
-    int corners; /* 1: pass the exact footprint corners (Blinn–Newell corner mode) */
-    int oiio;    /* 1: OpenImageIO's TextureSystem instead of libsample */
-    unsigned options; /* SAMPLE_OPT_* added to the scene's sampler options */
+    tool_pick pick;
+    char name[TOOL_FILTER_NAME_MAX];   /* command-line and file name: "trilinear" */
+    char label[TOOL_FILTER_LABEL_MAX]; /* what the page calls it */
 } cmp_config;
 
-extern const cmp_config cmp_configs[];
-extern const int cmp_config_count;
-
-/* Parse "a,b,c" (names of cmp_configs, or "all") into indices, in the
- * order of cmp_configs. Returns the count, or −1 with the bad name in bad. */
-int cmp_configs_parse(const char *list, int *idx, int max, char *bad, size_t badlen);
+/* compare's default rows, NULL-terminated registry names. */
+extern const char *const cmp_default_configs[];
+/* Parse "a,b,c" (registry names, or "all" for the defaults) into rows, in
+ * registry order (tool_picks_parse). Returns the count, or −1 with what is
+ * wrong in err. */
+int cmp_configs_parse(const char *list, unsigned accept, cmp_config *out, int max, char *err,
+                      size_t errlen);
 /* The scene's sampler with the configuration's filters (wrap modes and
  * border colour stay the scene's). */
 void cmp_config_sampler(const cmp_config *c, const sample_sampler *scene, sample_sampler *out);
@@ -178,7 +178,6 @@ int cmp_pic_write(const char *path, const cmp_pic *p, char *err, size_t errlen);
  * which the colour saturates; one value for every scene so that pictures
  * compare across scenes. */
 #define CMP_HEAT_SCALE 0.25f
-#define CMP_MAX_CONFIGS 16
 
 typedef struct cmp_row {
     const cmp_config *cfg;

@@ -1,8 +1,8 @@
 /*
- * The industry reference: OpenImageIO's TextureSystem at its best settings
- * (MipModeAniso, 16 probes, its own mip file made as maketx would from the
- * same base level), asked the same queries with the same derivatives as
- * libsample (view.c). OIIO reads the texture from a file, so each texture's
+ * The industry reference: OpenImageIO's TextureSystem at a registry
+ * entry's twin settings (by default aniso16's: MipModeAniso, 16 probes),
+ * from its own mip file made as maketx would from the same base level,
+ * asked the same queries with the same derivatives as libsample (view.c). OIIO reads the texture from a file, so each texture's
  * base level is written next to the results first. Without OIIO in the
  * build, the configuration is reported as unavailable.
  */
@@ -75,8 +75,7 @@ int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, in
         return 1;
     }
     oiio_ts_opts_init(&ctx.opts);
-    ctx.opts.mode = OIIO_TS_ANISO;
-    ctx.opts.max_aniso = (int)c->max_aniso;
+    tool_filter_oiio_opts(c->pick.f, &ctx.opts);
     ctx.opts.wrap_s = v->sampler.wrap_s;
     ctx.opts.wrap_t = v->sampler.wrap_t;
     ctx.ts = oiio_ts_create(0.0);

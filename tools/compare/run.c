@@ -188,7 +188,7 @@ int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, cmp_resu
         snprintf(err, errlen, "%s: invalid sampler state", c->name);
         return 1;
     }
-    if (cmp_run(v, c->corners, sample_fn, &ctx, 1, threads, r)) {
+    if (cmp_run(v, c->pick.f->corners, sample_fn, &ctx, 1, threads, r)) {
         snprintf(err, errlen, "%s: out of memory or sampling failed", c->name);
         return 1;
     }

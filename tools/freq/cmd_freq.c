@@ -33,9 +33,8 @@ static const char help[] =
     "  --m LIST           minifications, texels/pixel (default 1,1.5,2,3,5.7,16)\n"
     "  --theta LIST       orientations in degrees (default 0,22.5,45)\n"
     "  --r LIST           anisotropy ratios >= 1 (default 1,2,4,8,16)\n"
-    "  --filters LIST     nearest,bilinear,nearest_mipmap_nearest,trilinear,\n"
-    "                     cubic_mipmap_linear,aniso16,blinn_newell,ewa,\n"
-    "                     oiio_trilinear,oiio_aniso (default: all available)\n"
+    "  --filters LIST     comma-separated filters, from the list below (default:\n"
+    "                     those marked *, as far as available; 'all' is the same)\n"
     "  --no-oiio          leave out OpenImageIO's TextureSystem\n"
     "  --size N           texture side, a power of two 16..8192 (default 512)\n"
     "  --step F           screen-frequency grid step, cycles/pixel (default 1/64)\n"
@@ -44,7 +43,15 @@ static const char help[] =
     "                     pixels per row, rows, offsets (default 16, 1, 64)\n"
     "  --no-png           SVG plots only (no PNG, no zone plates)\n"
     "\n"
-    "Exit codes: 0 success, 1 runtime error, 2 usage error.\n";
+    "Filters (the tools' shared registry, doc/comparison.md):\n";
+static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
+
+/* The picks freq can run in this build: libsample's entries without the
+ * exact corners (the sweep has only Jacobians), OIIO twins with the shim. */
+static unsigned accepted(int no_oiio)
+{
+    return fq_oiio_available() && !no_oiio ? TOOL_PICK_OIIO : 0u;
+}
 
 static int parse_list(const char *s, double *out, int *n, double lo, double hi)
 {
@@ -58,17 +65,6 @@ static int parse_list(const char *s, double *out, int *n, double lo, double hi)
         out[(*n)++] = v;
     }
     return *n > 0;
-}
-
-/* The backend called `name` among the engine's and OpenImageIO's. */
-static const fq_backend *find_backend(const char *name, const fq_backend *oiio, int noiio)
-{
-    int k;
-    for (k = 0; k < fq_libsample_backend_count; ++k)
-        if (strcmp(fq_libsample_backends[k].name, name) == 0) return &fq_libsample_backends[k];
-    for (k = 0; k < noiio; ++k)
-        if (strcmp(oiio[k].name, name) == 0) return &oiio[k];
-    return NULL;
 }
 
 static void progress(size_t done, size_t total) { cli_progress("freq", done, total); }
@@ -108,12 +104,13 @@ int cmd_freq(int argc, char **argv)
     static const double quick_m[] = {1.5, 5.7, 16}, quick_t[] = {0, 45}, quick_r[] = {1, 4};
     double m[MAX_LIST], th[MAX_LIST], r[MAX_LIST];
     int nm = 0, nt = 0, nr = 0, quick = 0, no_oiio = 0, png = 1, i, k, rc = EXIT_OK;
-    int size = 0, width = 0, rows = 0, phases = 0, noiio;
+    int size = 0, width = 0, rows = 0, phases = 0, npicks, any_oiio = 0;
     float step = 0.0f, fmax = 2.0f;
     const char *out_dir = "freq-out", *filters = NULL;
     const fq_backend *list[MAX_BACKENDS];
-    fq_backend oiio[FQ_OIIO_MAX];
-    fq_oiio_cfg oiio_cfg[FQ_OIIO_MAX];
+    fq_backend backends[MAX_BACKENDS];
+    tool_pick picks[MAX_BACKENDS];
+    fq_oiio_cfg oiio_cfg[MAX_BACKENDS];
     fq_oiio_file oiio_file;
     char tmp[1024] = "", err[512] = "", command[2048];
     fq_plan plan;
@@ -124,6 +121,8 @@ int cmd_freq(int argc, char **argv)
         const char *v = NULL;
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
+            tool_picks_help(stdout, "  ", fq_default_filters, accepted(0));
+            fputs(help_tail, stdout);
             return EXIT_OK;
         } else if (cli_opt(argc, argv, &i, "--quick", NULL)) {
             quick = 1;
@@ -186,39 +185,28 @@ int cmd_freq(int argc, char **argv)
     if (!rows) rows = 1;
     if (!phases) phases = quick ? 32 : 64;
 
+    npicks = tool_picks_parse("freq", filters ? filters : "all", fq_default_filters,
+                              accepted(no_oiio), picks, MAX_BACKENDS, err, sizeof err);
+    if (npicks < 0) return cli_usage_error("freq", "--filters: %s", err);
+    if (npicks == 0) return cli_usage_error("freq", "--filters names no filter");
+    for (k = 0; k < npicks; ++k) any_oiio |= picks[k].oiio;
+
     /* OpenImageIO writes a texture file per grating into a private folder. */
-    noiio = 0;
     memset(&oiio_file, 0, sizeof oiio_file);
-    if (!no_oiio) {
+    if (any_oiio) {
         const char *base = getenv("TMPDIR");
         snprintf(tmp, sizeof tmp, "%s/texsample-freq-XXXXXX", base && *base ? base : "/tmp");
         if (!mkdtemp(tmp))
             return cli_runtime_error("freq", "cannot create a temporary folder %s", tmp);
-        noiio = fq_oiio_backends(oiio, oiio_cfg, &oiio_file, tmp);
+        fq_oiio_file_init(&oiio_file, tmp);
     }
     memset(&plan, 0, sizeof plan);
-    if (filters) {
-        char buf[512], *tok, *save = NULL;
-        if (strlen(filters) >= sizeof buf) return cli_usage_error("freq", "--filters: too long");
-        strcpy(buf, filters);
-        for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-            const fq_backend *b = find_backend(tok, oiio, noiio);
-            if (!b) {
-                rc = cli_usage_error("freq", "--filters: unknown or unavailable filter '%s'%s",
-                                     tok, strncmp(tok, "oiio", 4) == 0
-                                              ? " (built without OpenImageIO, or --no-oiio)"
-                                              : "");
-                goto done;
-            }
-            if (plan.nbackends >= MAX_BACKENDS) {
-                rc = cli_usage_error("freq", "--filters: at most %d", MAX_BACKENDS);
-                goto done;
-            }
-            list[plan.nbackends++] = b;
-        }
-    } else {
-        for (k = 0; k < fq_libsample_backend_count; ++k) list[plan.nbackends++] = &fq_libsample_backends[k];
-        for (k = 0; k < noiio; ++k) list[plan.nbackends++] = &oiio[k];
+    for (k = 0; k < npicks; ++k) {
+        if (picks[k].oiio)
+            fq_oiio_backend(&picks[k], &oiio_file, &oiio_cfg[k], &backends[k]);
+        else
+            fq_libsample_backend(picks[k].f, &backends[k]);
+        list[plan.nbackends++] = &backends[k];
     }
     plan.m = m;
     plan.nm = nm;

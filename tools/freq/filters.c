@@ -1,17 +1,10 @@
-/* The engine's filter configurations under test (DESIGN §9, issue 8) and
- * the backend that runs them through sample_batch. */
+/* The backend that runs the engine's filter configurations under test
+ * (DESIGN §9) through sample_batch; the configurations are the filter
+ * registry's entries (tools/filters.h). */
 #include "freq.h"
 
 #include <stdio.h>
 #include <stdlib.h>
-
-/* What distinguishes one configuration; everything else is OpenGL's
- * initial sampler state with REPEAT on both axes. */
-typedef struct lib_config {
-    sample_filter min, mag;
-    sample_footprint footprint;
-    float max_aniso;
-} lib_config;
 
 typedef struct lib_ctx {
     const sample_texture *tex;
@@ -21,7 +14,7 @@ typedef struct lib_ctx {
 static void *lib_prepare(const fq_backend *b, const sample_texture *tex, const float *texels,
                          int n, int channels, char *err, size_t errlen)
 {
-    const lib_config *cfg = (const lib_config *)b->config;
+    const tool_filter *f = (const tool_filter *)b->config;
     lib_ctx *c = (lib_ctx *)malloc(sizeof *c);
     (void)texels;
     (void)n;
@@ -33,10 +26,7 @@ static void *lib_prepare(const fq_backend *b, const sample_texture *tex, const f
     c->tex = tex;
     sample_sampler_init(&c->smp);
     c->smp.wrap_s = c->smp.wrap_t = SAMPLE_WRAP_REPEAT;
-    c->smp.min_filter = cfg->min;
-    c->smp.mag_filter = cfg->mag;
-    c->smp.footprint = cfg->footprint;
-    c->smp.max_anisotropy = cfg->max_aniso;
+    tool_filter_apply(f, &c->smp);
     return c;
 }
 
@@ -71,34 +61,18 @@ static int lib_sample(void *ctx, const sample_query *q, size_t count, float *rgb
 
 static void lib_release(void *ctx) { free(ctx); }
 
-static const lib_config cfg_nearest = {SAMPLE_NEAREST, SAMPLE_NEAREST, SAMPLE_FOOTPRINT_NONE, 1};
-static const lib_config cfg_bilinear = {SAMPLE_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE, 1};
-static const lib_config cfg_nmn = {SAMPLE_NEAREST_MIPMAP_NEAREST, SAMPLE_NEAREST,
-                                   SAMPLE_FOOTPRINT_NONE, 1};
-static const lib_config cfg_trilinear = {SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-                                         SAMPLE_FOOTPRINT_NONE, 1};
-static const lib_config cfg_cubic = {SAMPLE_CUBIC_MIPMAP_LINEAR, SAMPLE_CUBIC,
-                                     SAMPLE_FOOTPRINT_NONE, 1};
-/* The footprint filters replace min_filter when λ > 0; trilinear stays the
- * min filter so that the sampler is also valid without them. */
-static const lib_config cfg_aniso = {SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-                                     SAMPLE_FOOTPRINT_ANISOTROPIC, 16};
-static const lib_config cfg_bn = {SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-                                  SAMPLE_FOOTPRINT_BLINN_NEWELL, 1};
-static const lib_config cfg_ewa = {SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_LINEAR,
-                                   SAMPLE_FOOTPRINT_EWA, 1};
-
-#define LIB(nm, lb, cfg) {nm, lb, lib_prepare, lib_sample, lib_release, &cfg, 1}
-
-const fq_backend fq_libsample_backends[] = {
-    LIB("nearest", "nearest (no mips)", cfg_nearest),
-    LIB("bilinear", "bilinear (no mips)", cfg_bilinear),
-    LIB("nearest_mipmap_nearest", "nearest_mipmap_nearest", cfg_nmn),
-    LIB("trilinear", "trilinear", cfg_trilinear),
-    LIB("cubic_mipmap_linear", "cubic_mipmap_linear (Catmull-Rom)", cfg_cubic),
-    LIB("aniso16", "anisotropic x16", cfg_aniso),
-    LIB("blinn_newell", "Blinn-Newell", cfg_bn),
-    LIB("ewa", "EWA", cfg_ewa),
+const char *const fq_default_filters[] = {
+    "nearest", "bilinear", "nearest_mipmap_nearest", "trilinear", "aniso16",
+    "cubic_mipmap_linear", "blinn-newell", "ewa", "oiio-trilinear", "oiio-aniso16", NULL,
 };
-const int fq_libsample_backend_count =
-    (int)(sizeof fq_libsample_backends / sizeof fq_libsample_backends[0]);
+
+void fq_libsample_backend(const tool_filter *f, fq_backend *out)
+{
+    out->name = tool_filter_name(f);
+    out->label = f->label;
+    out->prepare = lib_prepare;
+    out->sample = lib_sample;
+    out->release = lib_release;
+    out->config = f;
+    out->counts_texels = 1;
+}

@@ -7,7 +7,8 @@
  *
  *   grating.c   wave vectors, grating and zone-plate textures
  *   measure.c   screen layout, offsets, least-squares amplitude fit
- *   filters.c   the filter configurations and the libsample backend
+ *   filters.c   the libsample backend and freq's default rows of the
+ *               filter registry (tools/filters.h)
  *   sweep.c     the (m, θ, r) × filter × frequency loops
  *   summary.c   per-curve and per-filter numbers
  *   report.c    CSV, Markdown and HTML text
@@ -29,6 +30,7 @@
 #ifndef TEXSAMPLE_FREQ_H
 #define TEXSAMPLE_FREQ_H
 
+#include "filters.h"
 #include "sample/sample.h"
 
 #include <stddef.h>
@@ -105,11 +107,13 @@ typedef struct fq_backend {
     int counts_texels;  /* 0: texels per sample is not known (OpenImageIO) */
 } fq_backend;
 
-/* The engine's filter configurations (filters.c): nearest, bilinear,
- * nearest_mipmap_nearest, trilinear, cubic_mipmap_linear, aniso16,
- * blinn_newell, ewa. */
-extern const fq_backend fq_libsample_backends[];
-extern const int fq_libsample_backend_count;
+/* freq's default rows, NULL-terminated registry names (tools/filters.h):
+ * the OpenGL ladder, cubic, the footprint filters and OpenImageIO's
+ * trilinear and anisotropic twins. */
+extern const char *const fq_default_filters[];
+/* The backend that samples registry entry f (libsample, REPEAT on both
+ * axes); f's lifetime is the registry's (tools/filters.c). */
+void fq_libsample_backend(const tool_filter *f, fq_backend *out);
 
 /* ---- Measurement (measure.c) --------------------------------------------- */
 

@@ -5,14 +5,10 @@
 
 #include "freq.h"
 
-/* OpenImageIO's TextureSystem backends (trilinear, anisotropic ×16), whose
- * temporary texture files go in `tmp`: fills out[] (with cfg[] as their
- * caller-owned configuration) and returns how many (0 when texsample was
- * built without the shim). */
-#define FQ_OIIO_MAX 2
 /* The TextureSystem and texture file the OpenImageIO backends share: one
  * file per grating, written once (the backends are prepared one after the
- * other on the same texels) under a new name whenever the texels change. */
+ * other on the same texels) under a new name whenever the texels change;
+ * the files go in `dir`. */
 typedef struct fq_oiio_file {
     char dir[1024];
     char path[1100];
@@ -22,12 +18,20 @@ typedef struct fq_oiio_file {
     struct oiio_ts *ts;         /* created on first use */
     struct oiio_ts_tex *handle; /* the current file, opened in ts */
 } fq_oiio_file;
+/* One OpenImageIO backend's caller-owned configuration: the registry entry
+ * whose twin it runs, and its names. */
 typedef struct fq_oiio_cfg {
-    int mode;
+    const tool_filter *f;
     fq_oiio_file *file;
+    char name[TOOL_FILTER_NAME_MAX], label[TOOL_FILTER_LABEL_MAX];
 } fq_oiio_cfg;
-int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], fq_oiio_file *file,
-                     const char *tmp);
+/* 1 when texsample was built with the shim (tools/oiio). */
+int fq_oiio_available(void);
+/* An empty file record whose texture files will go in `tmp`. */
+void fq_oiio_file_init(fq_oiio_file *file, const char *tmp);
+/* The twin of pick p (p->oiio set, p->f has a twin) as a backend sampling
+ * through `file`; cfg is its storage and must outlive it. */
+void fq_oiio_backend(const tool_pick *p, fq_oiio_file *file, fq_oiio_cfg *cfg, fq_backend *out);
 /* Remove the current file, free the copy and the TextureSystem. */
 void fq_oiio_file_clear(fq_oiio_file *file);
 

@@ -1,7 +1,8 @@
-/* OpenImageIO's TextureSystem as a backend of the sweep (tools/oiio shim).
+/* OpenImageIO's TextureSystem as a backend of the sweep (tools/oiio shim),
+ * at the settings of a filter registry entry's twin (tools/filters.h).
  * Each grating goes through a mip-mapped file that oiio_ts_make_texture
  * writes as maketx would (its own 2 × 2 box levels), one file shared by
- * both OpenImageIO configurations, in one TextureSystem private to the run
+ * every OpenImageIO configuration, in one TextureSystem private to the run
  * (oiio_file). Built only when texsample has the shim. */
 #define _POSIX_C_SOURCE 200809L
 #include "freq_cli.h"
@@ -127,9 +128,8 @@ static void *oiio_prepare(const fq_backend *b, const sample_texture *tex, const 
     }
     c->file = cfg->file;
     oiio_ts_opts_init(&c->opts);
-    c->opts.mode = (oiio_ts_mode)cfg->mode;
+    tool_filter_oiio_opts(cfg->f, &c->opts);
     c->opts.wrap_s = c->opts.wrap_t = SAMPLE_WRAP_REPEAT;
-    c->opts.max_aniso = 16;
     return c;
 }
 
@@ -143,43 +143,46 @@ static int oiio_sample(void *ctx, const sample_query *q, size_t count, float *rg
 
 static void oiio_release(void *ctx) { free(ctx); }
 
-int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], fq_oiio_file *file,
-                     const char *tmp)
+int fq_oiio_available(void) { return 1; }
+
+void fq_oiio_file_init(fq_oiio_file *file, const char *tmp)
 {
-    static const struct {
-        const char *name, *label;
-        oiio_ts_mode mode;
-    } kinds[FQ_OIIO_MAX] = {
-        {"oiio_trilinear", "OpenImageIO trilinear", OIIO_TS_TRILINEAR},
-        {"oiio_aniso", "OpenImageIO anisotropic x16", OIIO_TS_ANISO},
-    };
-    int k;
     memset(file, 0, sizeof *file);
     snprintf(file->dir, sizeof file->dir, "%s", tmp);
-    for (k = 0; k < FQ_OIIO_MAX; ++k) {
-        cfg[k].mode = kinds[k].mode;
-        cfg[k].file = file;
-        out[k].name = kinds[k].name;
-        out[k].label = kinds[k].label;
-        out[k].prepare = oiio_prepare;
-        out[k].sample = oiio_sample;
-        out[k].release = oiio_release;
-        out[k].config = &cfg[k];
-        out[k].counts_texels = 0;
-    }
-    return FQ_OIIO_MAX;
+}
+
+void fq_oiio_backend(const tool_pick *p, fq_oiio_file *file, fq_oiio_cfg *cfg, fq_backend *out)
+{
+    cfg->f = p->f;
+    cfg->file = file;
+    out->name = tool_pick_name(p, cfg->name, sizeof cfg->name);
+    out->label = tool_pick_label(p, cfg->label, sizeof cfg->label);
+    out->prepare = oiio_prepare;
+    out->sample = oiio_sample;
+    out->release = oiio_release;
+    out->config = cfg;
+    out->counts_texels = 0;
 }
 
 #else
 
-int fq_oiio_backends(fq_backend out[FQ_OIIO_MAX], fq_oiio_cfg cfg[FQ_OIIO_MAX], fq_oiio_file *file,
-                     const char *tmp)
+#include <string.h>
+
+int fq_oiio_available(void) { return 0; }
+
+void fq_oiio_file_init(fq_oiio_file *file, const char *tmp)
 {
-    (void)out;
-    (void)cfg;
-    (void)file;
     (void)tmp;
-    return 0;
+    memset(file, 0, sizeof *file);
+}
+
+/* Never called: without the shim no OIIO pick is accepted (cmd_freq.c). */
+void fq_oiio_backend(const tool_pick *p, fq_oiio_file *file, fq_oiio_cfg *cfg, fq_backend *out)
+{
+    (void)p;
+    (void)file;
+    (void)cfg;
+    memset(out, 0, sizeof *out);
 }
 
 void fq_oiio_file_clear(fq_oiio_file *file) { (void)file; }

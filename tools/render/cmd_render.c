@@ -51,7 +51,8 @@ int cmd_render(int argc, char **argv)
     for (i = 1; i < argc; ++i) {
         int r;
         if (cli_is_help(argv[i])) {
-            printf("%s%s", render_help, cli_sampler_help);
+            fputs(render_help, stdout);
+            cli_sampler_help_print();
             return EXIT_OK;
         }
         if ((r = cli_sampler_flag("render", argc, argv, &i, &o.sampler)) != 0) {
