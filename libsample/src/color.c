@@ -1,5 +1,5 @@
 /* Colour helpers: the sRGB transfer function and IEEE half conversion. */
-#include "internal.h"
+#include "texel.h"
 
 /* The 8-bit decode tables, one array (internal.h names its rows
  * sample_srgb_table and sample_unorm8_table): the fast path decodes an

@@ -6,7 +6,7 @@
  * ahead, aniso_address, and read from those addresses; the rare others
  * with this format's bilinear inlined); Blinn–Newell and EWA
  * planned one query ahead (fp_footprint_plan: geometry, counting pass and
- * row prefetches) and accumulated by the filter (sample_run_footprint). Also the
+ * row prefetches) and accumulated by the filter (filter_footprint_query). Also the
  * per-format readers the footprint filters use (tex_readers).
  *
  * It computes exactly what the general path (sampler.c's loop over
@@ -38,7 +38,8 @@
  * header) is tested for every format, channel count, wrap mode and filter
  * (tests/test_fastpath.c).
  */
-#include "internal.h"
+#include "filter.h"
+#include "kernels.h"
 #include "lod_lanes.h"
 
 /* Queries planned (and prefetched) ahead of their evaluation. Larger blocks
@@ -87,7 +88,7 @@ typedef uint32_t (*aniso_fn)(const sample_ctx *c, const sample_query *q, const f
 typedef struct fast_plan {
     int kind; /* PLAN_GL: the taps below; PLAN_BORDER: non-finite input;
                * PLAN_ANISO: λ > 0, the probes of `an`; PLAN_FOOTPRINT: λ > 0
-               * with Blinn–Newell or EWA (sample_run_footprint) */
+               * with Blinn–Newell or EWA (filter_footprint_query) */
     float lam;
     lod_choice ch;
     union {
@@ -556,7 +557,7 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         return;
     }
     if (!gl && pl->kind == PLAN_FOOTPRINT) {
-        sample_run_footprint(c, a, i, fpl);
+        filter_footprint_query(c, a, i, fpl);
         return;
     }
     if (!gl && pl->kind == PLAN_ANISO) {

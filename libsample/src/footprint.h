@@ -1,6 +1,5 @@
 /*
- * Internal to libsample, included by internal.h only: what Blinn–Newell
- * and EWA share (footprint_common.c, footprint_rows.c and the two filters'
+ * What Blinn–Newell and EWA share (footprint_common.c, footprint_rows.c and the two filters'
  * files) — the footprint's shape and level, the weighted sums, the
  * counting pass's row spans, the walk over a level's rows and the level
  * loop split into plan and run. DESIGN §7, doc/footprint-filters.md,
@@ -9,9 +8,20 @@
 #ifndef SAMPLE_FOOTPRINT_H
 #define SAMPLE_FOOTPRINT_H
 
-#ifndef SAMPLE_INTERNAL_H
-#error "footprint.h is included by internal.h"
-#endif
+#include "kernels.h"
+#include "lod.h"
+#include "recon.h"
+
+/* The two filters (footprint_blinn_newell.c, footprint_ewa.c; DESIGN §7):
+ * each returns texels read, fills out (and dds/ddt if non-NULL) and stats
+ * (if non-NULL), reads at most SAMPLE_MAX_FOOTPRINT_TEXELS texels, and
+ * applies the sampler's and the call's bias itself (lod_lambda). */
+uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
+                         float call_bias, float out[4], float dds[4], float ddt[4],
+                         sample_stats *st);
+uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
+                float dds[4], float ddt[4], sample_stats *st);
+
 
 /* ---- Footprint geometry shared by the filters (footprint_common.c) ----- */
 
@@ -401,27 +411,6 @@ SAMPLE_FORCE_INLINE void fp_pass_add(fp_pass *ps, double w, double dwdu, double 
     if (ps->tr) fp_accum_add(ps->acc, w, dwdv, dwdu, T);
     else fp_accum_add(ps->acc, w, dwdu, dwdv, T);
     ps->total += 1.0;
-}
-
-/* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
- * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
- * address is kept inside the level so that no invalid pointer is ever
- * formed. The pair's first and last byte (they may straddle a line) are
- * asked for without testing whether they share one: that test mispredicts
- * (fast_gl.c, prefetch_run). */
-SAMPLE_FORCE_INLINE void ctx_prefetch_block(const sample_ctx *c, const struct sample_level *L, float u, float v)
-{
-    int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
-    int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
-    size_t tb = c->tex->texel_bytes;
-    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
-    size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
-    SAMPLE_PREFETCH(p);
-    SAMPLE_PREFETCH(p + e);
-    if (j + 1 < L->h) {
-        SAMPLE_PREFETCH(p + L->stride);
-        SAMPLE_PREFETCH(p + L->stride + e);
-    }
 }
 
 /* One level of a footprint filter: when `count_only`, returns (as a double,

@@ -10,7 +10,8 @@
  * so the probes are spread over one pixel step along the major column
  * (offsets from −½ + 1/(N + 1) to ½ − 1/(N + 1)), not over the 2 × 2 region.
  */
-#include "internal.h"
+#include "aniso.h"
+#include "kernels.h"
 
 /* At most this many probes: 8 texels each (two bilinear levels) stay within
  * SAMPLE_MAX_FOOTPRINT_TEXELS whatever max_anisotropy says. */

@@ -20,7 +20,7 @@
  * weights are exactly the bilinear ones. It also guarantees a texel centre
  * strictly inside, so the sum is never empty.
  */
-#include "internal.h"
+#include "footprint.h"
 
 /* One level's footprint in texels of that level. fp_run visits each level
  * twice (count, then accumulate); the second visit reuses the first's

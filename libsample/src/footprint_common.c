@@ -2,7 +2,7 @@
  * Footprint geometry and the level loop shared by the Blinn–Newell and EWA
  * filters (DESIGN §7, doc/footprint-filters.md).
  */
-#include "internal.h"
+#include "footprint.h"
 
 #include <float.h>
 

@@ -22,7 +22,7 @@
  * same order in every build, and the sums are added texel by texel in row
  * order, so every build returns the same bits (tests/test_fastpath.c).
  */
-#include "internal.h"
+#include "footprint.h"
 
 #ifndef SAMPLE_ISA
 #error "footprint_rows.c is built once per instruction set with SAMPLE_ISA set (libsample/CMakeLists.txt)"

@@ -14,7 +14,7 @@
  * saves the AVX and AVX-512 registers (libgcc's cpuinfo reads XGETBV);
  * without it only the baseline tables are used.
  */
-#include "internal.h"
+#include "kernels.h"
 #include "sample/testing.h"
 
 #include <stdatomic.h>

@@ -4,7 +4,7 @@
  * lod_log2_rho, lod_lambda_base, lod_lambda and lod_select, called for
  * every query of the fast path, are static inline in internal.h.
  */
-#include "internal.h"
+#include "lod.h"
 
 void lod_split(const sample_ctx *c, float lambda, int *l0, int *l1, float *frac)
 {

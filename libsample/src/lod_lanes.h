@@ -26,7 +26,7 @@
 #ifndef SAMPLE_LOD_LANES_H
 #define SAMPLE_LOD_LANES_H
 
-#include "internal.h"
+#include "lod.h"
 
 #if SAMPLE_VEC_AVX2
 /* q[0 … 3]'s λ_base into out[0 … 3]. */

@@ -14,7 +14,8 @@
  * code 128, linear 0.216, not 0.5). Channels are filtered independently (no alpha premultiplication),
  * as glGenerateMipmap does.
  */
-#include "internal.h"
+#include "mip.h"
+#include "wrap.h"
 
 #include <stdlib.h>
 

@@ -1,5 +1,5 @@
 /* Enum names as the command line spells them, and status strings. */
-#include "internal.h"
+#include "base.h"
 
 #include <stdarg.h>
 #include <stdio.h>

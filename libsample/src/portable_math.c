@@ -11,7 +11,7 @@
  *       c = 1 + (Decimal(i) + Decimal("0.5")) / 128
  *       print(float(c.ln() / ln2).hex(), float(1 / c).hex())
  */
-#include "internal.h"
+#include "base.h"
 
 const double sample_log2_table[128][2] = {
     {0x1.709c46d7aac77p-8, 0x1.fe01fe01fe020p-1}, {0x1.1363117a97b0cp-6, 0x1.fa11caa01fa12p-1},

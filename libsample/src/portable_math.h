@@ -1,13 +1,13 @@
 /*
- * Internal to libsample, included by internal.h only: the elementary
+ * The elementary
  * functions the sampling path needs (log2 for λ, GL 4.6 §8.14.1; hypot for
  * the footprint's singular values, footprint_common.c) and the mip
  * builder's sin πx (its windowed sincs, mip.c), written with IEEE
  * 754's basic operations alone (+, −, ×, ÷, √, exact scaling by powers of
  * two), which every conforming machine rounds the same way.
  *
- * Why not libm: issue 10 asks for "the same answers bit for bit on any
- * machine", and libm's log2 and hypot are not correctly rounded — their
+ * Why not libm: DESIGN asks for the same answers bit for bit on any
+ * machine, and libm's log2 and hypot are not correctly rounded — their
  * last bit depends on the C library and its version (glibc 2.35 replaced
  * hypot, for one). A λ one ulp apart moves a trilinear blend weight and
  * with it the result's last bits. With these, results depend only on the
@@ -18,9 +18,10 @@
 #ifndef SAMPLE_PORTABLE_MATH_H
 #define SAMPLE_PORTABLE_MATH_H
 
-#ifndef SAMPLE_INTERNAL_H
-#error "portable_math.h is included by internal.h"
-#endif
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0
 #error "libsample's bit-for-bit results need FLT_EVAL_METHOD 0 (SSE2 arithmetic on x86, not x87)"

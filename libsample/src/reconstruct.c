@@ -2,7 +2,7 @@
  * Reconstruction on one level (DESIGN §4, GL 4.6 §8.14.2):
  * NEAREST, LINEAR (bilinear) and CUBIC (Mitchell–Netravali family).
  */
-#include "internal.h"
+#include "recon.h"
 
 #include <float.h>
 

@@ -8,7 +8,8 @@
  * filters' row walks are the scalar build's (footprint_rows.c compiled
  * with SAMPLE_NO_SIMD: plain C loops).
  */
-#include "internal.h"
+#include "kernels.h"
+#include "recon.h"
 
 static void ref_row(sample_format fmt, int nc, const unsigned char *p, size_t pitch, int n,
                     float (*out)[4])

@@ -2,7 +2,8 @@
  * Sampler state, validation and the batch dispatch: the state is checked and
  * the per-batch context built once; each query then takes one path.
  */
-#include "internal.h"
+#include "filter.h"
+#include "kernels.h"
 #include "sample/testing.h"
 
 void sample_sampler_init(sample_sampler *s)
@@ -51,69 +52,6 @@ sample_status sample_sampler_validate(const sample_sampler *s)
     return SAMPLE_OK;
 }
 
-/* Reconstruct and blend the levels an OpenGL filter chose for λ. */
-static uint32_t gl_apply(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
-                         float out[4], float dds[4], float ddt[4], sample_stats *st)
-{
-    uint32_t n = recon_level(c, ch->level0, ch->kind, q->s, q->t, out, dds, ddt);
-    if (ch->level1 >= 0) {
-        float o1[4], ds1[4], dt1[4];
-        n += recon_level(c, ch->level1, ch->kind, q->s, q->t, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
-        recon_blend(out, o1, ch->frac);
-        if (dds) recon_blend(dds, ds1, ch->frac);
-        if (ddt) recon_blend(ddt, dt1, ch->frac);
-    }
-    if (st) {
-        st->level0 = (int16_t)ch->level0;
-        st->level1 = (int16_t)ch->level1;
-        st->level_frac = ch->frac;
-        st->lod = lam;
-    }
-    return n;
-}
-
-uint32_t sample_gl(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
-                   float dds[4], float ddt[4], sample_stats *st)
-{
-    float lam = lod_lambda(c, lod_lambda_base(c, q), call_bias);
-    lod_choice ch = lod_select(c, lam);
-    return gl_apply(c, q, lam, &ch, out, dds, ddt, st);
-}
-
-void sample_run_footprint(const sample_ctx *c, const sample_batch_args *a, size_t i,
-                          const struct fp_plan *pl)
-{
-    const sample_query *q = &a->queries[i];
-    float *out = a->rgba + 4 * i;
-    float *dds = a->drgba_ds ? a->drgba_ds + 4 * i : NULL;
-    float *ddt = a->drgba_dt ? a->drgba_dt + 4 * i : NULL;
-    sample_stats local, *st = a->stats ? &a->stats[i] : &local;
-    float bias = a->lod_bias ? a->lod_bias[i] : 0.0f;
-    const sample_quad *corners = a->corners ? &a->corners[i] : NULL;
-    uint32_t n;
-
-    st->level0 = st->level1 = -1;
-    st->level_frac = 0.0f;
-    st->lod = 0.0f;
-    if (pl) {
-        n = fp_footprint_run(c, pl, out, dds, ddt, st);
-    } else {
-        switch (c->smp->footprint) {
-        case SAMPLE_FOOTPRINT_ANISOTROPIC:
-            n = fp_anisotropic(c, q, bias, out, dds, ddt, st);
-            break;
-        case SAMPLE_FOOTPRINT_BLINN_NEWELL:
-            n = fp_blinn_newell(c, q, corners, bias, out, dds, ddt, st);
-            break;
-        case SAMPLE_FOOTPRINT_EWA:
-        default:
-            n = fp_ewa(c, q, bias, out, dds, ddt, st);
-            break;
-        }
-    }
-    st->texels = n;
-}
-
 /* One query of the reference path: the border colour for non-finite
  * input (DESIGN §10), else λ (GL 4.6 §8.14.1), then the footprint filter
  * when one is set and λ > 0, else the level choice of §8.14.2–8.14.3 and
@@ -131,11 +69,11 @@ static void reference_query(const sample_ctx *c, const sample_batch_args *a, siz
     if (batch_query_finite(a, i)) {
         lam = lod_lambda(c, lod_lambda_base(c, q), a->lod_bias ? a->lod_bias[i] : 0.0f);
         if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && lam > 0.0f) {
-            sample_run_footprint(c, a, i, NULL);
+            filter_footprint_query(c, a, i, NULL);
             return;
         }
         ch = lod_select(c, lam);
-        st->texels = gl_apply(c, q, lam, &ch, out, dds, ddt, st);
+        st->texels = filter_gl_levels(c, q, lam, &ch, out, dds, ddt, st);
         return;
     }
     st->level0 = st->level1 = -1;
@@ -145,20 +83,6 @@ static void reference_query(const sample_ctx *c, const sample_batch_args *a, siz
     memcpy(out, c->border, sizeof c->border);
     if (dds) memset(dds, 0, 4 * sizeof(float));
     if (ddt) memset(ddt, 0, 4 * sizeof(float));
-}
-
-void ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp, const isa_kernels *k)
-{
-    c->tex = tex;
-    c->smp = smp;
-    memcpy(c->border, smp->border_color, sizeof c->border);
-    /* level_base and q (§8.14.3): base clamped to the levels present (an
-     * OpenGL texture would be incomplete; we read the last level instead),
-     * q = min(level_max, last level). */
-    c->base = smp->base_level < tex->nlevels ? smp->base_level : tex->nlevels - 1;
-    c->maxlev = smp->max_level < tex->nlevels - 1 ? smp->max_level : tex->nlevels - 1;
-    if (c->maxlev < c->base) c->maxlev = c->base;
-    c->isa = k;
 }
 
 /* The checks every batch makes; *run is 0 when there is nothing to do. */

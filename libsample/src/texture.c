@@ -3,7 +3,7 @@
 #define _DEFAULT_SOURCE /* posix_memalign, madvise: before any system header */
 #include <sys/mman.h>
 #endif
-#include "internal.h"
+#include "mip.h"
 
 #include <stdio.h>
 #include <stdlib.h>

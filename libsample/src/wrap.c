@@ -6,7 +6,7 @@
  * exactly representable there, so the modulo below is exact even for 1e30,
  * and nothing out of int range is ever converted (that would be UB).
  */
-#include "internal.h"
+#include "wrap.h"
 
 #include <float.h>
 

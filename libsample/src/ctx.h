@@ -1,0 +1,113 @@
+/*
+ * The per-batch context (sampler.c, ctx_init): texture, sampler state,
+ * level_base and q (GL 4.6 §8.14.3), border colour and the batch's
+ * kernels; texel reads through the wrap modes (ctx_texel), and the
+ * finiteness test that sends bad input to the border colour (DESIGN §10).
+ */
+#ifndef SAMPLE_CTX_H
+#define SAMPLE_CTX_H
+
+#include "texel.h"
+#include "wrap.h"
+
+struct isa_kernels;
+typedef struct sample_ctx {
+    const sample_texture *tex;
+    const sample_sampler *smp;
+    float border[4];
+    int base;      /* effective base level */
+    int maxlev;    /* q: last level that may be used (GL 4.6 §8.14.3) */
+    /* The kernels of this batch, chosen once when the batch starts (as
+     * zstd's dctx->bmi2): every loop below reads this, never a global. */
+    const struct isa_kernels *isa;
+} sample_ctx;
+
+/* The context of a batch: level_base and q (GL 4.6 §8.14.3) from the
+ * sampler and the levels present, the border colour, and the kernels k
+ * (isa_kernels_active(), or isa_kernels_reference). */
+void ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp,
+              const struct isa_kernels *k);
+
+/* Read texel (i, j) of level `lv` through the wrap modes; border colour where
+ * the wrap says so. Every filter reads texels through this. */
+static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, int linear,
+                             float out[4])
+{
+    const struct sample_level *L = &c->tex->level[lv];
+    int x, y;
+    /* Every wrap mode maps an in-range index to itself (wrap_index's own
+     * first test); checking here saves two calls on most reads. */
+    if (i >= 0.0 && i < (double)L->w && j >= 0.0 && j < (double)L->h) {
+        tex_decode(c->tex, L, (int)i, (int)j, out);
+        return;
+    }
+    x = wrap_index(c->smp->wrap_s, i, L->w, linear);
+    y = wrap_index(c->smp->wrap_t, j, L->h, linear);
+    if (x < 0 || y < 0) {
+        out[0] = c->border[0]; out[1] = c->border[1];
+        out[2] = c->border[2]; out[3] = c->border[3];
+        return;
+    }
+    tex_decode(c->tex, L, x, y, out);
+}
+
+/* Whether the n floats stored at p are all finite. A float is ±inf or NaN
+ * when its magnitude bits are ≥ 0x7f800000; adding 0x00800000 carries
+ * exactly those into bit 31, so one OR over the words and one test decide
+ * (a loop the compiler vectorizes, no branch per float). The words are
+ * read with memcpy: p may be a struct of floats (sample_query). */
+static inline int floats_finite(const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    uint32_t bad = 0, w;
+    size_t k;
+    for (k = 0; k < n; ++k) {
+        memcpy(&w, b + 4 * k, 4);
+        bad |= (w & 0x7fffffffu) + 0x00800000u;
+    }
+    return !(bad & 0x80000000u);
+}
+
+_Static_assert(sizeof(sample_query) == 6 * sizeof(float) && sizeof(sample_quad) == 8 * sizeof(float),
+               "queries and corners are plain arrays of floats");
+
+/* Whether queries first … first + n − 1 of a batch can all be filtered:
+ * DESIGN §10, non-finite coordinates, Jacobian, bias or corners give the
+ * border colour, decided before any arithmetic could turn them into an
+ * index. The fast path asks once for a block of queries, whose planning
+ * steps then run as passes over the block with no border case
+ * (fast_gl.c, gl_blocks). */
+static inline int batch_range_finite(const sample_batch_args *a, size_t first, size_t n)
+{
+    return floats_finite(a->queries + first, 6 * n) && (!a->lod_bias || floats_finite(a->lod_bias + first, n)) &&
+           (!a->corners || floats_finite(a->corners + first, 8 * n));
+}
+
+/* Whether query k of a batch can be filtered (batch_range_finite). */
+static inline int batch_query_finite(const sample_batch_args *a, size_t k)
+{
+    return batch_range_finite(a, k, 1);
+}
+
+/* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
+ * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
+ * address is kept inside the level so that no invalid pointer is ever
+ * formed. The pair's first and last byte (they may straddle a line) are
+ * asked for without testing whether they share one: that test mispredicts
+ * (fast_gl.c, prefetch_run). */
+SAMPLE_FORCE_INLINE void ctx_prefetch_block(const sample_ctx *c, const struct sample_level *L, float u, float v)
+{
+    int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
+    int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
+    size_t tb = c->tex->texel_bytes;
+    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
+    size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
+    SAMPLE_PREFETCH(p);
+    SAMPLE_PREFETCH(p + e);
+    if (j + 1 < L->h) {
+        SAMPLE_PREFETCH(p + L->stride);
+        SAMPLE_PREFETCH(p + L->stride + e);
+    }
+}
+
+#endif /* SAMPLE_CTX_H */
