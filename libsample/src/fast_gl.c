@@ -719,6 +719,11 @@ SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args
  * serves every other format and channel count. `name` names the set. In
  * the readers, FMT and NC may use fmt_/nc_, which every reader defines
  * from its arguments or its texture. */
+#define FAST_TEXTURE_FORMAT(c)                                                 \
+    const sample_format fmt_ = (c)->tex->format;                               \
+    const int nc_ = (c)->tex->channels;                                        \
+    (void)fmt_;                                                                \
+    (void)nc_
 #define TEX_READERS(name, FMT, NC)                                             \
     static void row_##name(sample_format fmt_, int nc_, const unsigned char *p, size_t pitch, int n, \
                            float (*out)[4])                                    \
@@ -730,10 +735,7 @@ SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args
     SAMPLE_FORCE_INLINE uint32_t bilinear_inline_##name(const sample_ctx *c, int lv, float s, float t, \
                                                         float out[4], float dds[4], float ddt[4]) \
     {                                                                          \
-        const sample_format fmt_ = c->tex->format;                             \
-        const int nc_ = c->tex->channels;                                      \
-        (void)fmt_;                                                            \
-        (void)nc_;                                                             \
+        FAST_TEXTURE_FORMAT(c);                                                \
         return bilinear_level(c, FMT, NC, lv, s, t, out, dds, ddt);            \
     }                                                                          \
     static uint32_t bilinear_##name(const sample_ctx *c, int lv, float s, float t, float out[4], \
@@ -747,10 +749,7 @@ SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args
                                                  const fp_aniso_setup *an, const aniso_taps *at, \
                                                  float out[4], float dds[4], float ddt[4]) \
     {                                                                          \
-        const sample_format fmt_ = c->tex->format;                             \
-        const int nc_ = c->tex->channels;                                      \
-        (void)fmt_;                                                            \
-        (void)nc_;                                                             \
+        FAST_TEXTURE_FORMAT(c);                                                \
         if (at->n && !dds && !ddt) return aniso_read(c, FMT, NC, an, at, out); \
         return fp_aniso_probes(c, q, an, bilinear_inline_##name, out, dds, ddt); \
     }
@@ -866,10 +865,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
 #define FAST_GL_KERNEL(name, FMT, NC)                                          \
     static void fast_gl_##name(const sample_ctx *c, const sample_batch_args *a) \
     {                                                                          \
-        const sample_format fmt_ = c->tex->format;                             \
-        const int nc_ = c->tex->channels;                                      \
-        (void)fmt_;                                                            \
-        (void)nc_;                                                             \
+        FAST_TEXTURE_FORMAT(c);                                                \
         fast_gl_batch(c, a, FMT, NC, aniso_##name);                            \
     }
 #define FAST_KERNEL_SET(name, FMT, NC) TEX_READERS(name, FMT, NC) FAST_GL_KERNEL(name, FMT, NC)

@@ -40,7 +40,7 @@ static sample_status check(io_src *s, const char *what, sample_error *err)
     unsigned version;
     size_t name_max;
     for (k = 0; k < 8; ++k) {
-        if (!io_src_byte(s, &c)) return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR header is truncated", what);
+        if (!io_src_byte(s, &c)) return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: OpenEXR header is truncated", what);
         head[k] = (unsigned char)c;
     }
     version = (unsigned)head[4] | (unsigned)head[5] << 8 | (unsigned)head[6] << 16 | (unsigned)head[7] << 24;
@@ -52,7 +52,7 @@ static sample_status check(io_src *s, const char *what, sample_error *err)
         int32_t size;
         unsigned char b[4];
         if (!src_string(s, name_max, name, &nlen))
-            return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute name is truncated or too long", what);
+            return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute name is truncated or too long", what);
         if (nlen == 0) {
             /* End of a part's header; multi-part files (bit 12) end the list
              * of headers with one more empty header. */
@@ -69,21 +69,21 @@ static sample_status check(io_src *s, const char *what, sample_error *err)
             continue;
         }
         if (++attrs > EXR_MAX_ATTRIBUTES)
-            return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR header has too many attributes", what);
+            return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: OpenEXR header has too many attributes", what);
         if (!src_string(s, name_max, type, &tlen))
-            return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' has a bad type name", what, name);
+            return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' has a bad type name", what, name);
         for (k = 0; k < 4; ++k) {
             if (!io_src_byte(s, &c))
-                return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' is truncated", what, name);
+                return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' is truncated", what, name);
             b[k] = (unsigned char)c;
         }
         size = (int32_t)((uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24);
         if (size < 0 || (uint64_t)size > s->size - s->pos)
-            return io_fail(err, SAMPLE_E_CORRUPT,
+            return sample_error_set(err, SAMPLE_E_CORRUPT,
                            "%s: OpenEXR attribute '%s' (%s) claims %ld bytes but only %llu remain", what, name,
                            type, (long)size, (unsigned long long)(s->size - s->pos));
         if (!io_src_skip(s, (uint64_t)size))
-            return io_fail(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' is truncated", what, name);
+            return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: OpenEXR attribute '%s' is truncated", what, name);
     }
 }
 

@@ -43,7 +43,7 @@ extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_tex
     sample_texture_info_get(tex, &inf);
     bool mipmapped = inf.levels > 1;
     if (mipmapped && inf.levels != full_chain(inf.width, inf.height))
-        return io_fail(err, SAMPLE_E_UNSUPPORTED,
+        return sample_error_set(err, SAMPLE_E_UNSUPPORTED,
                        "the texture has %d of its %d levels; a mip-mapped OpenEXR file holds all of them", inf.levels,
                        full_chain(inf.width, inf.height));
     try {
@@ -90,8 +90,8 @@ extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_tex
         }
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {
-        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory writing a mip-mapped OpenEXR file");
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory writing a mip-mapped OpenEXR file");
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_IO, "cannot write the OpenEXR file: %s", e.what());
+        return sample_error_set(err, SAMPLE_E_IO, "cannot write the OpenEXR file: %s", e.what());
     }
 }

@@ -144,7 +144,7 @@ extern "C" sample_status io_exr_tiled_open(const char *path, const void *data, s
         *out = x.release();
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {
-        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory opening an OpenEXR file");
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory opening an OpenEXR file");
     } catch (...) {
         // A header Imf cannot parse: leave the file to OIIO, which reports
         // it as the reader always has.
@@ -156,13 +156,13 @@ extern "C" void io_exr_tiled_info_get(const io_exr_tiled *x, io_reader_info *inf
 
 extern "C" sample_status io_exr_tiled_level_size(io_exr_tiled *x, int k, int *w, int *h, sample_error *err)
 {
-    if (k < 0 || k >= x->info.nlevels) return io_fail(err, SAMPLE_E_CORRUPT, "no mip level %d in the file", k);
+    if (k < 0 || k >= x->info.nlevels) return sample_error_set(err, SAMPLE_E_CORRUPT, "no mip level %d in the file", k);
     try {
         *w = x->part->levelWidth(k);
         *h = x->part->levelHeight(k);
         return SAMPLE_OK;
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read mip level %d: %s", k, e.what());
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read mip level %d: %s", k, e.what());
     }
 }
 
@@ -173,7 +173,7 @@ extern "C" sample_status io_exr_tiled_read(io_exr_tiled *x, int k, io_ptype type
     // io_read.c asks for the native type (linear data is stored as read);
     // anything else is a caller bug, not a file problem.
     if (type != native || nchan < 1 || nchan > x->nchan)
-        return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "direct OpenEXR read: unsupported request");
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "direct OpenEXR read: unsupported request");
     try {
         size_t bytes = x->type == Imf::HALF ? 2 : 4, nc = (size_t)nchan;
         Imath::Box2i dw = x->part->dataWindowForLevel(k);
@@ -186,11 +186,11 @@ extern "C" sample_status io_exr_tiled_read(io_exr_tiled *x, int k, io_ptype type
         x->part->readTiles(0, x->part->numXTiles(k) - 1, 0, x->part->numYTiles(k) - 1, k);
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {
-        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory reading level %d", k);
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory reading level %d", k);
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read the tiles of level %d: %s", k, e.what());
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read the tiles of level %d: %s", k, e.what());
     } catch (...) {
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read the tiles of level %d", k);
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read the tiles of level %d", k);
     }
 }
 

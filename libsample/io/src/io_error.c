@@ -1,19 +1,10 @@
-/* Errors and option defaults of libsample_io. */
+/* Option defaults of libsample_io. */
 #include "io_internal.h"
 
 #include <ctype.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-
-sample_status io_fail(sample_error *err, sample_status status, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    sample_error_vset(err, status, fmt, ap);
-    va_end(ap);
-    return status;
-}
 
 void sample_io_options_init(sample_io_options *o)
 {

@@ -2,7 +2,7 @@
  * libsample_io internal header: where the C orchestration meets the thin
  * C++ files that talk to the libraries.
  *
- *   io_error.c      io_fail, options defaults
+ *   io_error.c      options defaults (errors: sample_error_set)
  *   io_read.c       file → texture: levels, storage format, colour (C)
  *   io_write.c      pictures out: colour, quantization, temp + rename (C)
  *   io_tmp.c        temporary names and the final rename
@@ -25,13 +25,6 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* Record an error (when err is non-NULL) and return status. */
-sample_status io_fail(sample_error *err, sample_status status, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
 
 /* ---- Reader (oiio_read.cpp) --------------------------------------------- */
 

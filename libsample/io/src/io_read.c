@@ -51,7 +51,7 @@ static sample_status choose_colorspace(const io_colour *col, const sample_io_opt
     size_t k;
     if (o->colorspace) {
         if (!io_colour_known(col, o->colorspace))
-            return io_fail(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", o->colorspace);
+            return sample_error_set(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", o->colorspace);
         *name = o->colorspace;
         return SAMPLE_OK;
     }
@@ -71,7 +71,7 @@ static sample_status choose_colorspace(const io_colour *col, const sample_io_opt
             *name = srgb_names[k];
             return SAMPLE_OK;
         }
-    return io_fail(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit data; "
+    return sample_error_set(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit data; "
                                         "name the file's colour space explicitly");
 }
 
@@ -129,7 +129,7 @@ static sample_status count_levels(io_source *r, const io_reader_info *inf, const
         if (w != rw || h != rh) break;
         total += (size_t)w * (size_t)h * (size_t)p->nchan * sizeof(float);
         if (total > max_bytes)
-            return io_fail(err, SAMPLE_E_TOO_LARGE, "%d x %d x %d image needs more than the %zu-byte limit",
+            return sample_error_set(err, SAMPLE_E_TOO_LARGE, "%d x %d x %d image needs more than the %zu-byte limit",
                            inf->width, inf->height, p->nchan, max_bytes);
         *count = k + 1;
         if (w == 1 && h == 1) break;
@@ -146,7 +146,7 @@ static sample_status read_level(io_source *r, const io_colour *col, const read_p
     unsigned char *buf = malloc(bytes ? bytes : 1);
     sample_status st;
     *out = NULL;
-    if (!buf) return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
+    if (!buf) return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
     st = src_read(r, k, p->read_as, p->nchan, buf, err);
     if (st == SAMPLE_OK && p->convert)
         st = io_colour_apply(col, p->colorspace, 1, (float *)(void *)buf, n, p->nchan, err);
@@ -189,10 +189,10 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
     *fallback = 0;
     src_info(r, &inf);
     if (inf.width > SAMPLE_MAX_SIZE || inf.height > SAMPLE_MAX_SIZE)
-        return io_fail(err, SAMPLE_E_TOO_LARGE, "image is %d x %d; the largest texture side is %d", inf.width,
+        return sample_error_set(err, SAMPLE_E_TOO_LARGE, "image is %d x %d; the largest texture side is %d", inf.width,
                        inf.height, SAMPLE_MAX_SIZE);
     if (inf.width <= 0 || inf.height <= 0 || inf.channels <= 0)
-        return io_fail(err, SAMPLE_E_CORRUPT, "image claims %d x %d pixels with %d channels", inf.width,
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "image claims %d x %d pixels with %d channels", inf.width,
                        inf.height, inf.channels);
     memset(&p, 0, sizeof p);
     p.nchan = inf.channels < 4 ? inf.channels : 4;
@@ -252,9 +252,9 @@ sample_status sample_io_read_texture(const char *path, const sample_io_options *
                                      sample_texture **out, sample_error *err)
 {
     sample_status st;
-    if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: out is NULL");
+    if (!out) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: out is NULL");
     *out = NULL;
-    if (!path || !*path) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
+    if (!path || !*path) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
     if ((st = io_exr_guard_file(path, err)) != SAMPLE_OK || (st = io_jpeg_guard_file(path, err)) != SAMPLE_OK)
         return st;
     return read_source(path, NULL, 0, NULL, o, mip, out, err);
@@ -265,10 +265,10 @@ sample_status sample_io_read_memory(const void *data, size_t size, const char *f
                                     sample_texture **out, sample_error *err)
 {
     sample_status st;
-    if (!out) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: out is NULL");
+    if (!out) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: out is NULL");
     *out = NULL;
-    if (!data && size) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
-    if (size == 0) return io_fail(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
+    if (!data && size) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
+    if (size == 0) return sample_error_set(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
     if ((st = io_exr_guard_memory(data, size, err)) != SAMPLE_OK ||
         (st = io_jpeg_guard_memory(data, size, err)) != SAMPLE_OK)
         return st;

@@ -20,7 +20,7 @@ sample_status io_tmp_create(const char *path, char *tmp, size_t tmp_size, sample
         unsigned n = counter++;
         int fd, len = snprintf(tmp, tmp_size, "%s.tmp%ld-%u", path, (long)getpid(), n);
         if (len < 0 || (size_t)len >= tmp_size)
-            return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "path too long: '%s'", path);
+            return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "path too long: '%s'", path);
         /* 0666 under the umask: the final file gets the usual permissions. */
         fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
         if (fd >= 0) {
@@ -28,15 +28,15 @@ sample_status io_tmp_create(const char *path, char *tmp, size_t tmp_size, sample
             return SAMPLE_OK;
         }
         if (errno != EEXIST)
-            return io_fail(err, SAMPLE_E_IO, "cannot create '%s': %s", path, strerror(errno));
+            return sample_error_set(err, SAMPLE_E_IO, "cannot create '%s': %s", path, strerror(errno));
     }
-    return io_fail(err, SAMPLE_E_IO, "cannot create a temporary file beside '%s'", path);
+    return sample_error_set(err, SAMPLE_E_IO, "cannot create a temporary file beside '%s'", path);
 }
 
 sample_status io_tmp_finish(sample_status st, const char *tmp, const char *path, sample_error *err)
 {
     if (st == SAMPLE_OK && rename(tmp, path) != 0)
-        st = io_fail(err, SAMPLE_E_IO, "cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
+        st = sample_error_set(err, SAMPLE_E_IO, "cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
     if (st != SAMPLE_OK) remove(tmp);
     return st;
 }

@@ -9,10 +9,10 @@
 
 static sample_status check_size(const char *path, int w, int h, sample_error *err)
 {
-    if (!path || !*path) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "no output path");
+    if (!path || !*path) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "no output path");
     if (w > SAMPLE_MAX_SIZE || h > SAMPLE_MAX_SIZE)
-        return io_fail(err, SAMPLE_E_TOO_LARGE, "%d x %d image: the largest side is %d", w, h, SAMPLE_MAX_SIZE);
-    if (w <= 0 || h <= 0) return io_fail(err, SAMPLE_E_BAD_SIZE, "cannot write a %d x %d image", w, h);
+        return sample_error_set(err, SAMPLE_E_TOO_LARGE, "%d x %d image: the largest side is %d", w, h, SAMPLE_MAX_SIZE);
+    if (w <= 0 || h <= 0) return sample_error_set(err, SAMPLE_E_BAD_SIZE, "cannot write a %d x %d image", w, h);
     return SAMPLE_OK;
 }
 
@@ -68,15 +68,15 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     sample_status st = check_size(path, w, h, err);
     int c;
     if (st != SAMPLE_OK) return st;
-    if (!rgba) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "no pixels to write to '%s'", path);
+    if (!rgba) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "no pixels to write to '%s'", path);
     if (channels_to_write != 3 && channels_to_write != 4)
-        return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "channels_to_write is %d; it must be 3 or 4", channels_to_write);
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "channels_to_write is %d; it must be 3 or 4", channels_to_write);
     if (!o) {
         sample_io_write_options_init(&defaults);
         o = &defaults;
     }
     if ((unsigned)o->type >= SAMPLE_IO_TYPE_COUNT)
-        return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "unknown pixel type %d", (int)o->type);
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "unknown pixel type %d", (int)o->type);
     type = o->type == SAMPLE_IO_TYPE_AUTO ? auto_type(path) : o->type;
     st = io_colour_open(o->ocio_config, &col, err);
     if (st != SAMPLE_OK) return st;
@@ -85,12 +85,12 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     for (i = 0; !cs && i < sizeof srgb_names / sizeof srgb_names[0]; ++i)
         if (io_colour_known(col, srgb_names[i])) cs = srgb_names[i];
     if (!cs || !io_colour_known(col, cs)) {
-        st = io_fail(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", cs ? cs : "sRGB");
+        st = sample_error_set(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", cs ? cs : "sRGB");
         goto done;
     }
     n = (size_t)w * (size_t)h;
     if (!(buf = malloc(n * (size_t)channels_to_write * sizeof(float)))) {
-        st = io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a %d x %d image", w, h);
+        st = sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a %d x %d image", w, h);
         goto done;
     }
     for (i = 0; i < n; ++i)
@@ -125,16 +125,16 @@ sample_status sample_io_write_channels(const char *path, const float *data, int 
     int a, b;
     sample_status st = check_size(path, w, h, err);
     if (st != SAMPLE_OK) return st;
-    if (!data || !names) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "no pixels or no channel names for '%s'", path);
+    if (!data || !names) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "no pixels or no channel names for '%s'", path);
     if (nchannels < 1 || nchannels > 1024)
-        return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "%d channels: from 1 to 1024 can be written", nchannels);
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "%d channels: from 1 to 1024 can be written", nchannels);
     /* OpenEXR channel names must be unique and non-empty (OpenEXR file
      * layout, "Channel list"). */
     for (a = 0; a < nchannels; ++a) {
-        if (!names[a] || !*names[a]) return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "channel %d has no name", a);
+        if (!names[a] || !*names[a]) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "channel %d has no name", a);
         for (b = 0; b < a; ++b)
             if (strcmp(names[a], names[b]) == 0)
-                return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "channel name '%s' is used twice", names[a]);
+                return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "channel name '%s' is used twice", names[a]);
     }
     st = io_tmp_create(path, tmp, sizeof tmp, err);
     if (st != SAMPLE_OK) return st;
@@ -149,13 +149,13 @@ sample_status sample_io_write_mip_exr(const char *path, const sample_texture *te
     char tmp[4096];
     sample_status st;
     if (!path || !*path || !tex)
-        return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_write_mip_exr: no path or no texture");
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_write_mip_exr: no path or no texture");
     if (!o) {
         sample_io_exr_options_init(&defaults);
         o = &defaults;
     }
     if (o->tile_w < 1 || o->tile_h < 1 || o->tile_w > 4096 || o->tile_h > 4096)
-        return io_fail(err, SAMPLE_E_INVALID_ARGUMENT, "tile size %d x %d: each side must be 1 to 4096", o->tile_w,
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "tile size %d x %d: each side must be 1 to 4096", o->tile_w,
                        o->tile_h);
     st = io_tmp_create(path, tmp, sizeof tmp, err);
     if (st != SAMPLE_OK) return st;

@@ -59,14 +59,14 @@ static sample_status check(io_src *s, const char *what, sample_error *err)
             continue;
         }
         if (len > s->size - s->pos)
-            return io_fail(err, SAMPLE_E_CORRUPT, "%s: JPEG APP13 segment is truncated", what);
+            return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: JPEG APP13 segment is truncated", what);
         n = len < PS_HEAD ? len : PS_HEAD;
         for (k = 0; k < n; ++k) {
-            if (!io_src_byte(s, &c)) return io_fail(err, SAMPLE_E_CORRUPT, "%s: JPEG APP13 segment is truncated", what);
+            if (!io_src_byte(s, &c)) return sample_error_set(err, SAMPLE_E_CORRUPT, "%s: JPEG APP13 segment is truncated", what);
             h[k] = (unsigned char)c;
         }
         if (!app13_inside(h, len))
-            return io_fail(err, SAMPLE_E_CORRUPT,
+            return sample_error_set(err, SAMPLE_E_CORRUPT,
                            "%s: JPEG APP13 (Photoshop IPTC) block claims more bytes than its %zu-byte segment", what,
                            len);
         if (!io_src_skip(s, len - n)) return SAMPLE_OK;

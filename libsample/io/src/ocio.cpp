@@ -62,7 +62,7 @@ extern "C" sample_status io_colour_open(const char *path, io_colour **out, sampl
         *out = c;
         return SAMPLE_OK;
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_COLOR, "cannot load OCIO config '%s': %s", p.c_str(), e.what());
+        return sample_error_set(err, SAMPLE_E_COLOR, "cannot load OCIO config '%s': %s", p.c_str(), e.what());
     }
 }
 
@@ -152,9 +152,9 @@ extern "C" sample_status io_colour_apply(const io_colour *c, const char *name, i
         }
         return SAMPLE_OK;
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_COLOR, "colour conversion %s '%s': %s", to_linear ? "from" : "to", name,
+        return sample_error_set(err, SAMPLE_E_COLOR, "colour conversion %s '%s': %s", to_linear ? "from" : "to", name,
                        e.what());
     } catch (...) {
-        return io_fail(err, SAMPLE_E_COLOR, "colour conversion with '%s' failed", name);
+        return sample_error_set(err, SAMPLE_E_COLOR, "colour conversion with '%s' failed", name);
     }
 }

@@ -77,9 +77,9 @@ static sample_status open_input(io_reader *r, const char *path, const void *data
         if (r->in) return SAMPLE_OK;
         std::string msg = OIIO::geterror();
         FILE *f = std::fopen(path, "rb");
-        if (!f) return io_fail(err, SAMPLE_E_IO, "cannot open '%s': %s", path, std::strerror(errno));
+        if (!f) return sample_error_set(err, SAMPLE_E_IO, "cannot open '%s': %s", path, std::strerror(errno));
         std::fclose(f);
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image '%s': %s", path, msg.c_str());
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read image '%s': %s", path, msg.c_str());
     }
     r->proxy.reset(new Filesystem::IOMemReader(data, size));
     bool unsupported = false;
@@ -91,8 +91,8 @@ static sample_status open_input(io_reader *r, const char *path, const void *data
         r->in = open_memory(ext, r->proxy.get(), config, &unsupported);
         if (r->in) return SAMPLE_OK;
         if (unsupported)
-            return io_fail(err, SAMPLE_E_UNSUPPORTED, "the reader for '%s' cannot read from memory", hint);
-        return io_fail(err, SAMPLE_E_CORRUPT, "not a readable '%s' image (%zu bytes in memory)", hint, size);
+            return sample_error_set(err, SAMPLE_E_UNSUPPORTED, "the reader for '%s' cannot read from memory", hint);
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "not a readable '%s' image (%zu bytes in memory)", hint, size);
     }
     // No hint: every reader that can read memory, in OIIO's order.
     std::string formats;
@@ -101,7 +101,7 @@ static sample_status open_input(io_reader *r, const char *path, const void *data
         r->in = open_memory(f, r->proxy.get(), config, &unsupported);
         if (r->in) return SAMPLE_OK;
     }
-    return io_fail(err, SAMPLE_E_CORRUPT, "no image reader recognises these %zu bytes", size);
+    return sample_error_set(err, SAMPLE_E_CORRUPT, "no image reader recognises these %zu bytes", size);
 }
 
 extern "C" sample_status io_reader_open(const char *path, const void *data, size_t size,
@@ -123,7 +123,7 @@ extern "C" sample_status io_reader_open(const char *path, const void *data, size
         std::string cs = spec.get_string_attribute("oiio:ColorSpace");
         std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", cs.c_str());
         if (spec.depth != 1)
-            return io_fail(err, SAMPLE_E_UNSUPPORTED, "volume images (depth %d) are not textures", spec.depth);
+            return sample_error_set(err, SAMPLE_E_UNSUPPORTED, "volume images (depth %d) are not textures", spec.depth);
         // Mip levels of subimage 0, as maketx and `texsample mip` store them.
         inf.nlevels = 1;
         while (inf.nlevels < SAMPLE_MAX_LEVELS && r->in->seek_subimage(0, inf.nlevels)) inf.nlevels++;
@@ -131,9 +131,9 @@ extern "C" sample_status io_reader_open(const char *path, const void *data, size
         *out = r.release();
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {
-        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory opening an image");
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory opening an image");
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read image: %s", e.what());
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read image: %s", e.what());
     }
 }
 
@@ -143,12 +143,12 @@ extern "C" sample_status io_reader_level_size(io_reader *r, int k, int *w, int *
 {
     try {
         if (!r->in->seek_subimage(0, k))
-            return io_fail(err, SAMPLE_E_CORRUPT, "cannot seek to mip level %d: %s", k, r->in->geterror().c_str());
+            return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot seek to mip level %d: %s", k, r->in->geterror().c_str());
         *w = r->in->spec().width;
         *h = r->in->spec().height;
         return SAMPLE_OK;
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read mip level %d: %s", k, e.what());
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read mip level %d: %s", k, e.what());
     }
 }
 
@@ -158,14 +158,14 @@ extern "C" sample_status io_reader_read(io_reader *r, int k, io_ptype type, int 
     try {
         if (!r->in->read_image(0, k, 0, nchan, oiio_type(type), dst)) {
             std::string msg = r->in->geterror();
-            return io_fail(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k,
+            return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k,
                            msg.empty() ? "unknown error" : msg.c_str());
         }
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {
-        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory reading level %d", k);
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory reading level %d", k);
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k, e.what());
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k, e.what());
     }
 }
 

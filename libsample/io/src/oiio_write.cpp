@@ -19,10 +19,10 @@ extern "C" sample_status io_oiio_write(const char *final_path, const char *tmp_p
         auto out = ImageOutput::create(final_path);
         if (!out) {
             std::string msg = OIIO::geterror();
-            return io_fail(err, SAMPLE_E_UNSUPPORTED, "no image writer for '%s': %s", final_path, msg.c_str());
+            return sample_error_set(err, SAMPLE_E_UNSUPPORTED, "no image writer for '%s': %s", final_path, msg.c_str());
         }
         if (nchan == 4 && !names && !out->supports("alpha"))
-            return io_fail(err, SAMPLE_E_UNSUPPORTED, "%s files cannot store alpha; write 3 channels",
+            return sample_error_set(err, SAMPLE_E_UNSUPPORTED, "%s files cannot store alpha; write 3 channels",
                            out->format_name());
         ImageSpec spec(w, h, nchan, types[type]);
         if (names) {
@@ -34,12 +34,12 @@ extern "C" sample_status io_oiio_write(const char *final_path, const char *tmp_p
         if (colorspace) spec.attribute("oiio:ColorSpace", colorspace);
         if (!out->open(tmp_path, spec) || !out->write_image(types[type], px) || !out->close()) {
             std::string msg = out->geterror();
-            return io_fail(err, SAMPLE_E_IO, "cannot write '%s': %s", final_path, msg.c_str());
+            return sample_error_set(err, SAMPLE_E_IO, "cannot write '%s': %s", final_path, msg.c_str());
         }
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {
-        return io_fail(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory writing '%s'", final_path);
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory writing '%s'", final_path);
     } catch (const std::exception &e) {
-        return io_fail(err, SAMPLE_E_IO, "cannot write '%s': %s", final_path, e.what());
+        return sample_error_set(err, SAMPLE_E_IO, "cannot write '%s': %s", final_path, e.what());
     }
 }
