@@ -110,4 +110,24 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_block(const sample_ctx *c, const struct sa
     }
 }
 
+/* The stats of a query before (or without) any level: none chosen, λ 0,
+ * no texel read. */
+static inline void stats_clear(sample_stats *st)
+{
+    st->texels = 0;
+    st->level0 = st->level1 = -1;
+    st->level_frac = 0.0f;
+    st->lod = 0.0f;
+}
+
+/* Query i of a batch where DESIGN §10 gives the border colour (non-finite
+ * input): the colour, zero derivatives, empty stats. */
+static inline void batch_border(const sample_ctx *c, const sample_batch_args *a, size_t i)
+{
+    memcpy(a->rgba + 4 * i, c->border, sizeof c->border);
+    if (a->drgba_ds) memset(a->drgba_ds + 4 * i, 0, 4 * sizeof(float));
+    if (a->drgba_dt) memset(a->drgba_dt + 4 * i, 0, 4 * sizeof(float));
+    if (a->stats) stats_clear(&a->stats[i]);
+}
+
 #endif /* SAMPLE_CTX_H */

@@ -545,15 +545,7 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
     float *ddt = a->drgba_dt ? a->drgba_dt + 4 * i : NULL;
     uint32_t n;
     if (pl->kind == PLAN_BORDER) {
-        v4_store(out, v4_load(c->border));
-        if (dds) v4_store(dds, v4_set1(0.0f));
-        if (ddt) v4_store(ddt, v4_set1(0.0f));
-        if (a->stats) {
-            a->stats[i].texels = 0;
-            a->stats[i].level0 = a->stats[i].level1 = -1;
-            a->stats[i].level_frac = 0.0f;
-            a->stats[i].lod = 0.0f;
-        }
+        batch_border(c, a, i);
         return;
     }
     if (!gl && pl->kind == PLAN_FOOTPRINT) {

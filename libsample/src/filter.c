@@ -63,9 +63,7 @@ void filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, siz
     sample_stats local, *st = a->stats ? &a->stats[i] : &local;
     footprint_fn f = footprint_filters[c->smp->footprint];
 
-    st->level0 = st->level1 = -1;
-    st->level_frac = 0.0f;
-    st->lod = 0.0f;
+    stats_clear(st);
     if (pl) {
         st->texels = fp_footprint_run(c, pl, out, dds, ddt, st);
     } else if (f) {

@@ -76,13 +76,7 @@ static void reference_query(const sample_ctx *c, const sample_batch_args *a, siz
         st->texels = filter_gl_levels(c, q, lam, &ch, out, dds, ddt, st);
         return;
     }
-    st->level0 = st->level1 = -1;
-    st->level_frac = 0.0f;
-    st->lod = 0.0f;
-    st->texels = 0;
-    memcpy(out, c->border, sizeof c->border);
-    if (dds) memset(dds, 0, 4 * sizeof(float));
-    if (ddt) memset(ddt, 0, 4 * sizeof(float));
+    batch_border(c, a, i);
 }
 
 /* The checks every batch makes; *run is 0 when there is nothing to do. */
