@@ -91,7 +91,7 @@ static double proj_reference(const sample_ctx *c, const proj_map *m, int area)
             float T[4];
             proj_eval(m, x, y, p);
             wt = (1.0 - fabs(x)) * (1.0 - fabs(y)) * (area ? proj_det(m, x, y) : 1.0);
-            recon_level(c, 0, SAMPLE_LINEAR, (float)(p[0] / L->w), (float)(p[1] / L->h), T, NULL, NULL);
+            ls_recon_level(c, 0, SAMPLE_LINEAR, (float)(p[0] / L->w), (float)(p[1] / L->h), T, NULL, NULL);
             num += wt * T[0];
             den += wt;
         }

@@ -41,7 +41,7 @@ static sample_texture *tex_from(int w, int h, texfn f, int mip)
 static sample_ctx ctx_for(const sample_texture *t, const sample_sampler *s)
 {
     sample_ctx c;
-    ctx_init(&c, t, s, isa_kernels_active());
+    ls_ctx_init(&c, t, s, ls_isa_kernels_active());
     return c;
 }
 
@@ -58,9 +58,9 @@ static uint32_t run_filter(int which, const sample_ctx *c, const sample_query *q
                            float out[4], float dds[4], float ddt[4], sample_stats *st)
 {
     switch (which) {
-    case FILTER_ANISO: return fp_anisotropic(c, q, 0.0f, out, dds, ddt, st);
-    case FILTER_BN: return fp_blinn_newell(c, q, quad, 0.0f, out, dds, ddt, st);
-    default: return fp_ewa(c, q, 0.0f, out, dds, ddt, st);
+    case FILTER_ANISO: return ls_fp_anisotropic(c, q, 0.0f, out, dds, ddt, st);
+    case FILTER_BN: return ls_fp_blinn_newell(c, q, quad, 0.0f, out, dds, ddt, st);
+    default: return ls_fp_ewa(c, q, 0.0f, out, dds, ddt, st);
     }
 }
 

@@ -129,7 +129,7 @@ static void column_symmetry(void)
  * exchanged) gives the same filter, and for Blinn–Newell and EWA the same
  * bits, values and derivatives (∂/∂s ↔ ∂/∂t), wherever one of the two is
  * walked by columns: the level's geometry is symmetric to the bit
- * (fp_shape_of's Q and R trade places, fp_shape_reshape the rows of J′),
+ * (ls_fp_shape_of's Q and R trade places, ls_fp_shape_reshape the rows of J′),
  * and a footprint tall enough to be walked by columns (fp_walk_columns) is
  * walked in exactly the order its transpose's rows are — so a mistake in
  * the column walk (an axis, a pitch, a derivative not swapped) shows up as
@@ -209,7 +209,7 @@ static void tiny_is_bilinear(void)
         double ct = urand(0, 1), cs = urand(0, 1);
         sample_query q = footprint((float)cs, (float)ct, 1e-3, 1e-3, 0.0, 0.0, 64, 48);
         float bil[4], o[4];
-        recon_level(&c, 0, SAMPLE_LINEAR, q.s, q.t, bil, NULL, NULL);
+        ls_recon_level(&c, 0, SAMPLE_LINEAR, q.s, q.t, bil, NULL, NULL);
         run_filter(FILTER_ANISO, &c, &q, NULL, o, NULL, NULL, NULL);
         CHECK(o[0] == bil[0], "aniso %.9g vs bilinear %.9g", o[0], bil[0]);
         run_filter(FILTER_BN, &c, &q, NULL, o, NULL, NULL, NULL);
@@ -300,36 +300,36 @@ static void aniso_probes(void)
     sample_sampler_init(&s);
     s.wrap_s = s.wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
     s.max_anisotropy = 16.0f;
-    CHECK(fp_aniso_count(&s, 16.0, 2.0) == 8, "N = %d", fp_aniso_count(&s, 16.0, 2.0));
+    CHECK(ls_fp_aniso_count(&s, 16.0, 2.0) == 8, "N = %d", ls_fp_aniso_count(&s, 16.0, 2.0));
     c = ctx_for(t, &s);
-    n = fp_anisotropic(&c, &q, 0.0f, o, NULL, NULL, &st);
+    n = ls_fp_anisotropic(&c, &q, 0.0f, o, NULL, NULL, &st);
     CHECK_NEAR(o[0], 1.0 / 9.0, 1e-6);
     CHECK_EQF(st.lod, 1.0f);
     CHECK(n == 8 * 4, "texels %u", n); /* 8 bilinear probes on the only level */
     /* Column order does not matter: the longer one is the major axis. */
     {
         sample_query r = {q.s, q.t, 0.0f, 2.0f / 8.0f, 16.0f / 256.0f, 0.0f};
-        fp_anisotropic(&c, &r, 0.0f, o, NULL, NULL, &st);
+        ls_fp_anisotropic(&c, &r, 0.0f, o, NULL, NULL, &st);
         CHECK_NEAR(o[0], 1.0 / 9.0, 1e-6);
     }
     /* max_anisotropy 4 caps N: λ = log2(16/4) = 2. */
     s.max_anisotropy = 4.0f;
-    CHECK(fp_aniso_count(&s, 16.0, 2.0) == 4, "N = %d", fp_aniso_count(&s, 16.0, 2.0));
-    fp_anisotropic(&c, &q, 0.0f, o, NULL, NULL, &st);
+    CHECK(ls_fp_aniso_count(&s, 16.0, 2.0) == 4, "N = %d", ls_fp_aniso_count(&s, 16.0, 2.0));
+    ls_fp_anisotropic(&c, &q, 0.0f, o, NULL, NULL, &st);
     CHECK_EQF(st.lod, 2.0f);
     /* ⌈5.2⌉ = 6 probes; the power-of-two option rounds up to 8; 1.9:1 → 2;
      * a rank-one footprint takes the maximum; maxAniso 1 is trilinear. */
     s.max_anisotropy = 16.0f;
-    CHECK(fp_aniso_count(&s, 5.2, 1.0) == 6, "N");
+    CHECK(ls_fp_aniso_count(&s, 5.2, 1.0) == 6, "N");
     s.options = SAMPLE_OPT_ANISO_POW2;
-    CHECK(fp_aniso_count(&s, 5.2, 1.0) == 8, "N pow2");
+    CHECK(ls_fp_aniso_count(&s, 5.2, 1.0) == 8, "N pow2");
     s.options = 0;
-    CHECK(fp_aniso_count(&s, 1.9, 1.0) == 2, "N");
-    CHECK(fp_aniso_count(&s, 3.0, 0.0) == 16, "N rank one");
+    CHECK(ls_fp_aniso_count(&s, 1.9, 1.0) == 2, "N");
+    CHECK(ls_fp_aniso_count(&s, 3.0, 0.0) == 16, "N rank one");
     s.max_anisotropy = 1.0f;
-    CHECK(fp_aniso_count(&s, 8.0, 1.0) == 1, "N trilinear");
+    CHECK(ls_fp_aniso_count(&s, 8.0, 1.0) == 1, "N trilinear");
     s.max_anisotropy = 1e9f;
-    CHECK(fp_aniso_count(&s, 1e9, 1.0) == SAMPLE_MAX_FOOTPRINT_TEXELS / 8, "N capped");
+    CHECK(ls_fp_aniso_count(&s, 1e9, 1.0) == SAMPLE_MAX_FOOTPRINT_TEXELS / 8, "N capped");
     sample_texture_destroy(t);
 }
 

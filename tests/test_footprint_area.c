@@ -6,7 +6,7 @@
  * truth — instead of the paper's texture-space pyramid ∫ pyr(P⁻¹(u))·T(u) du
  * (the default). The references integrate densely in screen space on a
  * one-level texture (no level choice involved) and share only the bilinear
- * lookup (recon_level, tested in test_reconstruct.c) with the library.
+ * lookup (ls_recon_level, tested in test_reconstruct.c) with the library.
  */
 #include "footprint_proj.h"
 
@@ -82,8 +82,8 @@ static void perspective_vs_screen_space(void)
         sample_query q;
         float on[4], off[4];
         memset(&q, 0, sizeof q);
-        fp_blinn_newell(&c1, &q, &quad, 0.0f, on, NULL, NULL, NULL);
-        fp_blinn_newell(&c0, &q, &quad, 0.0f, off, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c1, &q, &quad, 0.0f, on, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c0, &q, &quad, 0.0f, off, NULL, NULL, NULL);
         e_on = fabs(on[0] - ref_screen);
         e_off = fabs(off[0] - ref_screen);
         worst_on = fmax(worst_on, e_on);
@@ -128,8 +128,8 @@ static void parallelogram_unchanged(void)
             quad.st[k][0] = (float)(q.s + corner_xy[k][0] * q.dsdx + corner_xy[k][1] * q.dsdy);
             quad.st[k][1] = (float)(q.t + corner_xy[k][0] * q.dtdx + corner_xy[k][1] * q.dtdy);
         }
-        fp_blinn_newell(&c1, &q, &quad, 0.0f, on, ds1, dt1, NULL);
-        fp_blinn_newell(&c0, &q, &quad, 0.0f, off, ds0, dt0, NULL);
+        ls_fp_blinn_newell(&c1, &q, &quad, 0.0f, on, ds1, dt1, NULL);
+        ls_fp_blinn_newell(&c0, &q, &quad, 0.0f, off, ds0, dt0, NULL);
         for (k = 0; k < 4; ++k) worst = fmax(worst, fabs(on[k] - off[k]));
         /* Derivatives: the det term's gradient is ∝ g, i.e. ~0 here. */
         CHECK_NEAR(ds1[0], ds0[0], 1e-4 * (1.0 + fabs(ds0[0])));
@@ -237,15 +237,15 @@ static void derivatives(void)
                 trapezoid(axis_a, axis_b, th, taper, sh, cs, ct, 64, 64, &quad, P);
             }
             memset(&q, 0, sizeof q);
-            fp_blinn_newell(&c, &q, &quad, 0.0f, o, ds, dt, NULL);
+            ls_fp_blinn_newell(&c, &q, &quad, 0.0f, o, ds, dt, NULL);
             for (axis = 0; axis < 2; ++axis) {
                 sample_quad qa = quad, qb = quad;
                 for (k = 0; k < 4; ++k) {
                     qa.st[k][axis] += h;
                     qb.st[k][axis] -= h;
                 }
-                fp_blinn_newell(&c, &q, &qa, 0.0f, a, NULL, NULL, NULL);
-                fp_blinn_newell(&c, &q, &qb, 0.0f, b, NULL, NULL, NULL);
+                ls_fp_blinn_newell(&c, &q, &qa, 0.0f, a, NULL, NULL, NULL);
+                ls_fp_blinn_newell(&c, &q, &qb, 0.0f, b, NULL, NULL, NULL);
                 {
                     double fd = (a[0] - b[0]) / (2.0 * h), an = axis ? dt[0] : ds[0];
                     CHECK_NEAR(an, fd, 0.02 + 0.02 * fabs(fd));

@@ -4,7 +4,7 @@
  * 2 × 2-pixel quadrilateral. The references here integrate that densely in
  * screen space (u = P(x, y), du = |det DP| dx dy) on a one-level texture, so
  * the level choice plays no part; they share only the bilinear lookup
- * (recon_level, tested in test_reconstruct.c) with the library.
+ * (ls_recon_level, tested in test_reconstruct.c) with the library.
  */
 #include "footprint_proj.h"
 
@@ -47,7 +47,7 @@ static double reference(const sample_ctx *c, double P[4][2])
                 dy[k] = 0.5 * (P[3][k] - P[0][k] + g * al);
             }
             w = pyr(x, y) * fabs(dx[0] * dy[1] - dx[1] * dy[0]);
-            recon_level(c, 0, SAMPLE_LINEAR, (float)p[0], (float)p[1], T, NULL, NULL);
+            ls_recon_level(c, 0, SAMPLE_LINEAR, (float)p[0], (float)p[1], T, NULL, NULL);
             num += w * T[0];
             den += w;
         }
@@ -87,7 +87,7 @@ static void affine_vs_brute_force(void)
         float o[4];
         quad_of(&q, P);
         ref = reference(&c, P);
-        fp_blinn_newell(&c, &q, NULL, 0.0f, o, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c, &q, NULL, 0.0f, o, NULL, NULL, NULL);
         if (fabs(o[0] - ref) > worst) worst = fabs(o[0] - ref);
     }
     CHECK(worst <= 3e-3, "worst |BN - reference| = %.3g", worst);
@@ -130,9 +130,9 @@ static void corners_parallelogram(void)
         bowtie = quad;
         memcpy(bowtie.st[2], quad.st[3], sizeof bowtie.st[2]);
         memcpy(bowtie.st[3], quad.st[2], sizeof bowtie.st[3]);
-        fp_blinn_newell(&c, &q, NULL, 0.0f, o, NULL, NULL, NULL);
-        fp_blinn_newell(&c, &q, &quad, 0.0f, oq, NULL, NULL, NULL);
-        fp_blinn_newell(&c, &q, &mirrored, 0.0f, om, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c, &q, NULL, 0.0f, o, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c, &q, &quad, 0.0f, oq, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c, &q, &mirrored, 0.0f, om, NULL, NULL, NULL);
         CHECK_NEAR(oq[0], o[0], 2e-5);
         CHECK_NEAR(om[0], o[0], 2e-5);
         worst = fmax(worst, fmax(fabs(oq[0] - o[0]), fabs(om[0] - o[0])));
@@ -146,8 +146,8 @@ static void corners_parallelogram(void)
             j.dtdx = (float)(0.25 * ((bowtie.st[1][1] + bowtie.st[2][1]) - (bowtie.st[0][1] + bowtie.st[3][1])));
             j.dsdy = (float)(0.25 * ((bowtie.st[2][0] + bowtie.st[3][0]) - (bowtie.st[0][0] + bowtie.st[1][0])));
             j.dtdy = (float)(0.25 * ((bowtie.st[2][1] + bowtie.st[3][1]) - (bowtie.st[0][1] + bowtie.st[1][1])));
-            fp_blinn_newell(&c, &q, &bowtie, 0.0f, ob, NULL, NULL, NULL);
-            fp_blinn_newell(&c, &j, NULL, 0.0f, oj, NULL, NULL, NULL);
+            ls_fp_blinn_newell(&c, &q, &bowtie, 0.0f, ob, NULL, NULL, NULL);
+            ls_fp_blinn_newell(&c, &j, NULL, 0.0f, oj, NULL, NULL, NULL);
             CHECK_NEAR(ob[0], oj[0], 2e-5);
         }
     }
@@ -186,7 +186,7 @@ static void perspective_vs_brute_force(void)
         double ref = proj_reference(&c, &m, 1);
         float o[4], oa[4];
         memset(&q, 0, sizeof q);
-        fp_blinn_newell(&c, &q, &quad, 0.0f, o, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c, &q, &quad, 0.0f, o, NULL, NULL, NULL);
         /* Exact centre and centre Jacobian A − c·kᵀ (w = 1 there). */
         q.s = (float)(m.c[0] / 64);
         q.t = (float)(m.c[1] / 64);
@@ -194,7 +194,7 @@ static void perspective_vs_brute_force(void)
         q.dsdy = (float)((m.A[0][1] - m.c[0] * m.k[1]) / 64);
         q.dtdx = (float)((m.A[1][0] - m.c[1] * m.k[0]) / 64);
         q.dtdy = (float)((m.A[1][1] - m.c[1] * m.k[1]) / 64);
-        fp_blinn_newell(&c, &q, NULL, 0.0f, oa, NULL, NULL, NULL);
+        ls_fp_blinn_newell(&c, &q, NULL, 0.0f, oa, NULL, NULL, NULL);
         if (fabs(o[0] - ref) > worst) worst = fabs(o[0] - ref);
         err_quad += fabs(o[0] - ref);
         err_affine += fabs(oa[0] - ref);
@@ -283,8 +283,8 @@ static void degenerate_fallback(void)
                 j.dtdx = (float)((m.A[1][0] - m.c[1] * m.k[0]) / 64);
                 j.dtdy = (float)((m.A[1][1] - m.c[1] * m.k[1]) / 64);
             }
-            texels = fp_blinn_newell(&c, &q, &quad, 0.0f, o, ds, dt, NULL);
-            fp_blinn_newell(&c, &j, NULL, 0.0f, oj, NULL, NULL, NULL);
+            texels = ls_fp_blinn_newell(&c, &q, &quad, 0.0f, o, ds, dt, NULL);
+            ls_fp_blinn_newell(&c, &j, NULL, 0.0f, oj, NULL, NULL, NULL);
             CHECK(texels <= SAMPLE_MAX_FOOTPRINT_TEXELS, "texels %u", (unsigned)texels);
             CHECK(isfinite(ds[0]) && isfinite(dt[0]), "derivatives finite");
             CHECK(fabs(o[0] - oj[0]) <= 2e-5, "kind %d quad %d: %.9g vs fallback %.9g", kind, n, o[0], oj[0]);

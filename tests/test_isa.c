@@ -37,7 +37,7 @@ static int check_halves(int nc)
     float(*out)[4] = malloc((size_t)n * sizeof *out);
     int k, c, bad = 0;
     for (k = 0; k < NH; ++k) h[k] = (uint16_t)k;
-    isa_kernels_active()->readers[SAMPLE_FORMAT_F16][nc - 1].row(SAMPLE_FORMAT_F16, nc, (const unsigned char *)h, 2 * (size_t)nc, n, out);
+    ls_isa_kernels_active()->readers[SAMPLE_FORMAT_F16][nc - 1].row(SAMPLE_FORMAT_F16, nc, (const unsigned char *)h, 2 * (size_t)nc, n, out);
     for (k = 0; k < n; ++k)
         for (c = 0; c < 4; ++c) {
             uint32_t want = c < nc ? bits_of(sample_half_to_float(h[nc * k + c])) : bits_of(c == 3 ? 1.0f : 0.0f);
@@ -49,7 +49,7 @@ static int check_halves(int nc)
     /* Strided (a level's column, fp_span_texels): every third texel. */
     {
         float(*o3)[4] = malloc((size_t)(n / 3) * sizeof *o3);
-        isa_kernels_active()->readers[SAMPLE_FORMAT_F16][nc - 1].row(SAMPLE_FORMAT_F16, nc, (const unsigned char *)h, 6 * (size_t)nc, n / 3, o3);
+        ls_isa_kernels_active()->readers[SAMPLE_FORMAT_F16][nc - 1].row(SAMPLE_FORMAT_F16, nc, (const unsigned char *)h, 6 * (size_t)nc, n / 3, o3);
         for (k = 0; k < n / 3; ++k)
             if (memcmp(o3[k], out[3 * k], sizeof o3[k]) != 0 && ++bad <= 3)
                 fprintf(stderr, "%s, %d channels: strided read of texel %d differs\n", sample_isa_name(), nc, 3 * k);
@@ -72,13 +72,13 @@ static int check_u8(sample_format fmt, int nc)
     float(*out)[4] = malloc(N * sizeof *out), (*o3)[4] = malloc(N * sizeof *o3);
     int k, c, bad = 0;
     for (k = 0; k < N * nc; ++k) b[k] = (unsigned char)(k / nc + k % nc);
-    isa_kernels_active()->readers[fmt][nc - 1].row(fmt, nc, b, (size_t)nc, N, out);
-    isa_kernels_active()->readers[fmt][nc - 1].row(fmt, nc, b, 3 * (size_t)nc, N / 3, o3);
+    ls_isa_kernels_active()->readers[fmt][nc - 1].row(fmt, nc, b, (size_t)nc, N, out);
+    ls_isa_kernels_active()->readers[fmt][nc - 1].row(fmt, nc, b, 3 * (size_t)nc, N / 3, o3);
     for (k = 0; k < N; ++k)
         for (c = 0; c < 4; ++c) {
             int code = b[nc * k + (c < nc ? c : 0)];
             float want = c >= nc ? (c == 3 ? 1.0f : 0.0f)
-                                 : (fmt == SAMPLE_FORMAT_SRGB8 && c < 3 ? sample_srgb_table[code] : sample_unorm8_table[code]);
+                                 : (fmt == SAMPLE_FORMAT_SRGB8 && c < 3 ? ls_srgb_table[code] : ls_unorm8_table[code]);
             if ((bits_of(out[k][c]) != bits_of(want) || (k % 3 == 0 && k / 3 < N / 3 && bits_of(o3[k / 3][c]) != bits_of(want))) &&
                 ++bad <= 3)
                 fprintf(stderr, "%s, format %d, %d channels: texel %d channel %d code %d -> %a, want %a\n",

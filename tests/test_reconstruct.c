@@ -156,7 +156,7 @@ static void srgb_table_exact(void)
     int c;
     for (c = 0; c < 256; ++c) {
         double e = srgb_eotf(c / 255.0);
-        float f = sample_srgb_table[c];
+        float f = ls_srgb_table[c];
         float ulp = nextafterf((float)e, 2.0f) - (float)e;
         CHECK(fabs((double)f - e) <= ulp, "code %d: %.9g vs %.12g", c, (double)f, e);
         /* the function sees c/255 rounded to float; the EOTF amplifies that
@@ -196,21 +196,21 @@ static void half_conversion(void)
 static void cubic_kernel_values(void)
 {
     double w[4], dw[4];
-    cubic_weights(SAMPLE_CUBIC_CATMULL_ROM, 0.5f, w, dw);
+    ls_cubic_weights(SAMPLE_CUBIC_CATMULL_ROM, 0.5f, w, dw);
     CHECK_NEAR(w[0], -1.0 / 16, 1e-7); CHECK_NEAR(w[1], 9.0 / 16, 1e-7);
     CHECK_NEAR(w[2], 9.0 / 16, 1e-7);  CHECK_NEAR(w[3], -1.0 / 16, 1e-7);
-    cubic_weights(SAMPLE_CUBIC_CATMULL_ROM, 0.0f, w, dw);
+    ls_cubic_weights(SAMPLE_CUBIC_CATMULL_ROM, 0.0f, w, dw);
     CHECK(w[0] == 0.0 && w[1] == 1.0 && w[2] == 0.0 && w[3] == 0.0, "CR at f=0 is (0,1,0,0)");
-    cubic_weights(SAMPLE_CUBIC_BSPLINE, 0.5f, w, dw);
+    ls_cubic_weights(SAMPLE_CUBIC_BSPLINE, 0.5f, w, dw);
     CHECK_NEAR(w[0], 1.0 / 48, 1e-7); CHECK_NEAR(w[1], 23.0 / 48, 1e-7);
-    cubic_weights(SAMPLE_CUBIC_BSPLINE, 0.0f, w, dw);
+    ls_cubic_weights(SAMPLE_CUBIC_BSPLINE, 0.0f, w, dw);
     CHECK_NEAR(w[0], 1.0 / 6, 1e-7); CHECK_NEAR(w[1], 2.0 / 3, 1e-7); CHECK_NEAR(w[2], 1.0 / 6, 1e-7);
     CHECK_NEAR(w[3], 0.0, 1e-7);
     /* Mitchell (⅓, ⅓): k(0) = (6 − 2B)/6 = 8/9, k(1) = B/6 = 1/18. */
-    cubic_weights(SAMPLE_CUBIC_MITCHELL, 0.0f, w, dw);
+    ls_cubic_weights(SAMPLE_CUBIC_MITCHELL, 0.0f, w, dw);
     CHECK_NEAR(w[0], 1.0 / 18, 1e-7); CHECK_NEAR(w[1], 8.0 / 9, 1e-7); CHECK_NEAR(w[2], 1.0 / 18, 1e-7);
     /* Derivative: Catmull–Rom at f = 0 has slope (T1 − T−1)/2. */
-    cubic_weights(SAMPLE_CUBIC_CATMULL_ROM, 0.0f, w, dw);
+    ls_cubic_weights(SAMPLE_CUBIC_CATMULL_ROM, 0.0f, w, dw);
     CHECK_NEAR(dw[0], -0.5, 1e-7); CHECK_NEAR(dw[1], 0.0, 1e-7); CHECK_NEAR(dw[2], 0.5, 1e-7);
 }
 

@@ -12,13 +12,13 @@
  * (if non-NULL: level0/level1/level_frac). `lambda_base` is lod_lambda_base
  * of q; the filter applies sampler/per-call bias itself via lod_lambda. Each
  * reads at most SAMPLE_MAX_FOOTPRINT_TEXELS texels. */
-uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
+uint32_t ls_fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
                         float out[4], float dds[4], float ddt[4], sample_stats *st);
 
 /* What the anisotropic filter decides per query before reading a texel
  * (footprint_aniso.c): N probes along the major column, λ' and its two
  * levels. The fast path computes it when it plans a query and runs the
- * probes later with its own bilinear; fp_anisotropic does both at once. */
+ * probes later with its own bilinear; ls_fp_anisotropic does both at once. */
 typedef struct fp_aniso_setup {
     int n, l0, l1;  /* probe count; levels (l1 == l0: a single level) */
     float lam, f;   /* λ' after biases and clamps; the weight of level l1 */
@@ -26,12 +26,12 @@ typedef struct fp_aniso_setup {
 } fp_aniso_setup;
 
 /* From lod_log2_rho's ρx², ρy² and log2 ρ of the query. */
-void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double rho2[2],
+void ls_fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double rho2[2],
                        double log2_rho, float call_bias, fp_aniso_setup *a);
 /* A prefetch of every probe's rows (a hint), from positions stepped in
  * float: the fast path's planning step for the queries whose probes it does
  * not address exactly ahead (fast_gl.c, aniso_address). */
-void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a);
+void ls_fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a);
 
 /* Probe i (1 … N) of a query: offsets i/(N + 1) − ½ of the major column. */
 SAMPLE_FORCE_INLINE void fp_aniso_probe(const sample_query *q, const fp_aniso_setup *a, int i, float *s,
@@ -61,14 +61,14 @@ SAMPLE_FORCE_INLINE void fp_aniso_mean(const double acc[4], int n, float out[4])
     for (k = 0; k < 4; ++k) out[k] = (float)(acc[k] / n);
 }
 
-/* One level's bilinear value at (s, t), as recon_level computes it; the
+/* One level's bilinear value at (s, t), as ls_recon_level computes it; the
  * per-format tex_readers.bilinear, or the fast path's inline copy of it. */
 typedef uint32_t (*fp_bilinear_fn)(const sample_ctx *c, int lv, float s, float t, float out[4],
                                    float dds[4], float ddt[4]);
 
 /* The N trilinear probes and their mean. Generic over the bilinear reader
  * so that the fast path's instantiation inlines it (zstd style) while
- * fp_anisotropic calls the reader table: one loop, the same bits. */
+ * ls_fp_anisotropic calls the reader table: one loop, the same bits. */
 SAMPLE_FORCE_INLINE uint32_t fp_aniso_probes(const sample_ctx *c, const sample_query *q,
                                              const fp_aniso_setup *a, fp_bilinear_fn bilinear,
                                              float out[4], float dds[4], float ddt[4])
@@ -109,6 +109,6 @@ static inline void fp_aniso_stats(const fp_aniso_setup *a, sample_stats *st)
 }
 /* Anisotropic probe count N for Pmax ≥ Pmin (base texels) under the
  * sampler's max_anisotropy and SAMPLE_OPT_ANISO_POW2 (footprint_aniso.c). */
-int fp_aniso_count(const sample_sampler *smp, double pmax, double pmin);
+int ls_fp_aniso_count(const sample_sampler *smp, double pmax, double pmin);
 
 #endif /* SAMPLE_ANISO_H */

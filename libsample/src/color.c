@@ -2,19 +2,19 @@
 #include "texel.h"
 
 /* The 8-bit decode tables, one array (internal.h names its rows
- * sample_srgb_table and sample_unorm8_table): the fast path decodes an
+ * ls_srgb_table and ls_unorm8_table): the fast path decodes an
  * RGBA8 texel's four channels with one gather from it, reading an sRGB
  * texel's alpha 256 entries on (fast_gl.c, texel_v4). A table, not a
  * lazily filled array, so there is no run-time init (and no race, the
  * trap in Mesa's softpipe).
  *
- * Row 0, sample_srgb_table[c] = EOTF(c / 255) rounded to float, where
+ * Row 0, ls_srgb_table[c] = EOTF(c / 255) rounded to float, where
  * EOTF(v) = v / 12.92 for v ≤ 0.04045, else ((v + 0.055) / 1.055)^2.4
  * (IEC 61966-2-1). Generated in double precision by:
  *   for i in range(256): v = i/255; print("%.9g" % (v/12.92 if v <= 0.04045
  *                                   else ((v+0.055)/1.055)**2.4))
  *
- * Row 1, sample_unorm8_table[c] = c / 255 correctly rounded (GL 4.6 eq.
+ * Row 1, ls_unorm8_table[c] = c / 255 correctly rounded (GL 4.6 eq.
  * 2.1), the UNORM8 decode and the linear alpha of SRGB8: a load instead
  * of a divide per texel (a multiply by the rounded reciprocal is off by an
  * ulp for some codes). The compiler folds each division at translation
@@ -24,7 +24,7 @@
 #define U8_4(c) U8_1(c), U8_1((c) + 1), U8_1((c) + 2), U8_1((c) + 3)
 #define U8_16(c) U8_4(c), U8_4((c) + 4), U8_4((c) + 8), U8_4((c) + 12)
 #define U8_64(c) U8_16(c), U8_16((c) + 16), U8_16((c) + 32), U8_16((c) + 48)
-const float sample_u8_decode[2][256] = {
+const float ls_u8_decode[2][256] = {
     {
         0.0f, 0.000303526984f, 0.000607053967f, 0.000910580951f, 0.00121410793f, 0.00151763492f,
         0.0018211619f, 0.00212468888f, 0.00242821587f, 0.00273174285f, 0.00303526984f, 0.00334653576f,
@@ -169,7 +169,7 @@ static const double sample_srgb8_threshold[255] = {
     0x1.f4a7b98dfa6ebp-1, 0x1.f92ce152ec2b7p-1, 0x1.fdb81b627af90p-1,
 };
 
-unsigned char sample_srgb_encode8(float v)
+unsigned char ls_srgb_encode8(float v)
 {
     /* The code k with threshold[k − 1] ≤ v < threshold[k]: round(255·OETF(v))
      * to the nearest, ties up, found by bisection among constants instead of

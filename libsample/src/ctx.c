@@ -3,7 +3,7 @@
  */
 #include "ctx.h"
 
-void ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp,
+void ls_ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp,
               const struct isa_kernels *k)
 {
     c->tex = tex;

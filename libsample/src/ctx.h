@@ -1,5 +1,5 @@
 /*
- * The per-batch context (sampler.c, ctx_init): texture, sampler state,
+ * The per-batch context (sampler.c, ls_ctx_init): texture, sampler state,
  * level_base and q (GL 4.6 §8.14.3), border colour and the batch's
  * kernels; texel reads through the wrap modes (ctx_texel), and the
  * finiteness test that sends bad input to the border colour (DESIGN §10).
@@ -24,8 +24,8 @@ typedef struct sample_ctx {
 
 /* The context of a batch: level_base and q (GL 4.6 §8.14.3) from the
  * sampler and the levels present, the border colour, and the kernels k
- * (isa_kernels_active(), or isa_kernels_reference). */
-void ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp,
+ * (ls_isa_kernels_active(), or ls_isa_kernels_reference). */
+void ls_ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler *smp,
               const struct isa_kernels *k);
 
 /* Read texel (i, j) of level `lv` through the wrap modes; border colour where
@@ -35,14 +35,14 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
 {
     const struct sample_level *L = &c->tex->level[lv];
     int x, y;
-    /* Every wrap mode maps an in-range index to itself (wrap_index's own
+    /* Every wrap mode maps an in-range index to itself (ls_wrap_index's own
      * first test); checking here saves two calls on most reads. */
     if (i >= 0.0 && i < (double)L->w && j >= 0.0 && j < (double)L->h) {
         tex_decode(c->tex, L, (int)i, (int)j, out);
         return;
     }
-    x = wrap_index(c->smp->wrap_s, i, L->w, linear);
-    y = wrap_index(c->smp->wrap_t, j, L->h, linear);
+    x = ls_wrap_index(c->smp->wrap_s, i, L->w, linear);
+    y = ls_wrap_index(c->smp->wrap_t, j, L->h, linear);
     if (x < 0 || y < 0) {
         out[0] = c->border[0]; out[1] = c->border[1];
         out[2] = c->border[2]; out[3] = c->border[3];

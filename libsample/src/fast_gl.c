@@ -5,14 +5,14 @@
  * minified queries (their probes addressed and prefetched a few queries
  * ahead, aniso_address, and read from those addresses; the rare others
  * with this format's bilinear inlined); Blinn–Newell and EWA
- * planned one query ahead (fp_footprint_plan: geometry, counting pass and
- * row prefetches) and accumulated by the filter (filter_footprint_query). Also the
+ * planned one query ahead (ls_fp_footprint_plan: geometry, counting pass and
+ * row prefetches) and accumulated by the filter (ls_filter_footprint_query). Also the
  * per-format readers the footprint filters use (tex_readers).
  *
  * It computes exactly what the general path (sampler.c's loop over
- * recon_level / ctx_texel) computes, with the same operations in the same
+ * ls_recon_level / ctx_texel) computes, with the same operations in the same
  * order — the arithmetic itself is shared (tex_decode_v4, recon_bilerp,
- * recon_blend, recon_cubic_combine in internal.h) — and differs only in how
+ * recon_blend, ls_recon_cubic_combine in internal.h) — and differs only in how
  * it gets there:
  *
  *  - one loop per (format × channel count), chosen once per batch: the
@@ -21,7 +21,7 @@
  *  - texel addresses are computed once per level and query as row pointers
  *    and column indices; a run of taps inside the level (most queries) needs
  *    no wrap at all, REPEAT uses an integer modulo, and only the rest goes
- *    through the double-valued wrap_index;
+ *    through the double-valued ls_wrap_index;
  *  - queries are planned in blocks (λ, levels, addresses) and every cache
  *    line they will read is prefetched before the first texel is decoded:
  *    random queries into a large texture are bound by memory latency, and
@@ -88,7 +88,7 @@ typedef uint32_t (*aniso_fn)(const sample_ctx *c, const sample_query *q, const f
 typedef struct fast_plan {
     int kind; /* PLAN_GL: the taps below; PLAN_BORDER: non-finite input;
                * PLAN_ANISO: λ > 0, the probes of `an`; PLAN_FOOTPRINT: λ > 0
-               * with Blinn–Newell or EWA (filter_footprint_query) */
+               * with Blinn–Newell or EWA (ls_filter_footprint_query) */
     float lam;
     lod_choice ch;
     union {
@@ -109,10 +109,10 @@ static int kind_taps(sample_filter kind)
 }
 
 /* Indices (double)i0 + first + k, k < n, on an axis of len texels, exactly
- * as wrap_index maps them. i0 is integral (a floor). A run inside the axis
+ * as ls_wrap_index maps them. i0 is integral (a floor). A run inside the axis
  * maps to itself (returns 1); REPEAT below 2^24 is an integer modulo (the
- * same true modulo as wrap_index's exact fmod); anything else asks
- * wrap_index (both return 0). */
+ * same true modulo as ls_wrap_index's exact fmod); anything else asks
+ * ls_wrap_index (both return 0). */
 SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
                               int out[4])
 {
@@ -131,7 +131,7 @@ SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, i
         }
         return 0;
     }
-    for (k = 0; k < n; ++k) out[k] = wrap_index(mode, (double)i0 + (first + k), len, linear);
+    for (k = 0; k < n; ++k) out[k] = ls_wrap_index(mode, (double)i0 + (first + k), len, linear);
     return 0;
 }
 
@@ -160,7 +160,7 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
     }
 }
 
-/* Addresses of one query on level lv (recon_level's coordinate rules) and,
+/* Addresses of one query on level lv (ls_recon_level's coordinate rules) and,
  * if `prefetch`, prefetches of the lines they touch: the first and last
  * byte of each row's run cover it when the run is contiguous, as it almost
  * always is. */
@@ -198,13 +198,13 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
 }
 
 /* Whether the fast path decodes this format's texels by gathers from
- * sample_u8_decode (texel_v4, texel_pair): 8-bit RGBA with AVX2. Per
+ * ls_u8_decode (texel_v4, texel_pair): 8-bit RGBA with AVX2. Per
  * texel the plain decode is four byte loads, four table loads and three
  * inserts; the gather reads the same table entries (the same bits). */
 #if SAMPLE_VEC_AVX2
 #define GATHER8(fmt, nc) ((nc) == 4 && ((fmt) == SAMPLE_FORMAT_SRGB8 || (fmt) == SAMPLE_FORMAT_UNORM8))
 
-/* The row of sample_u8_decode each channel's code indexes, as an offset:
+/* The row of ls_u8_decode each channel's code indexes, as an offset:
  * c / 255 (+256) for every UNORM8 channel and an sRGB texel's alpha. */
 SAMPLE_FORCE_INLINE __m128i gather8_rows(sample_format fmt)
 {
@@ -219,7 +219,7 @@ SAMPLE_FORCE_INLINE v4f texel_v4(sample_format fmt, int nc, const unsigned char 
     if (GATHER8(fmt, nc)) {
         int32_t w;
         memcpy(&w, p, 4);
-        return _mm_i32gather_ps(&sample_u8_decode[0][0],
+        return _mm_i32gather_ps(&ls_u8_decode[0][0],
                                 _mm_add_epi32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128(w)), gather8_rows(fmt)), 4);
     }
 #endif
@@ -235,7 +235,7 @@ SAMPLE_FORCE_INLINE void texel_pair(sample_format fmt, int nc, const unsigned ch
     if (GATHER8(fmt, nc)) {
         const __m128i r = gather8_rows(fmt);
         const __m256i codes = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
-        const __m256 v = _mm256_i32gather_ps(&sample_u8_decode[0][0], _mm256_add_epi32(codes, _mm256_set_m128i(r, r)), 4);
+        const __m256 v = _mm256_i32gather_ps(&ls_u8_decode[0][0], _mm256_add_epi32(codes, _mm256_set_m128i(r, r)), 4);
         *a = _mm256_castps256_ps128(v);
         *b = _mm256_extractf128_ps(v, 1);
         return;
@@ -294,7 +294,7 @@ SAMPLE_FORCE_INLINE v4f fetch(const sample_ctx *c, sample_format fmt, int nc, si
     return texel_v4(fmt, nc, row + (size_t)col * tb);
 }
 
-/* recon_level on planned taps. Returns the texels read. */
+/* ls_recon_level on planned taps. Returns the texels read. */
 SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
                                  sample_filter kind, int lv, const fast_taps *tp, float out[4],
                                  float dds[4], float ddt[4])
@@ -326,8 +326,8 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
         double wx[4], wy[4], dwx[4], dwy[4];
         float T[16][4];
         int x, y;
-        cubic_weights(c->smp->cubic, tp->fu, wx, dwx);
-        cubic_weights(c->smp->cubic, tp->fv, wy, dwy);
+        ls_cubic_weights(c->smp->cubic, tp->fu, wx, dwx);
+        ls_cubic_weights(c->smp->cubic, tp->fv, wy, dwy);
         if (tp->inside) {
             /* The 4 × 4 block lies in the level: each row's four texels
              * are adjacent (plan_level), read as a level row. */
@@ -336,11 +336,11 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
             for (y = 0; y < 4; ++y)
                 for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]));
         }
-        recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0,
+        ls_recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0,
                             out, dds, ddt);
         n = 16;
     }
-    /* ∂/∂s = ∂/∂u · w, as recon_level. */
+    /* ∂/∂s = ∂/∂u · w, as ls_recon_level. */
     if (dds) v4_store(dds, v4_mul(v4_load(dds), v4_set1((float)L->w)));
     if (ddt) v4_store(ddt, v4_mul(v4_load(ddt), v4_set1((float)L->h)));
     return n;
@@ -361,7 +361,7 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
          * queries ahead of their reading (the other filters find their
          * spans only in their counting pass). */
         pl->kind = PLAN_ANISO;
-        fp_aniso_setup_of(c, q, rho2, lr, bias, &pl->u.an);
+        ls_fp_aniso_setup_of(c, q, rho2, lr, bias, &pl->u.an);
     }
     return 1;
 }
@@ -549,7 +549,7 @@ SAMPLE_FORCE_INLINE void run_query(const sample_ctx *c, const sample_batch_args 
         return;
     }
     if (!gl && pl->kind == PLAN_FOOTPRINT) {
-        filter_footprint_query(c, a, i, fpl);
+        ls_filter_footprint_query(c, a, i, fpl);
         return;
     }
     if (!gl && pl->kind == PLAN_ANISO) {
@@ -596,7 +596,7 @@ SAMPLE_FORCE_INLINE uint32_t bilinear_level(const sample_ctx *c, sample_format f
  * loops of ANISO_LANES iterations without branches, which GCC turns into
  * vector code at -O2 and -O3 (lane-wise IEEE operations: the same bits as
  * one probe at a time). Only the common case is taken: both wraps without
- * a wrap_coord transform and every block inside both levels, where
+ * a ls_wrap_coord transform and every block inside both levels, where
  * axis_index maps the block to itself whatever the wrap mode; the floor is
  * then a truncation (a ≥ 0), the inside test is 0 ≤ a < w − 1
  * (⌊a⌋ ≤ w − 2), and recon_texel_coord's clamp of u to ±FLT_MAX cannot
@@ -701,7 +701,7 @@ SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args
     plan_query(c, a, i, NULL, tb, 0, 0, pl);
     at->n = 0;
     if (pl->kind == PLAN_ANISO && !aniso_address(c, &a->queries[i], &pl->u.an, tb, at))
-        fp_aniso_prefetch(c, &a->queries[i], &pl->u.an);
+        ls_fp_aniso_prefetch(c, &a->queries[i], &pl->u.an);
 }
 
 /* A kernel set is generated for a texel format and channel count given as
@@ -735,7 +735,7 @@ SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args
     {                                                                          \
         return bilinear_inline_##name(c, lv, s, t, out, dds, ddt);             \
     }                                                                          \
-    /* fp_anisotropic's probes: those addressed ahead read from their      \
+    /* ls_fp_anisotropic's probes: those addressed ahead read from their      \
      * addresses, the others with this format's bilinear inlined. */         \
     static SAMPLE_NOINLINE uint32_t aniso_##name(const sample_ctx *c, const sample_query *q, \
                                                  const fp_aniso_setup *an, const aniso_taps *at, \
@@ -752,7 +752,7 @@ SAMPLE_FORCE_INLINE void plan_fp_query(const sample_ctx *c, const sample_batch_a
                                        const fast_plan *pl, fp_plan *fpl)
 {
     if (pl->kind == PLAN_FOOTPRINT)
-        fp_footprint_plan(c, &a->queries[i], a->corners ? &a->corners[i] : NULL,
+        ls_fp_footprint_plan(c, &a->queries[i], a->corners ? &a->corners[i] : NULL,
                           a->lod_bias ? a->lod_bias[i] : 0.0f, fpl);
 }
 
@@ -906,10 +906,10 @@ FAST_KERNEL_SET(SRGB8_4, SAMPLE_FORMAT_SRGB8, 4)
                              {ISA_CAT3(row_, FAST_RGBA(fmt)), ISA_CAT3(bilinear_, FAST_RGBA(fmt))}}
 #define ISA_READERS_ANY_ROW(fmt)                                               \
     [SAMPLE_FORMAT_##fmt] = {ISA_READERS_ANY, ISA_READERS_ANY, ISA_READERS_ANY, ISA_READERS_ANY}
-extern const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels); /* footprint_rows.c */
-const isa_kernels SAMPLE_ISA_NAME(isa_kernels) = {
+extern const fp_row_kernels SAMPLE_ISA_NAME(ls_fp_row_kernels); /* footprint_rows.c */
+const isa_kernels SAMPLE_ISA_NAME(ls_isa_kernels) = {
     .fast_gl = {ISA_KERNELS_ROW(F32), ISA_KERNELS_ROW(F16), ISA_KERNELS_ANY_ROW(UNORM8), ISA_KERNELS_ROW(SRGB8)},
     .readers = {ISA_READERS_ROW(F32), ISA_READERS_ROW(F16), ISA_READERS_ANY_ROW(UNORM8), ISA_READERS_ROW(SRGB8)},
-    .rows = &SAMPLE_ISA_NAME(fp_row_kernels),
+    .rows = &SAMPLE_ISA_NAME(ls_fp_row_kernels),
 };
 _Static_assert(SAMPLE_FORMAT_COUNT == 4, "one row of isa_kernels per format");

@@ -5,13 +5,13 @@
  */
 #include "filter.h"
 
-uint32_t filter_gl_levels(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
+uint32_t ls_filter_gl_levels(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
                           float out[4], float dds[4], float ddt[4], sample_stats *st)
 {
-    uint32_t n = recon_level(c, ch->level0, ch->kind, q->s, q->t, out, dds, ddt);
+    uint32_t n = ls_recon_level(c, ch->level0, ch->kind, q->s, q->t, out, dds, ddt);
     if (ch->level1 >= 0) {
         float o1[4], ds1[4], dt1[4];
-        n += recon_level(c, ch->level1, ch->kind, q->s, q->t, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
+        n += ls_recon_level(c, ch->level1, ch->kind, q->s, q->t, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
         recon_blend(out, o1, ch->frac);
         if (dds) recon_blend(dds, ds1, ch->frac);
         if (ddt) recon_blend(ddt, dt1, ch->frac);
@@ -35,26 +35,26 @@ static uint32_t footprint_aniso(const sample_ctx *c, const sample_query *q, cons
                                 float call_bias, float out[4], float dds[4], float ddt[4], sample_stats *st)
 {
     (void)corners; /* the probes follow the Jacobian */
-    return fp_anisotropic(c, q, call_bias, out, dds, ddt, st);
+    return ls_fp_anisotropic(c, q, call_bias, out, dds, ddt, st);
 }
 
 static uint32_t footprint_ewa(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
                               float call_bias, float out[4], float dds[4], float ddt[4], sample_stats *st)
 {
     (void)corners; /* the ellipse is the Jacobian's */
-    return fp_ewa(c, q, call_bias, out, dds, ddt, st);
+    return ls_fp_ewa(c, q, call_bias, out, dds, ddt, st);
 }
 
 static const footprint_fn footprint_filters[] = {
     [SAMPLE_FOOTPRINT_NONE] = NULL,
     [SAMPLE_FOOTPRINT_ANISOTROPIC] = footprint_aniso,
-    [SAMPLE_FOOTPRINT_BLINN_NEWELL] = fp_blinn_newell,
+    [SAMPLE_FOOTPRINT_BLINN_NEWELL] = ls_fp_blinn_newell,
     [SAMPLE_FOOTPRINT_EWA] = footprint_ewa,
 };
 _Static_assert(sizeof footprint_filters / sizeof footprint_filters[0] == SAMPLE_FOOTPRINT_COUNT,
                "one entry per footprint filter");
 
-void filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const fp_plan *pl)
+void ls_filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const fp_plan *pl)
 {
     const sample_query *q = &a->queries[i];
     float *out = a->rgba + 4 * i;
@@ -65,14 +65,14 @@ void filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, siz
 
     stats_clear(st);
     if (pl) {
-        st->texels = fp_footprint_run(c, pl, out, dds, ddt, st);
+        st->texels = ls_fp_footprint_run(c, pl, out, dds, ddt, st);
     } else if (f) {
         st->texels = f(c, q, a->corners ? &a->corners[i] : NULL, a->lod_bias ? a->lod_bias[i] : 0.0f, out, dds,
                        ddt, st);
     } else {
         /* NONE is never handed here (the batch loops send its queries to
          * lod_select); should it be, the result is still defined. */
-        st->texels = filter_gl_levels(c, q, 0.0f, &(lod_choice){.magnify = 1, .kind = SAMPLE_LINEAR, .level0 = c->base,
+        st->texels = ls_filter_gl_levels(c, q, 0.0f, &(lod_choice){.magnify = 1, .kind = SAMPLE_LINEAR, .level0 = c->base,
                                                               .level1 = -1}, out, dds, ddt, st);
     }
 }

@@ -14,15 +14,15 @@
 /* Reconstruct and blend the levels an OpenGL filter chose for λ (lod_select):
  * the result, its derivatives (dds/ddt may be NULL) and the level stats
  * (st may be NULL). Returns texels read. */
-uint32_t filter_gl_levels(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
+uint32_t ls_filter_gl_levels(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
                           float out[4], float dds[4], float ddt[4], sample_stats *st);
 
 /* Query i of a batch (finite, λ > 0) through the sampler's footprint
  * filter, its result and stats written to the batch's arrays. Both batch
  * loops hand their footprint queries here; their λ ≤ 0 queries are the mag
- * filter's. With `pl` (Blinn–Newell, EWA: fp_footprint_plan of query i,
+ * filter's. With `pl` (Blinn–Newell, EWA: ls_fp_footprint_plan of query i,
  * made earlier) only the accumulating pass runs; NULL runs the whole
  * filter. */
-void filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const fp_plan *pl);
+void ls_filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const fp_plan *pl);
 
 #endif /* SAMPLE_FILTER_H */

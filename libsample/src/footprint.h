@@ -16,10 +16,10 @@
  * each returns texels read, fills out (and dds/ddt if non-NULL) and stats
  * (if non-NULL), reads at most SAMPLE_MAX_FOOTPRINT_TEXELS texels, and
  * applies the sampler's and the call's bias itself (lod_lambda). */
-uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
+uint32_t ls_fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
                          float call_bias, float out[4], float dds[4], float ddt[4],
                          sample_stats *st);
-uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
+uint32_t ls_fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
                 float dds[4], float ddt[4], sample_stats *st);
 
 
@@ -44,20 +44,20 @@ typedef struct fp_shape {
     double E, F, G, H, Q, R, s[2];
     int clamped;
 } fp_shape;
-void fp_shape_of(double J[2][2], fp_shape *o);
-/* fp_shape_of(J) given that J = r·(the Jacobian of b), r a power of two:
+void ls_fp_shape_of(double J[2][2], fp_shape *o);
+/* ls_fp_shape_of(J) given that J = r·(the Jacobian of b), r a power of two:
  * Q and R come from b (no hypot). */
-void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o);
-void fp_shape_finish(fp_shape *o); /* s and the clamp from Q, R */
-void fp_shape_sigma(fp_shape *o);  /* s from Q, R without the clamp */
+void ls_fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o);
+void ls_fp_shape_finish(fp_shape *o); /* s and the clamp from Q, R */
+void ls_fp_shape_sigma(fp_shape *o);  /* s from Q, R without the clamp */
 /* out = U·diag(√(σ0² + wid), √(σ1² + wid))·Vᵀ, with J = U·diag(σ)·Vᵀ as
- * fp_shape_of factors it and σ1 after the clamp: wid = 0 is the clamped
+ * ls_fp_shape_of factors it and σ1 after the clamp: wid = 0 is the clamped
  * Jacobian (EWA), wid = 1 the unit-variance widening (Blinn–Newell).
  * Returns det(out). */
-double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2]);
+double ls_fp_shape_reshape(const fp_shape *d, double wid, double out[2][2]);
 
 /* ∂u0/∂s and ∂v0/∂t on level lv: its width and height, negated on an axis
- * a mirror-clamp reflected (fp_center's flips). */
+ * a mirror-clamp reflected (ls_fp_center's flips). */
 static inline void fp_level_scale(const sample_ctx *c, int lv, int flip_s, int flip_t, double *ku, double *kv)
 {
     const struct sample_level *L = &c->tex->level[lv];
@@ -67,14 +67,14 @@ static inline void fp_level_scale(const sample_ctx *c, int lv, int flip_s, int f
 
 /* The normalized Jacobian J (rows s, t; columns x, y) in texel units of level
  * lv, its rows scaled by fp_level_scale. */
-void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
+void ls_fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
                        double out[2][2]);
 
-/* The shape of J (level lv's Jacobian, fp_level_jacobian; `flipped` if a
+/* The shape of J (level lv's Jacobian, ls_fp_level_jacobian; `flipped` if a
  * mirror-clamp negated a row) from `base`, the shape of the same query's
  * Jacobian on the base level c->base, when that is a power-of-two scaling;
- * fp_shape_of(J) otherwise. */
-void fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[2][2], int flipped,
+ * ls_fp_shape_of(J) otherwise. */
+void ls_fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[2][2], int flipped,
                     fp_shape *o);
 
 /* Weighted sums of one level: Σw, Σw·T and, for ∂/∂(u0, v0) of the centre at
@@ -87,7 +87,7 @@ typedef struct fp_accum {
     int deriv; /* 0: the ∂ sums are not wanted (they stay 0) */
 } fp_accum;
 
-void fp_accum_init(fp_accum *a);
+void ls_fp_accum_init(fp_accum *a);
 
 static inline void fp_accum_add(fp_accum *a, double w, double dwdu, double dwdv, const float T[4])
 {
@@ -123,17 +123,17 @@ SAMPLE_FORCE_INLINE void fp_sums_add(fp_sums *s, double w, const float T[4])
     s->n++;
 }
 
-/* EWA's weight, e^(−2r²) − e^(−2), interpolated in fp_ewa_lut
+/* EWA's weight, e^(−2r²) − e^(−2), interpolated in ls_fp_ewa_lut
  * (footprint_ewa.c) at r² ∈ [0, 1); its slope dw/dr² in *dwdr2 if asked
  * for. */
-extern const double fp_ewa_lut[129];
+extern const double ls_fp_ewa_lut[129];
 SAMPLE_FORCE_INLINE double fp_ewa_weight(double r2, double *dwdr2)
 {
     double x = r2 * 128.0;
     int e = (int)x;
     if (e > 127) e = 127;
-    if (dwdr2) *dwdr2 = (fp_ewa_lut[e + 1] - fp_ewa_lut[e]) * 128.0;
-    return fp_ewa_lut[e] + (x - e) * (fp_ewa_lut[e + 1] - fp_ewa_lut[e]);
+    if (dwdr2) *dwdr2 = (ls_fp_ewa_lut[e + 1] - ls_fp_ewa_lut[e]) * 128.0;
+    return ls_fp_ewa_lut[e] + (x - e) * (ls_fp_ewa_lut[e + 1] - ls_fp_ewa_lut[e]);
 }
 
 /* a ← a + s for an fp_accum that received nothing else (a level's sums
@@ -420,10 +420,10 @@ typedef double (*fp_level_fn)(const sample_ctx *c, const void *geom, int lv, fp_
                               int count_only);
 
 /* The level loop shared by Blinn–Newell and EWA, in two halves.
- * fp_run_count: levels from the minor semi-axis (base texels, after the
+ * ls_fp_run_count: levels from the minor semi-axis (base texels, after the
  * eccentricity clamp) and the bias, the counting pass (every row's span
  * found, kept and prefetched; no texel read), moved coarser while the two
- * levels together would exceed SAMPLE_MAX_FOOTPRINT_TEXELS. fp_run_read:
+ * levels together would exceed SAMPLE_MAX_FOOTPRINT_TEXELS. ls_fp_run_read:
  * the accumulating pass on those levels, blended in double; bilinear at
  * the coarsest level if even that did not fit. Fills out/dds/ddt/st;
  * returns texels. The halves may run apart (another query's work in
@@ -434,16 +434,16 @@ typedef struct fp_run_state {
     float s, t, lam, f;
     int l0, l1, ok;
 } fp_run_state;
-void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
+void ls_fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
                   float t, float call_bias, fp_run_state *rs);
-uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
+uint32_t ls_fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
                      sample_stats *st);
 
 /* A Blinn–Newell or EWA query split at fp_run's halves, for a batch loop
  * that plans query i + 1 (its rows' lines then on their way) before it
- * runs query i: fp_footprint_plan does the geometry and the counting pass
- * into *pl, fp_footprint_run the accumulating pass, with the results of
- * fp_blinn_newell / fp_ewa bit for bit (they are these two calls). A plan
+ * runs query i: ls_fp_footprint_plan does the geometry and the counting pass
+ * into *pl, ls_fp_footprint_run the accumulating pass, with the results of
+ * ls_fp_blinn_newell / ls_fp_ewa bit for bit (they are these two calls). A plan
  * holds the filter's geometry and both levels' row spans (FP_PLAN_BYTES)
  * and must not be moved between the calls. */
 #define FP_PLAN_BYTES 5632
@@ -455,19 +455,19 @@ typedef struct fp_plan {
         unsigned char bytes[FP_PLAN_BYTES];
     } geom;
 } fp_plan;
-void fp_footprint_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+void ls_fp_footprint_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
                        fp_plan *pl);
-uint32_t fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
+uint32_t ls_fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
                           sample_stats *st);
-void fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+void ls_fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
                           fp_plan *pl);
-void fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl);
+void ls_fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl);
 
 /* The footprint centre on level lv in texel units with texel centres at
  * integers (u0 = s·w − ½), after the coordinate transform of the wrap modes
- * that have one (wrap_coord); `flip_s`/`flip_t` say whether a mirror-clamp
+ * that have one (ls_wrap_coord); `flip_s`/`flip_t` say whether a mirror-clamp
  * reflected the centre, which mirrors the footprint too. */
-void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
+void ls_fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
                int *flip_t);
 
 #endif /* SAMPLE_FOOTPRINT_H */

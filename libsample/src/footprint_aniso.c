@@ -17,8 +17,8 @@
  * SAMPLE_MAX_FOOTPRINT_TEXELS whatever max_anisotropy says. */
 #define ANISO_MAX_PROBES (SAMPLE_MAX_FOOTPRINT_TEXELS / 8)
 
-/* N for a footprint (exposed to the tests through fp_aniso_count). */
-int fp_aniso_count(const sample_sampler *smp, double pmax, double pmin)
+/* N for a footprint (exposed to the tests through ls_fp_aniso_count). */
+int ls_fp_aniso_count(const sample_sampler *smp, double pmax, double pmin)
 {
     /* maxAniso is a float state; probes are whole, so its integer part. */
     double maxa = floor((double)smp->max_anisotropy), ratio;
@@ -77,7 +77,7 @@ static const double log2_probes[ANISO_MAX_PROBES] = {
 };
 _Static_assert(ANISO_MAX_PROBES == 128, "log2_probes has one entry per probe count");
 
-void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double rho2[2],
+void ls_fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double rho2[2],
                        double log2_rho, float call_bias, fp_aniso_setup *a)
 {
     /* Px, Py: the column lengths in base texels (lod_log2_rho). */
@@ -85,12 +85,12 @@ void fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const double 
     double pmax = sqrt(xmajor ? rho2[0] : rho2[1]), pmin = sqrt(xmajor ? rho2[1] : rho2[0]), lb;
     a->ms = xmajor ? q->dsdx : q->dsdy;
     a->mt = xmajor ? q->dtdx : q->dtdy;
-    a->n = fp_aniso_count(c->smp, pmax, pmin);
+    a->n = ls_fp_aniso_count(c->smp, pmax, pmin);
     lb = log2_rho - log2_probes[a->n - 1];
     a->lam = lod_lambda(c, lb < -1e4 ? -1e4f : (float)lb, call_bias);
     /* Each probe is trilinear (LINEAR_MIPMAP_LINEAR, eqs. 8.17–8.18) at λ';
      * λ' ≤ 0 reads the base level bilinearly. */
-    lod_split(c, a->lam, &a->l0, &a->l1, &a->f);
+    ls_lod_split(c, a->lam, &a->l0, &a->l1, &a->f);
     if (a->f == 0.0f) a->l1 = a->l0;
 }
 
@@ -112,7 +112,7 @@ SAMPLE_FORCE_INLINE void prefetch_probes(const sample_ctx *c, int lv, float s0, 
     for (k = 0; k < n; ++k, u += du, v += dv) ctx_prefetch_block(c, L, u, v);
 }
 
-void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a)
+void ls_fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *a)
 {
     float s0, t0, s1, t1;
     fp_aniso_probe(q, a, 1, &s0, &t0);
@@ -122,14 +122,14 @@ void fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_anis
     if (a->l1 != a->l0) prefetch_probes(c, a->l1, s0, t0, s1, t1, a->n / 2 + 1);
 }
 
-uint32_t fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
+uint32_t ls_fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
                         float out[4], float dds[4], float ddt[4], sample_stats *st)
 {
     double rho2[2], lr = lod_log2_rho(c, q, rho2);
     fp_aniso_setup a;
     uint32_t texels;
-    fp_aniso_setup_of(c, q, rho2, lr, call_bias, &a);
-    /* recon_level's bilinear, as the batch's kernels read it (the same
+    ls_fp_aniso_setup_of(c, q, rho2, lr, call_bias, &a);
+    /* ls_recon_level's bilinear, as the batch's kernels read it (the same
      * bits in every table). */
     texels = fp_aniso_probes(c, q, &a, ctx_readers(c)->bilinear, out, dds, ddt);
     if (st) fp_aniso_stats(&a, st);

@@ -100,13 +100,13 @@ static void bn_affine_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_le
 
     e->lv = lv;
     e->fail = 0;
-    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
-    fp_level_jacobian(c, lv, g->J, fs, ft, J);
+    ls_fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
+    ls_fp_level_jacobian(c, lv, g->J, fs, ft, J);
     fp_level_scale(c, lv, fs, ft, &e->ku, &e->kv);
     /* Unit-variance widening (file comment): J′ = U·diag(√(σ² + 1))·Vᵀ,
      * M = J′⁻¹ by its adjugate; det J′ = ±√(σ0² + 1)·√(σ1² + 1) ≠ 0. */
-    fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
-    det = fp_shape_reshape(&d, 1.0, Jw);
+    ls_fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
+    det = ls_fp_shape_reshape(&d, 1.0, Jw);
     /* The parallelogram J′·[−1, 1]² spans |J′₁₀| + |J′₁₁| in v and
      * |J′₀₀| + |J′₀₁| in u: walked by columns where that saves lines
      * (fp_walk_columns), with u and v exchanged (M's columns too). */
@@ -185,7 +185,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     if (!acc->deriv) {
         /* The pyramid alone, the level at once (footprint_rows.c), sums in
          * registers. With |x|, |y| < 1 both factors are at least 2^−53, so
-         * w > 0 there (M and du are finite, fp_shape_reshape: det J′ =
+         * w > 0 there (M and du are finite, ls_fp_shape_reshape: det J′ =
          * ±t0·t1, t ≥ 1). */
         fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
         e->lr.k->rows->bn_level(&sm, &e->lr, (const double(*)[2])e->M);
@@ -230,7 +230,7 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
 
     e->lv = lv;
     e->fail = 1;
-    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
+    ls_fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
     fp_level_scale(c, lv, fs, ft, &e->ku, &e->kv);
     ku = e->ku;
     kv = e->kv;
@@ -250,13 +250,13 @@ static void bn_quad_setup(const sample_ctx *c, const bn_geom *g, int lv, bn_leve
      * and the pulled-back point lies in the quad wherever the weight is
      * nonzero, so w stays within its range on the square. σ > 0: the
      * caller sends only projective, not too eccentric quads here. */
-    fp_level_jacobian(c, lv, g->J, fs, ft, J);
-    fp_shape_of(J, &sh);
-    fp_shape_sigma(&sh); /* T wants J's own σ1, not the eccentricity clamp's */
+    ls_fp_level_jacobian(c, lv, g->J, fs, ft, J);
+    ls_fp_shape_of(J, &sh);
+    ls_fp_shape_sigma(&sh); /* T wants J's own σ1, not the eccentricity clamp's */
     if (!(sh.s[1] > 0.0)) return;
-    /* Jw = U·diag(√(σ² + 1))·Vᵀ (no trigonometry: fp_shape_reshape), so
+    /* Jw = U·diag(√(σ² + 1))·Vᵀ (no trigonometry: ls_fp_shape_reshape), so
      * T = J·Jw⁻¹ and T⁻¹ = Jw·J⁻¹, by adjugates. */
-    dw = fp_shape_reshape(&sh, 1.0, Jw);
+    dw = ls_fp_shape_reshape(&sh, 1.0, Jw);
     dj = J[0][0] * J[1][1] - J[0][1] * J[1][0];
     if (!(dj != 0.0)) return;
     for (i = 0; i < 2; ++i) {
@@ -473,7 +473,7 @@ typedef struct bn_plan_geom {
 } bn_plan_geom;
 _Static_assert(sizeof(bn_plan_geom) <= FP_PLAN_BYTES, "FP_PLAN_BYTES too small for Blinn-Newell");
 
-void fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+void ls_fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
                           fp_plan *pl)
 {
     const struct sample_level *B = &c->tex->level[c->base];
@@ -520,17 +520,17 @@ void fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const samp
     Jb[0][1] = g->J[0][1] * B->w;
     Jb[1][0] = g->J[1][0] * B->h;
     Jb[1][1] = g->J[1][1] * B->h;
-    fp_shape_of(Jb, &g->base);
+    ls_fp_shape_of(Jb, &g->base);
     if (quad == 1 && (g->base.clamped || !(g->base.s[1] > 0.0))) quad = 0;
-    fp_run_count(c, g, quad == 1 ? bn_quad_level : bn_affine_level, g->base.s[1], g->s, g->t, call_bias,
+    ls_fp_run_count(c, g, quad == 1 ? bn_quad_level : bn_affine_level, g->base.s[1], g->s, g->t, call_bias,
                  &pl->rs);
 }
 
-uint32_t fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
+uint32_t ls_fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
                          float call_bias, float out[4], float dds[4], float ddt[4],
                          sample_stats *st)
 {
     fp_plan pl;
-    fp_blinn_newell_plan(c, q, corners, call_bias, &pl);
-    return fp_run_read(c, &pl.rs, out, dds, ddt, st);
+    ls_fp_blinn_newell_plan(c, q, corners, call_bias, &pl);
+    return ls_fp_run_read(c, &pl.rs, out, dds, ddt, st);
 }

@@ -6,32 +6,32 @@
 
 #include <float.h>
 
-void fp_shape_of(double J[2][2], fp_shape *o)
+void ls_fp_shape_of(double J[2][2], fp_shape *o)
 {
     /* Blinn's closed-form 2 × 2 SVD ("Consider the lowly 2×2 matrix",
      * 1996): J = R(φ)·diag(σ0, ±σ1)·R(θ) with E, F, G, H the symmetric and
      * antisymmetric parts, Q = |(E, H)|, R = |(F, G)|, σ0 = Q + R ≥
-     * σ1 = |Q − R|; the rotations are never formed (fp_shape_reshape). */
+     * σ1 = |Q − R|; the rotations are never formed (ls_fp_shape_reshape). */
     o->E = 0.5 * (J[0][0] + J[1][1]);
     o->F = 0.5 * (J[0][0] - J[1][1]);
     o->G = 0.5 * (J[1][0] + J[0][1]);
     o->H = 0.5 * (J[1][0] - J[0][1]);
     o->Q = sample_hypot(o->E, o->H);
     o->R = sample_hypot(o->F, o->G);
-    fp_shape_finish(o);
+    ls_fp_shape_finish(o);
 }
 
-void fp_shape_sigma(fp_shape *o)
+void ls_fp_shape_sigma(fp_shape *o)
 {
     o->s[0] = o->Q + o->R;
     o->s[1] = fabs(o->Q - o->R);
     o->clamped = 0;
 }
 
-void fp_shape_finish(fp_shape *o)
+void ls_fp_shape_finish(fp_shape *o)
 {
     double lo;
-    fp_shape_sigma(o);
+    ls_fp_shape_sigma(o);
     /* Eccentricity clamp: lengthen the minor axis rather than shorten the
      * major one (pbrt's "clamp ellipse eccentricity"): the filter may blur
      * across, never alias along. */
@@ -40,7 +40,7 @@ void fp_shape_finish(fp_shape *o)
     if (o->clamped) o->s[1] = lo;
 }
 
-void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o)
+void ls_fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o)
 {
     /* Scaling J by a power of two scales E … H exactly, and Q, R and σ with
      * them (the hypot calls are the costly part, not these products). */
@@ -50,12 +50,12 @@ void fp_shape_scaled(const fp_shape *b, double J[2][2], double r, fp_shape *o)
     o->H = 0.5 * (J[1][0] - J[0][1]);
     o->Q = b->Q * r;
     o->R = b->R * r;
-    fp_shape_finish(o);
+    ls_fp_shape_finish(o);
 }
 
-double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2])
+double ls_fp_shape_reshape(const fp_shape *d, double wid, double out[2][2])
 {
-    /* J = R(φ)·diag(σ0, ±σ1)·R(θ) (fp_shape_of) = Q·R(φ + θ) + R·Ref(φ − θ),
+    /* J = R(φ)·diag(σ0, ±σ1)·R(θ) (ls_fp_shape_of) = Q·R(φ + θ) + R·Ref(φ − θ),
      * with Q·R(φ + θ) = [[E, −H], [H, E]] and R·Ref(φ − θ) = [[F, G], [G, −F]]
      * (Blinn, "Consider the lowly 2×2 matrix", 1996). The same rotations
      * with new singular values t0, ±t1 are then
@@ -83,7 +83,7 @@ double fp_shape_reshape(const fp_shape *d, double wid, double out[2][2])
     return d->Q >= d->R ? t0 * t1 : -(t0 * t1);
 }
 
-void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
+void ls_fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int flip_s, int flip_t,
                        double out[2][2])
 {
     double ku, kv;
@@ -94,7 +94,7 @@ void fp_level_jacobian(const sample_ctx *c, int lv, const double J[2][2], int fl
     out[1][1] = J[1][1] * kv;
 }
 
-void fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[2][2], int flipped,
+void ls_fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[2][2], int flipped,
                     fp_shape *o)
 {
     const struct sample_level *L = &c->tex->level[lv], *B = &c->tex->level[c->base];
@@ -104,12 +104,12 @@ void fp_level_shape(const sample_ctx *c, int lv, const fp_shape *base, double J[
      * axis that stopped halving (non-power-of-two sizes, 1 × n levels)
      * takes the full computation. */
     if (!flipped && q > 0 && (q & (q - 1)) == 0 && B->w == L->w * q && B->h == L->h * q)
-        fp_shape_scaled(base, J, 1.0 / q, o);
+        ls_fp_shape_scaled(base, J, 1.0 / q, o);
     else
-        fp_shape_of(J, o);
+        ls_fp_shape_of(J, o);
 }
 
-void fp_accum_init(fp_accum *a) { memset(a, 0, sizeof *a); }
+void ls_fp_accum_init(fp_accum *a) { memset(a, 0, sizeof *a); }
 
 /* Normalized result and its derivatives: R = ΣwT / Σw and, by the quotient
  * rule at fixed footprint, ∂R = (Σ∂w·T − R·Σ∂w) / Σw. */
@@ -140,7 +140,7 @@ static double reduce_period(sample_wrap m, double u, int n)
     return p > 0.0 ? u - p * fp_floor(u / p) : u;
 }
 
-void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
+void ls_fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
                int *flip_t)
 {
     const struct sample_level *L = &c->tex->level[lv];
@@ -149,8 +149,8 @@ void fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double
     *flip_t = mirror_clamp(mt) && t < 0.0f;
     /* A float times an int below 2^17 is exact in double. Texel centres sit
      * at integers after the −½ (DESIGN §2). */
-    if (wrap_transforms_coord(ms)) s = wrap_coord(ms, s, L->w);
-    if (wrap_transforms_coord(mt)) t = wrap_coord(mt, t, L->h);
+    if (wrap_transforms_coord(ms)) s = ls_wrap_coord(ms, s, L->w);
+    if (wrap_transforms_coord(mt)) t = ls_wrap_coord(mt, t, L->h);
     *u0 = reduce_period(ms, (double)s * L->w, L->w) - 0.5;
     *v0 = reduce_period(mt, (double)t * L->h, L->h) - 0.5;
 }
@@ -162,7 +162,7 @@ static void store(float *dst, const double *v)
         for (k = 0; k < 4; ++k) dst[k] = (float)v[k];
 }
 
-void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
+void ls_fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
                   float t, float call_bias, fp_run_state *rs)
 {
     /* Four texels stay in reserve for the bilinear fallback below. */
@@ -175,7 +175,7 @@ void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, doub
     int l0, l1, ok = 0;
     float f;
 
-    lod_split(c, lam, &l0, &l1, &f);
+    ls_lod_split(c, lam, &l0, &l1, &f);
     if (f == 0.0f) l1 = l0;
     /* Texel cap (SAMPLE_MAX_FOOTPRINT_TEXELS): a footprint too large for its
      * levels moves one level coarser at a time (at most SAMPLE_MAX_LEVELS
@@ -203,7 +203,7 @@ void fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, doub
     rs->ok = ok;
 }
 
-uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
+uint32_t ls_fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
                      sample_stats *st)
 {
     const void *geom = rs->geom;
@@ -215,12 +215,12 @@ uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], 
     double r0[4], s0[4], t0[4], r1[4], s1[4], t1[4];
 
     if (ok) {
-        fp_accum_init(&a0);
+        ls_fp_accum_init(&a0);
         a0.deriv = dds || ddt;
         n = (uint32_t)level(c, geom, l0, &a0, 0);
         ok = accum_result(&a0, r0, s0, t0);
         if (ok && l1 != l0) {
-            fp_accum_init(&a1);
+            ls_fp_accum_init(&a1);
             a1.deriv = a0.deriv;
             n += (uint32_t)level(c, geom, l1, &a1, 0);
             ok = accum_result(&a1, r1, s1, t1);
@@ -248,7 +248,7 @@ uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], 
             st->level1 = -1;
             st->level_frac = 0.0f;
         }
-        return n + recon_level(c, c->maxlev, SAMPLE_LINEAR, rs->s, rs->t, out, dds, ddt);
+        return n + ls_recon_level(c, c->maxlev, SAMPLE_LINEAR, rs->s, rs->t, out, dds, ddt);
     }
     store(out, r0);
     store(dds, s0);
@@ -256,17 +256,17 @@ uint32_t fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], 
     return n;
 }
 
-void fp_footprint_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
+void ls_fp_footprint_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
                        fp_plan *pl)
 {
     if (c->smp->footprint == SAMPLE_FOOTPRINT_BLINN_NEWELL)
-        fp_blinn_newell_plan(c, q, corners, call_bias, pl);
+        ls_fp_blinn_newell_plan(c, q, corners, call_bias, pl);
     else
-        fp_ewa_plan(c, q, call_bias, pl);
+        ls_fp_ewa_plan(c, q, call_bias, pl);
 }
 
-uint32_t fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
+uint32_t ls_fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
                           sample_stats *st)
 {
-    return fp_run_read(c, &pl->rs, out, dds, ddt, st);
+    return ls_fp_run_read(c, &pl->rs, out, dds, ddt, st);
 }

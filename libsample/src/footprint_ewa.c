@@ -19,7 +19,7 @@
  *         printf("%.9e,", k == 128 ? 0.0 : exp(-2.0 * k / 128) - exp(-2.0));
  * (pbrt's 128-entry table plus the end point, so that interpolating between
  * entries makes the weight, and hence the result, continuous in r²). */
-const double fp_ewa_lut[129] = {
+const double ls_fp_ewa_lut[129] = {
     8.646647168e-01, 8.491611538e-01, 8.338979512e-01, 8.188713827e-01,
     8.040777796e-01, 7.895135300e-01, 7.751750781e-01, 7.610589234e-01,
     7.471616193e-01, 7.334797730e-01, 7.200100441e-01, 7.067491439e-01,
@@ -82,13 +82,13 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     int tr, fs, ft;
 
     e->lv = lv;
-    fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
-    fp_level_jacobian(c, lv, g->J, fs, ft, J);
+    ls_fp_center(c, lv, g->s, g->t, &u0, &v0, &fs, &ft);
+    ls_fp_level_jacobian(c, lv, g->J, fs, ft, J);
     /* Clamp ellipse eccentricity (on the singular values, so the clamp is
      * the same for every pair of columns spanning the same ellipse); an
      * unclamped J is used as it is. */
-    fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
-    if (d.clamped) fp_shape_reshape(&d, 0.0, J);
+    ls_fp_level_shape(c, lv, &g->base, J, fs || ft, &d);
+    if (d.clamped) ls_fp_shape_reshape(&d, 0.0, J);
     fp_level_scale(c, lv, fs, ft, &e->ku, &e->kv);
 
     /* Ellipse coefficients with the unit-variance term, scaled to F = 1. */
@@ -175,7 +175,7 @@ typedef struct ewa_plan_geom {
 } ewa_plan_geom;
 _Static_assert(sizeof(ewa_plan_geom) <= FP_PLAN_BYTES, "FP_PLAN_BYTES too small for EWA");
 
-void fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl)
+void ls_fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl)
 {
     const struct sample_level *B = &c->tex->level[c->base];
     ewa_plan_geom *pg = (ewa_plan_geom *)(void *)pl->geom.bytes;
@@ -192,14 +192,14 @@ void fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp
     Jb[0][1] = g->J[0][1] * B->w;
     Jb[1][0] = g->J[1][0] * B->h;
     Jb[1][1] = g->J[1][1] * B->h;
-    fp_shape_of(Jb, &g->base);
-    fp_run_count(c, g, ewa_level, g->base.s[1], g->s, g->t, call_bias, &pl->rs);
+    ls_fp_shape_of(Jb, &g->base);
+    ls_fp_run_count(c, g, ewa_level, g->base.s[1], g->s, g->t, call_bias, &pl->rs);
 }
 
-uint32_t fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
+uint32_t ls_fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, float out[4],
                 float dds[4], float ddt[4], sample_stats *st)
 {
     fp_plan pl;
-    fp_ewa_plan(c, q, call_bias, &pl);
-    return fp_run_read(c, &pl.rs, out, dds, ddt, st);
+    ls_fp_ewa_plan(c, q, call_bias, &pl);
+    return ls_fp_run_read(c, &pl.rs, out, dds, ddt, st);
 }

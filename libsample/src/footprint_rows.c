@@ -117,10 +117,10 @@ static inline lanes lanes_ewa_lut(lanes x)
     i4 ie = __builtin_convertvector(x, i4);
 #if defined(__AVX2__)
     /* The same loads as below, gathered (exact copies: the same bits). */
-    d4 lo = _mm256_i32gather_pd(fp_ewa_lut, (__m128i)ie, 8), hi = _mm256_i32gather_pd(fp_ewa_lut + 1, (__m128i)ie, 8);
+    d4 lo = _mm256_i32gather_pd(ls_fp_ewa_lut, (__m128i)ie, 8), hi = _mm256_i32gather_pd(ls_fp_ewa_lut + 1, (__m128i)ie, 8);
 #else
-    d4 lo = {fp_ewa_lut[ie[0]], fp_ewa_lut[ie[1]], fp_ewa_lut[ie[2]], fp_ewa_lut[ie[3]]};
-    d4 hi = {fp_ewa_lut[ie[0] + 1], fp_ewa_lut[ie[1] + 1], fp_ewa_lut[ie[2] + 1], fp_ewa_lut[ie[3] + 1]};
+    d4 lo = {ls_fp_ewa_lut[ie[0]], ls_fp_ewa_lut[ie[1]], ls_fp_ewa_lut[ie[2]], ls_fp_ewa_lut[ie[3]]};
+    d4 hi = {ls_fp_ewa_lut[ie[0] + 1], ls_fp_ewa_lut[ie[1] + 1], ls_fp_ewa_lut[ie[2] + 1], ls_fp_ewa_lut[ie[3] + 1]};
 #endif
     return lo + (x - __builtin_convertvector(ie, d4)) * (hi - lo);
 }
@@ -144,7 +144,7 @@ static inline lanes lanes_floor(lanes x) { return fp_floor(x); }
 static inline lanes lanes_ewa_lut(lanes x)
 {
     int e = (int)x;
-    return fp_ewa_lut[e] + (x - e) * (fp_ewa_lut[e + 1] - fp_ewa_lut[e]);
+    return ls_fp_ewa_lut[e] + (x - e) * (ls_fp_ewa_lut[e + 1] - ls_fp_ewa_lut[e]);
 }
 static inline void sums_load(sums_reg *r, const fp_sums *s) { *r = *s; }
 static inline void sums_store(fp_sums *s, const sums_reg *r) { *s = *r; }
@@ -341,7 +341,7 @@ static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double abc[3]) 
 
 /* ---- This build's level kernels (isa.c) --------------------------------- */
 
-const fp_row_kernels SAMPLE_ISA_NAME(fp_row_kernels) = {
+const fp_row_kernels SAMPLE_ISA_NAME(ls_fp_row_kernels) = {
     .bn_level = bn_level,
     .ewa_level = ewa_level,
     .bn_count = bn_count,

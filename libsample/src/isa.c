@@ -34,15 +34,15 @@ static const char *const isa_names[SAMPLE_ISA_COUNT] = {
 
 /* The tables this build made; NULL where it made none. */
 static const isa_kernels *const isa_tables[SAMPLE_ISA_COUNT] = {
-    [SAMPLE_ISA_SCALAR] = &isa_kernels_scalar,
+    [SAMPLE_ISA_SCALAR] = &ls_isa_kernels_scalar,
 #if defined(SAMPLE_HAVE_ISA_SSE2)
-    [SAMPLE_ISA_SSE2] = &isa_kernels_sse2,
+    [SAMPLE_ISA_SSE2] = &ls_isa_kernels_sse2,
 #endif
 #if defined(SAMPLE_HAVE_ISA_AVX2)
-    [SAMPLE_ISA_AVX2] = &isa_kernels_avx2,
+    [SAMPLE_ISA_AVX2] = &ls_isa_kernels_avx2,
 #endif
 #if defined(SAMPLE_HAVE_ISA_AVX512)
-    [SAMPLE_ISA_AVX512] = &isa_kernels_avx512,
+    [SAMPLE_ISA_AVX512] = &ls_isa_kernels_avx512,
 #endif
 };
 
@@ -114,7 +114,7 @@ static int isa_level(void)
     return v - 1;
 }
 
-const isa_kernels *isa_kernels_active(void) { return isa_tables[isa_level()]; }
+const isa_kernels *ls_isa_kernels_active(void) { return isa_tables[isa_level()]; }
 
 int sample_isa_force(const char *name)
 {

@@ -1,7 +1,7 @@
 /*
  * The kernel tables (isa.c, fast_gl.c, footprint_rows.c, reference.c):
  * one per instruction set the build made, plus the reference one. A batch
- * picks its table once (ctx_init) and everything below reads it from the
+ * picks its table once (ls_ctx_init) and everything below reads it from the
  * context.
  */
 #ifndef SAMPLE_KERNELS_H
@@ -21,7 +21,7 @@ typedef void (*fast_gl_fn)(const sample_ctx *c, const sample_batch_args *a);
  *             row or column; tex_decode_v4), of format fmt with nc
  *             channels (the texture's; a reader for one format ignores
  *             them);
- *   bilinear  recon_level(c, lv, SAMPLE_LINEAR, s, t, …) bit for bit (the
+ *   bilinear  ls_recon_level(c, lv, SAMPLE_LINEAR, s, t, …) bit for bit (the
  *             fast path's addressing; tests/test_fastpath.c). */
 typedef struct tex_readers {
     void (*row)(sample_format fmt, int nc, const unsigned char *p, size_t pitch, int n, float (*out)[4]);
@@ -78,20 +78,20 @@ typedef struct isa_kernels {
 #define SAMPLE_ISA_NAME(x) SAMPLE_ISA_CAT(x, SAMPLE_ISA)
 
 /* The tables the build made (isa.c refers only to those it was told of). */
-extern const isa_kernels isa_kernels_scalar, isa_kernels_sse2, isa_kernels_avx2,
-    isa_kernels_avx512;
+extern const isa_kernels ls_isa_kernels_scalar, ls_isa_kernels_sse2, ls_isa_kernels_avx2,
+    ls_isa_kernels_avx512;
 
 /* The reference kernels (reference.c): no batch loop (fast_gl all NULL),
  * readers that decode texel by texel (tex_decode_v4) and reconstruct
- * through recon_level, and the scalar build's footprint rows. What
+ * through ls_recon_level, and the scalar build's footprint rows. What
  * sample_batch_reference runs; every other table must give its bits. */
-extern const isa_kernels isa_kernels_reference;
+extern const isa_kernels ls_isa_kernels_reference;
 
 /* The table sample_batch runs: chosen on the first call from the CPU and
  * LIBSAMPLE_ISA (thread-safe), then a relaxed atomic load — once per
- * batch (ctx_init), never inside a loop. An out-of-line call, so that
+ * batch (ls_ctx_init), never inside a loop. An out-of-line call, so that
  * this header (also read by C++, libsample_io) needs no <stdatomic.h>. */
-const isa_kernels *isa_kernels_active(void);
+const isa_kernels *ls_isa_kernels_active(void);
 
 /* Texture t's readers in the kernels k. */
 static inline const tex_readers *tex_readers_in(const isa_kernels *k, const sample_texture *t)

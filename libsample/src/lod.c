@@ -6,7 +6,7 @@
  */
 #include "lod.h"
 
-void lod_split(const sample_ctx *c, float lambda, int *l0, int *l1, float *frac)
+void ls_lod_split(const sample_ctx *c, float lambda, int *l0, int *l1, float *frac)
 {
     double p = (double)c->base + (lambda > 0.0f ? (double)lambda : 0.0);
     if (p >= (double)c->maxlev) {

@@ -142,6 +142,6 @@ SAMPLE_FORCE_INLINE lod_choice lod_select(const sample_ctx *c, float lambda)
 
 /* For footprint filters: continuous level position for λ (clamped to the
  * usable range), split into two adjacent levels and the weight of the upper. */
-void lod_split(const sample_ctx *c, float lambda, int *l0, int *l1, float *frac);
+void ls_lod_split(const sample_ctx *c, float lambda, int *l0, int *l1, float *frac);
 
 #endif /* SAMPLE_LOD_H */

@@ -58,8 +58,8 @@ SAMPLE_FORCE_INLINE void lod_lambda_base4(const sample_ctx *c, const sample_quer
     e = (d4)((b >> 52) | (int64_t)0x4330000000000000) - (0x1p52 + 1023.0);
     m = (d4)(fr | (int64_t)SAMPLE_LOG2_ONE);
     ci = (d4)((fr & ~(((int64_t)1 << SAMPLE_LOG2_TOP7) - 1)) | (int64_t)SAMPLE_LOG2_ONE | (int64_t)SAMPLE_LOG2_MID);
-    t0 = (d4)_mm256_i64gather_pd(&sample_log2_table[0][0], (__m256i)(ix * 2), 8);
-    t1 = (d4)_mm256_i64gather_pd(&sample_log2_table[0][1], (__m256i)(ix * 2), 8);
+    t0 = (d4)_mm256_i64gather_pd(&ls_log2_table[0][0], (__m256i)(ix * 2), 8);
+    t1 = (d4)_mm256_i64gather_pd(&ls_log2_table[0][1], (__m256i)(ix * 2), 8);
     r = (m - ci) * t1;
     r2 = r * r;
     y = e + (t0 + r * SAMPLE_LOG2_POLY(r, r2));

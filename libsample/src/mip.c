@@ -8,7 +8,7 @@
  * windowed-sinc kernels differ only in how the tap table is filled, so the
  * resampling loop exists once.
  *
- * All arithmetic is on decoded linear values (tex_decode / tex_encode):
+ * All arithmetic is on decoded linear values (tex_decode / ls_tex_encode):
  * sRGB texels are decoded with the exact EOTF before weighting and the
  * result is re-encoded (averaging codes would darken: black and white give
  * code 128, linear 0.216, not 0.5). Channels are filtered independently (no alpha premultiplication),
@@ -75,7 +75,7 @@ static double kernel_eval(sample_mipgen f, double x)
 
 /* Source index for a kernel tap at integer position i, or −1 when the tap is
  * dropped. The wrap modes that read a texel (repeat, mirror, clamp to edge)
- * do so through wrap_index, the addressing function every sampler filter
+ * do so through ls_wrap_index, the addressing function every sampler filter
  * uses. The border colour is sampler state the pyramid cannot know, so the
  * border-reading modes drop the tap and the remaining weights are
  * renormalized; the mirror-clamp-to-border modes first mirror about the
@@ -87,12 +87,12 @@ static int tap_index(sample_wrap mode, int i, int n)
     case SAMPLE_WRAP_MIRROR_CLAMP:
     case SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER:
         if (i < 0) i = -1 - i;
-        return wrap_index(SAMPLE_WRAP_CLAMP_TO_BORDER, (double)i, n, 1);
+        return ls_wrap_index(SAMPLE_WRAP_CLAMP_TO_BORDER, (double)i, n, 1);
     case SAMPLE_WRAP_CLAMP:
     case SAMPLE_WRAP_CLAMP_TO_BORDER:
-        return wrap_index(SAMPLE_WRAP_CLAMP_TO_BORDER, (double)i, n, 1);
+        return ls_wrap_index(SAMPLE_WRAP_CLAMP_TO_BORDER, (double)i, n, 1);
     default:
-        return wrap_index(mode, (double)i, n, 0);
+        return ls_wrap_index(mode, (double)i, n, 0);
     }
 }
 
@@ -224,7 +224,7 @@ static void resample(sample_texture *tex, int k, const mip_axis *ax, const mip_a
             for (t = 0; t < ay->taps; ++t)
                 for (c = 0; c < 4; ++c) acc[c] += (double)w[t] * tmp[4 * ((size_t)iy[t] * ax->n_dst + i) + c];
             for (c = 0; c < 4; ++c) v[c] = (float)acc[c];
-            tex_encode(tex, v, D->data + (size_t)j * D->stride + (size_t)i * tex->texel_bytes);
+            ls_tex_encode(tex, v, D->data + (size_t)j * D->stride + (size_t)i * tex->texel_bytes);
         }
     }
 }
@@ -248,7 +248,7 @@ static sample_status build_level(sample_texture *tex, int k, const sample_mip_pa
 {
     const struct sample_level *S = &tex->level[k - 1];
     mip_axis ax, ay;
-    sample_status st = tex_alloc_level(tex, k, err);
+    sample_status st = ls_tex_alloc_level(tex, k, err);
     if (st != SAMPLE_OK) return st;
     tex->nlevels = k + 1;
     memset(&ax, 0, sizeof ax);
@@ -265,7 +265,7 @@ static sample_status build_level(sample_texture *tex, int k, const sample_mip_pa
     return SAMPLE_OK;
 }
 
-sample_status mip_build(sample_texture *tex, const sample_mip_params *p, sample_error *err)
+sample_status ls_mip_build(sample_texture *tex, const sample_mip_params *p, sample_error *err)
 {
     int k, full = 1, m = tex->width > tex->height ? tex->width : tex->height;
     sample_status st = SAMPLE_OK;

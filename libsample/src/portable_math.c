@@ -13,7 +13,7 @@
  */
 #include "base.h"
 
-const double sample_log2_table[128][2] = {
+const double ls_log2_table[128][2] = {
     {0x1.709c46d7aac77p-8, 0x1.fe01fe01fe020p-1}, {0x1.1363117a97b0cp-6, 0x1.fa11caa01fa12p-1},
     {0x1.c9363ba850f86p-6, 0x1.f6310aca0dbb5p-1}, {0x1.3ed3094685a26p-5, 0x1.f25f644230ab5p-1},
     {0x1.985bfc3495194p-5, 0x1.ee9c7f8458e02p-1}, {0x1.f1389833253a0p-5, 0x1.eae807aba01ebp-1},

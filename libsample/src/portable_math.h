@@ -34,10 +34,10 @@
  * x = 2^e·m, m ∈ [1, 2); c = 1 + (i + ½)/128 is the centre of m's 1/128th
  * (i: m's top seven fraction bits), so m − c is exact and |r| < 2^−8 for
  * r = (m − c)/c, and log2 m = log2 c + log2(1 + r) with log2 c from
- * sample_log2_table (portable_math.c) and log2(1 + r) = (r − r²/2 + … +
+ * ls_log2_table (portable_math.c) and log2(1 + r) = (r − r²/2 + … +
  * r⁷/7)/ln 2 (what it leaves out is below 2^−67), evaluated in Estrin's
  * order: a short dependency chain, since λ of one query waits on it. */
-extern const double sample_log2_table[128][2];
+extern const double ls_log2_table[128][2];
 
 /* The pieces of sample_log2 that lod_lanes.h's four-lane version (λ of a
  * block of queries) writes with vectors: the same constants, masks and
@@ -74,10 +74,10 @@ static inline double sample_log2(double x)
     memcpy(&m, &b, sizeof m);
     b = (b & ~((1ull << SAMPLE_LOG2_TOP7) - 1)) | SAMPLE_LOG2_MID;
     memcpy(&c, &b, sizeof c);
-    r = (m - c) * sample_log2_table[i][1];
+    r = (m - c) * ls_log2_table[i][1];
     r2 = r * r;
     p = SAMPLE_LOG2_POLY(r, r2);
-    return (double)e + (sample_log2_table[i][0] + r * p);
+    return (double)e + (ls_log2_table[i][0] + r * p);
 }
 
 /* √(x² + y²) within about 1 ulp, without overflow or underflow in between

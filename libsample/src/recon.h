@@ -1,7 +1,7 @@
 /*
  * Reconstruction on one level (reconstruct.c): NEAREST, LINEAR (GL 4.6
  * §8.14.2, eq. 8.13) and bicubic (DESIGN §4), and the arithmetic the fast
- * path shares with it (recon_bilerp, recon_blend, recon_cubic_combine), so
+ * path shares with it (recon_bilerp, recon_blend, ls_recon_cubic_combine), so
  * that both round identically.
  */
 #ifndef SAMPLE_RECON_H
@@ -12,7 +12,7 @@
 /* kind is SAMPLE_NEAREST, SAMPLE_LINEAR or SAMPLE_CUBIC. (s, t) normalized.
  * dds/ddt (may be NULL) receive ∂/∂s and ∂/∂t of the result. Returns the
  * number of texels read. */
-uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
+uint32_t ls_recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
                      float out[4], float dds[4], float ddt[4]);
 
 /* The bilinear combination of the 2 × 2 texels T[0] = (i0, j0), T[1] =
@@ -40,12 +40,12 @@ SAMPLE_FORCE_INLINE void recon_blend(float a[4], const float b[4], float f)
 }
 
 /* The texel coordinate u = s'·n of a query on an axis of n texels, after the
- * wraps that transform s (wrap_coord). s·n may overflow to ±inf for finite s
+ * wraps that transform s (ls_wrap_coord). s·n may overflow to ±inf for finite s
  * near FLT_MAX; it is kept finite so that the fractional weights stay
  * defined (α = u − ⌊u⌋ would be inf − inf). */
 static inline float recon_texel_coord(sample_wrap mode, float s, int n)
 {
-    float u = (wrap_transforms_coord(mode) ? wrap_coord(mode, s, n) : s) * (float)n;
+    float u = (wrap_transforms_coord(mode) ? ls_wrap_coord(mode, s, n) : s) * (float)n;
     return u > FLT_MAX ? FLT_MAX : (u < -FLT_MAX ? -FLT_MAX : u);
 }
 
@@ -57,12 +57,12 @@ static inline float recon_texel_coord(sample_wrap mode, float s, int n)
  * different type in each instruction-set build of the fast path (isa.c),
  * and this function is compiled once. T is only read (not const-qualified
  * because C before C23 does not convert float (*)[4] to that implicitly). */
-void recon_cubic_combine(float T[16][4], const double wx[4], const double wy[4],
+void ls_recon_cubic_combine(float T[16][4], const double wx[4], const double wy[4],
                          const double dwx[4], const double dwy[4], int clamp, float out[4],
                          float ddu[4], float ddv[4]);
 
 /* Cubic kernel weights for fractional offset f ∈ [0, 1): taps at −1, 0, 1, 2,
  * and their derivatives d/df (dw may be NULL). */
-void cubic_weights(sample_cubic kind, float f, double w[4], double dw[4]);
+void ls_cubic_weights(sample_cubic kind, float f, double w[4], double dw[4]);
 
 #endif /* SAMPLE_RECON_H */

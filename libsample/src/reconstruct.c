@@ -33,7 +33,7 @@ static void kernel(double B, double C, double x, double *k, double *dk)
     }
 }
 
-void cubic_weights(sample_cubic kind, float f, double w[4], double dw[4])
+void ls_cubic_weights(sample_cubic kind, float f, double w[4], double dw[4])
 {
     /* Taps −1, 0, 1, 2 sit at distances 1 + f, f, 1 − f, 2 − f; the
      * distance grows with f for the first two and shrinks for the others.
@@ -84,7 +84,7 @@ static uint32_t recon_linear(const sample_ctx *c, int lv, float u, float v, floa
     return 4;
 }
 
-void recon_cubic_combine(float tx[16][4], const double wx[4], const double wy[4],
+void ls_recon_cubic_combine(float tx[16][4], const double wx[4], const double wy[4],
                          const double dwx[4], const double dwy[4], int clamp, float out[4],
                          float ddu[4], float ddv[4])
 {
@@ -139,17 +139,17 @@ static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float
     double wx[4], wy[4], dwx[4], dwy[4];
     float T[16][4];
     int x, y;
-    cubic_weights(c->smp->cubic, a - i0, wx, dwx);
-    cubic_weights(c->smp->cubic, b - j0, wy, dwy);
+    ls_cubic_weights(c->smp->cubic, a - i0, wx, dwx);
+    ls_cubic_weights(c->smp->cubic, b - j0, wy, dwy);
     for (y = 0; y < 4; ++y)
         for (x = 0; x < 4; ++x)
             ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, T[4 * y + x]);
-    recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, out,
+    ls_recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, out,
                         ddu, ddv);
     return 16;
 }
 
-uint32_t recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
+uint32_t ls_recon_level(const sample_ctx *c, int lv, sample_filter kind, float s, float t,
                      float out[4], float dds[4], float ddt[4])
 {
     const struct sample_level *L = &c->tex->level[lv];

@@ -69,11 +69,11 @@ static void reference_query(const sample_ctx *c, const sample_batch_args *a, siz
     if (batch_query_finite(a, i)) {
         lam = lod_lambda(c, lod_lambda_base(c, q), a->lod_bias ? a->lod_bias[i] : 0.0f);
         if (c->smp->footprint != SAMPLE_FOOTPRINT_NONE && lam > 0.0f) {
-            filter_footprint_query(c, a, i, NULL);
+            ls_filter_footprint_query(c, a, i, NULL);
             return;
         }
         ch = lod_select(c, lam);
-        st->texels = filter_gl_levels(c, q, lam, &ch, out, dds, ddt, st);
+        st->texels = ls_filter_gl_levels(c, q, lam, &ch, out, dds, ddt, st);
         return;
     }
     batch_border(c, a, i);
@@ -108,7 +108,7 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
     sample_status st = batch_check(tex, smp, a, &run);
     if (!run) return st;
     /* The instruction set is chosen here, once per batch. */
-    ctx_init(&c, tex, smp, isa_kernels_active());
+    ls_ctx_init(&c, tex, smp, ls_isa_kernels_active());
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
     if (fast)
         fast(&c, a);
@@ -124,7 +124,7 @@ sample_status sample_batch_reference(const sample_texture *tex, const sample_sam
     int run;
     sample_status st = batch_check(tex, smp, a, &run);
     if (!run) return st;
-    ctx_init(&c, tex, smp, &isa_kernels_reference);
+    ls_ctx_init(&c, tex, smp, &ls_isa_kernels_reference);
     reference_batch(&c, a);
     return SAMPLE_OK;
 }

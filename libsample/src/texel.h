@@ -25,13 +25,13 @@ struct sample_texture {
 
 /* The exact sRGB EOTF for each 8-bit code ([0]) and c / 255 ([1]), one
  * array (color.c). */
-extern const float sample_u8_decode[2][256];
-#define sample_srgb_table (sample_u8_decode[0])
-#define sample_unorm8_table (sample_u8_decode[1])
+extern const float ls_u8_decode[2][256];
+#define ls_srgb_table (ls_u8_decode[0])
+#define ls_unorm8_table (ls_u8_decode[1])
 /* The 8-bit sRGB code of a linear value, rounded to nearest in the encoded
  * domain (color.c; no libm); what the mip builder writes into sRGB8
  * levels. */
-unsigned char sample_srgb_encode8(float v);
+unsigned char ls_srgb_encode8(float v);
 
 /* Decode one texel at p to linear RGBA with the OpenGL channel expansion
  * (missing G, B → 0, missing A → 1). With `format` and `nc` constants (the
@@ -67,14 +67,14 @@ SAMPLE_FORCE_INLINE v4f tex_decode_v4(sample_format format, int nc, const unsign
     }
     case SAMPLE_FORMAT_UNORM8:
         /* c / 255 correctly rounded (GL 4.6 eq. 2.1), from a table. */
-        return v4_set(sample_unorm8_table[p[0]], nc > 1 ? sample_unorm8_table[p[1]] : 0.0f,
-                      nc > 2 ? sample_unorm8_table[p[2]] : 0.0f,
-                      nc > 3 ? sample_unorm8_table[p[3]] : 1.0f);
+        return v4_set(ls_unorm8_table[p[0]], nc > 1 ? ls_unorm8_table[p[1]] : 0.0f,
+                      nc > 2 ? ls_unorm8_table[p[2]] : 0.0f,
+                      nc > 3 ? ls_unorm8_table[p[3]] : 1.0f);
     case SAMPLE_FORMAT_SRGB8:
         /* Alpha of an sRGB format is linear (GL 4.6 §8.24). */
-        return v4_set(sample_srgb_table[p[0]], nc > 1 ? sample_srgb_table[p[1]] : 0.0f,
-                      nc > 2 ? sample_srgb_table[p[2]] : 0.0f,
-                      nc > 3 ? sample_unorm8_table[p[3]] : 1.0f);
+        return v4_set(ls_srgb_table[p[0]], nc > 1 ? ls_srgb_table[p[1]] : 0.0f,
+                      nc > 2 ? ls_srgb_table[p[2]] : 0.0f,
+                      nc > 3 ? ls_unorm8_table[p[3]] : 1.0f);
     default:
         return v4_set(0.0f, 0.0f, 0.0f, 1.0f);
     }
@@ -90,9 +90,9 @@ static inline void tex_decode(const sample_texture *tex, const struct sample_lev
 
 /* Encode linear RGBA (first `channels` values) into one texel of the
  * texture's format; used by the pyramid builder. */
-void tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst);
+void ls_tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst);
 
 /* Allocate level k's storage (size from the level rule); tex->bytes updated. */
-sample_status tex_alloc_level(sample_texture *tex, int k, sample_error *err);
+sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err);
 
 #endif /* SAMPLE_TEXEL_H */

@@ -72,7 +72,7 @@ static sample_status check_image(const sample_image *im, const char *what, sampl
     return SAMPLE_OK;
 }
 
-sample_status tex_alloc_level(sample_texture *tex, int k, sample_error *err)
+sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err)
 {
     struct sample_level *L = &tex->level[k];
     size_t bytes;
@@ -127,14 +127,14 @@ sample_status sample_texture_create(const sample_image *image, const sample_mip_
     }
     tex = tex_new(image);
     RETURN_ERROR_IF(!tex, err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture object");
-    if ((st = tex_alloc_level(tex, 0, err)) != SAMPLE_OK) {
+    if ((st = ls_tex_alloc_level(tex, 0, err)) != SAMPLE_OK) {
         free(tex);
         return st;
     }
     tex->nlevels = 1;
     copy_image(&tex->level[0], tex->texel_bytes, image);
     if (mip && mip->filter != SAMPLE_MIPGEN_NONE) {
-        if ((st = mip_build(tex, mip, err)) != SAMPLE_OK) {
+        if ((st = ls_mip_build(tex, mip, err)) != SAMPLE_OK) {
             sample_texture_destroy(tex);
             return st;
         }
@@ -177,7 +177,7 @@ sample_status sample_texture_create_levels(const sample_image *levels, int count
     tex = tex_new(&levels[0]);
     RETURN_ERROR_IF(!tex, err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture object");
     for (k = 0; k < count; ++k) {
-        if ((st = tex_alloc_level(tex, k, err)) != SAMPLE_OK) {
+        if ((st = ls_tex_alloc_level(tex, k, err)) != SAMPLE_OK) {
             sample_texture_destroy(tex);
             return st;
         }
@@ -236,7 +236,7 @@ static unsigned char to_u8(float v)
     return (unsigned char)(v * 255.0f + 0.5f);
 }
 
-void tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst)
+void ls_tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst)
 {
     int c;
     for (c = 0; c < tex->channels; ++c) {
@@ -249,7 +249,7 @@ void tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst
         }
         case SAMPLE_FORMAT_UNORM8: dst[c] = to_u8(in[c]); break;
         case SAMPLE_FORMAT_SRGB8:
-            dst[c] = c < 3 ? sample_srgb_encode8(in[c]) : to_u8(in[c]);
+            dst[c] = c < 3 ? ls_srgb_encode8(in[c]) : to_u8(in[c]);
             break;
         default: break;
         }

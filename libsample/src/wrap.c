@@ -10,7 +10,7 @@
 
 #include <float.h>
 
-float wrap_coord(sample_wrap mode, float s, int n)
+float ls_wrap_coord(sample_wrap mode, float s, int n)
 {
     float lo = 0.5f / (float)n, a = fabsf(s);
     switch (mode) {
@@ -35,7 +35,7 @@ static double clampd(double i, double lo, double hi) { return i < lo ? lo : (i >
 /* mirror(a) of table 8.20: reflects negative indices about −½. */
 static double mirror(double a) { return a >= 0.0 ? a : -(1.0 + a); }
 
-int wrap_index(sample_wrap mode, double i, int n, int linear)
+int ls_wrap_index(sample_wrap mode, double i, int n, int linear)
 {
     double nd = (double)n;
     /* Every mode maps an in-range index to itself; most reads are in range,

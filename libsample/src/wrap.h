@@ -11,9 +11,9 @@
 /* Wrap modes that transform the coordinate before indexing (GL_CLAMP and the
  * EXT mirror-clamps) do it here: s → s', normalized, for an axis of n texels.
  * Other modes return s unchanged. NaN must be rejected before. */
-float wrap_coord(sample_wrap mode, float s, int n);
+float ls_wrap_coord(sample_wrap mode, float s, int n);
 
-/* Whether `mode` transforms the coordinate (wrap_coord) before indexing:
+/* Whether `mode` transforms the coordinate (ls_wrap_coord) before indexing:
  * legacy CLAMP and the EXT mirror-clamps (DESIGN §3). A predicate, so that
  * nothing depends on the enum's numeric order. */
 static inline int wrap_transforms_coord(sample_wrap mode)
@@ -33,6 +33,6 @@ static inline int wrap_transforms_coord(sample_wrap mode)
  * texel index in [0, n), or −1 for "border colour". `linear` selects the
  * LINEAR/footprint rule of legacy CLAMP (clamp to [−1, n]) instead of the
  * NEAREST rule (clamp to [0, n−1]). */
-int wrap_index(sample_wrap mode, double i, int n, int linear);
+int ls_wrap_index(sample_wrap mode, double i, int n, int linear);
 
 #endif /* SAMPLE_WRAP_H */

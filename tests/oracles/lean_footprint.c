@@ -208,7 +208,7 @@ static double ewa_w(double r2)
     double x = (r2 > 0.0 ? r2 : 0.0) * 128.0;
     int k = (int)x;
     if (k > 127) k = 127;
-    return fp_ewa_lut[k] + (x - k) * (fp_ewa_lut[k + 1] - fp_ewa_lut[k]);
+    return ls_fp_ewa_lut[k] + (x - k) * (ls_fp_ewa_lut[k + 1] - ls_fp_ewa_lut[k]);
 }
 
 static void walk_scalar_ewa(const lv_plan *e, double s[5])
@@ -287,7 +287,7 @@ LEAN_TARGET static void walk_avx512_ewa(const lv_plan *e, double s[5])
             __mmask8 in = _mm512_cmp_pd_mask(r2, one, _CMP_LT_OQ);
             __m512d x = _mm512_mul_pd(_mm512_max_pd(r2, zero), k128);
             __m256i k = _mm256_min_epi32(_mm512_cvttpd_epi32(_mm512_maskz_mov_pd(in, x)), top);
-            __m512d l0 = _mm512_i32gather_pd(k, fp_ewa_lut, 8), l1 = _mm512_i32gather_pd(k, fp_ewa_lut + 1, 8);
+            __m512d l0 = _mm512_i32gather_pd(k, ls_fp_ewa_lut, 8), l1 = _mm512_i32gather_pd(k, ls_fp_ewa_lut + 1, 8);
             __m512d w = _mm512_add_pd(l0, _mm512_mul_pd(_mm512_sub_pd(x, _mm512_cvtepi32_pd(k)), _mm512_sub_pd(l1, l0)));
             if (ncol > 8) ncol = 8;
             add8(acc, _mm512_maskz_mov_pd(in, w), texel_in(e, i, j), ncol);
