@@ -140,7 +140,7 @@ SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, i
  * Both are asked for even when they share a line. Testing for that (a
  * second prefetch of a line in flight takes a slot in the miss queue) cost
  * more than it saved: the test depends on where the query falls, and its
- * mispredictions made trilinear 27 % slower (doc/performance-passes.md, sixth pass). */
+ * mispredictions made trilinear 27 % slower (measured: doc/history/performance-passes.md). */
 SAMPLE_FORCE_INLINE void prefetch_run(const unsigned char *r, int c0, int c1, int n, size_t tb)
 {
     if (c0 >= 0) SAMPLE_PREFETCH(r + (size_t)c0 * tb);
@@ -428,7 +428,7 @@ SAMPLE_FORCE_INLINE void plan_taps(const sample_ctx *c, const sample_query *q, s
  * w − 2 — so the same bits; a u that recon_texel_coord would clamp is
  * ±inf here and fails the test. Any other query, or level, goes through
  * plan_taps. Only where the build has AVX2 (256-bit integer lanes;
- * doc/performance-passes.md, twelfth pass). */
+ * measured in doc/history/performance-passes.md). */
 
 SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, size_t tb, int linear, int which,
                                     fast_plan *pl)
@@ -495,7 +495,7 @@ SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, 
 /* plan_taps of level `which` for queries 0 … m − 1 of a finite block;
  * four at a time for float and half texels only: with 8-bit texels the
  * query is bound by their decode, and planning in lanes measured 1–2 %
- * slower there (doc/performance-passes.md, twelfth pass). */
+ * slower there (measured: doc/history/performance-passes.md). */
 SAMPLE_FORCE_INLINE void plan_taps_block(const sample_ctx *c, const sample_query *q, size_t m, sample_format fmt,
                                          size_t tb, int linear, int which, fast_plan *pl)
 {
@@ -658,7 +658,7 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
         /* Each block's lines, the first and last byte of both rows. No
          * test for a line asked for already (prefetch_run): which lines
          * repeat depends on the data, and the branches mispredicted so
-         * often that the query took 45 % longer (doc/performance-passes.md, sixth pass). */
+         * often that the query took 45 % longer (measured: doc/history/performance-passes.md). */
         for (k = 0; k < n; ++k) {
             const unsigned char *p = L->data + (size_t)jj[k] * L->stride + (size_t)ii[k] * tb;
             at->p[lv][k] = p;
@@ -782,7 +782,7 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
              * next: short loops whose iterations the processor overlaps,
              * where plan_query's one long chain of dependent steps (λ, the
              * levels, each level's addresses) kept about one query in
-             * flight (doc/performance-passes.md, eleventh pass). */
+             * flight (measured: doc/history/performance-passes.md). */
             plan_gl_lods(c, a, i, m, fixed, plan);
             plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 0, plan);
             plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 1, plan);
@@ -833,7 +833,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
          * geometry and counting pass, which finds and prefetches its rows
          * — is made while the query before it runs, so its lines arrive
          * during that query's accumulation. Deeper filter plans measured
-         * the same (doc/performance-passes.md) and each is FP_PLAN_BYTES. */
+         * the same (doc/history/performance-passes.md) and each is FP_PLAN_BYTES. */
         fast_plan ring[FAST_AHEAD_FP];
         fp_plan fpl[2];
         size_t ahead = a->count < FAST_AHEAD_FP ? a->count : FAST_AHEAD_FP;

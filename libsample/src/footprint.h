@@ -3,7 +3,7 @@
  * files) — the footprint's shape and level, the weighted sums, the
  * counting pass's row spans, the walk over a level's rows and the level
  * loop split into plan and run. DESIGN §7, doc/footprint-filters.md,
- * doc/performance.md and doc/performance-passes.md.
+ * doc/performance.md and doc/history/performance-passes.md.
  */
 #ifndef SAMPLE_FOOTPRINT_H
 #define SAMPLE_FOOTPRINT_H
@@ -159,7 +159,7 @@ static inline void fp_query_jacobian(const sample_query *q, double J[2][2])
 /* A level's rows as the footprint filters walk them. A walk row is a row of
  * the level, or, when the footprint is taller than it is wide, a column
  * (`tr`): the walk costs per row about as much as per texel (the span, its
- * memo, the loop; doc/performance-passes.md, ninth pass), and an ellipse steeper
+ * memo, the loop; measured in doc/history/performance-passes.md), and an ellipse steeper
  * than 45° has fewer columns than rows. In the walk's frame everything is
  * named as for rows: walk row j (jlo … jlo + nrows − 1) holds texels ilo,
  * ilo + 1, … `pitch` bytes apart, walk rows are `lstride` bytes apart,
@@ -184,8 +184,7 @@ typedef struct fp_level_rows {
 /* Whether a footprint extending ±√u2 texels in u and ±√v2 in v is walked
  * by columns: where that saves a quarter of the lines or more. Near round
  * footprints keep the rows, whose prefetches cover a line at a time and
- * whose texels other formats decode in one go (doc/performance-passes.md, ninth
- * pass). */
+ * whose texels other formats decode in one go (doc/history/performance-passes.md). */
 static inline int fp_walk_columns(double u2, double v2) { return u2 < 0.5625 * v2; }
 
 /* lr for level lv walked by rows (tr = 0) or by columns (tr = 1), the

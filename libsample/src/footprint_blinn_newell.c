@@ -24,7 +24,7 @@
 
 /* One level's footprint in texels of that level. fp_run visits each level
  * twice (count, then accumulate); the second visit reuses the first's
- * arithmetic (as EWA's memo, doc/performance-passes.md). */
+ * arithmetic (as EWA's memo, doc/history/performance-passes.md). */
 typedef struct bn_level_geom {
     int lv;   /* −1: empty */
     int fail; /* the level cannot be filtered (unbounded or singular) */

@@ -15,7 +15,7 @@
  * texels of a row, and each texel's four channels are added as one vector.
  * The other builds (portable, SSE2) run the same formulas one lane at a
  * time: 4-lane doubles on SSE2 are register pairs, and measured slower
- * there than one lane (doc/performance-passes.md, seventh pass).
+ * there than one lane (measured: doc/history/performance-passes.md).
  *
  * Every operation is lane-wise IEEE (no FMA: -ffp-contract=off, and none
  * is written), spans and weights are formed by the same expressions in the

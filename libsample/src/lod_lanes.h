@@ -4,7 +4,7 @@
  * 256-bit double vectors: lod_lambda_base (internal.h) four times over, to
  * the bit. For the fast path's block passes (fast_gl.c, gl_blocks), where
  * λ was a fifth of a trilinear query's instructions, most of it
- * sample_log2 (doc/performance-passes.md, twelfth pass).
+ * sample_log2 (measured: doc/history/performance-passes.md).
  *
  * Same bits, by construction: each lane runs lod_log2_rho's and
  * sample_log2's operations in their order — the widening, the products

@@ -3,7 +3,7 @@
  * engines.c, timing.c) but not OpenImageIO or textures.c: the definitions
  * they refer to, with every OIIO call failing ("not built with OIIO").
  * Included by exactly one translation unit of such a program (the probes
- * in scripts/, tests/bench_timer.c).
+ * dev/perf_probe.c, tests/oracles/lean_footprint.c, tests/bench_timer.c).
  */
 #ifndef BENCH_NO_OIIO_H
 #define BENCH_NO_OIIO_H

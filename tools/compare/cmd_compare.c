@@ -1,5 +1,5 @@
 /*
- * texsample compare (issue 7): every filter configuration against the
+ * texsample compare: every filter configuration against the
  * ground truth of DESIGN §8, in pictures and numbers (doc/comparison.md).
  * For each scene: one ray cast per pixel (view.c), the ground truth
  * (truth.c), each configuration (run.c, oiio.c), metrics (metrics.c), the

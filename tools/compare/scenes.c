@@ -1,5 +1,5 @@
 /*
- * The comparison set of issue 7: the renderer's built-in checkerboard plane
+ * The comparison set: the renderer's built-in checkerboard plane
  * to the horizon, grid teapot, teapot with the photograph and photograph on
  * a tilted plane ("teapot-image", "photo-plane": testimages/photo.jpg of the
  * source tree, read through libsample_io), and one scene of compare's own,

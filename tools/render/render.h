@@ -66,7 +66,7 @@ int render_scene_parse(const char *json, size_t len, int width, int height,
 
 /* What the parser may do. Everything a scene makes it compute or allocate
  * up front is bounded by these, so that no scene text can stall or exhaust
- * the process while it is being built (issue 9). */
+ * the process while it is being built. */
 typedef struct render_parse_options {
     const char *base_dir; /* image "file"s are relative to it; NULL: working directory */
     int images;           /* 1 (default): load image textures; 0: refuse them */

@@ -273,7 +273,7 @@ typedef struct rn_light {
 } rn_light;
 
 #define RN_MAX_LIGHTS 8
-/* Scene-file limits (issue 9): far above what a texture test scene needs,
+/* Scene-file limits: far above what a texture test scene needs,
  * low enough that memory and the per-sample search (linear in objects and
  * polygons) stay bounded. A teapot holds ~250 KB of patch data. */
 #define RN_MAX_OBJECTS 1024
