@@ -25,12 +25,13 @@
 #include <cpuid.h>
 #endif
 
-static const char *const isa_names[SAMPLE_ISA_COUNT] = {
+static const char *const isa_names[] = {
     [SAMPLE_ISA_SCALAR] = "scalar",
     [SAMPLE_ISA_SSE2] = "sse2",
     [SAMPLE_ISA_AVX2] = "avx2",
     [SAMPLE_ISA_AVX512] = "avx512",
 };
+_Static_assert(sizeof isa_names / sizeof isa_names[0] == SAMPLE_ISA_COUNT, "one name per instruction set");
 
 /* The tables this build made; NULL where it made none. */
 static const isa_kernels *const isa_tables[SAMPLE_ISA_COUNT] = {

@@ -12,10 +12,11 @@
  * malloc might grant it: 16 GiB. */
 #define SAMPLE_MAX_TEXTURE_BYTES ((uint64_t)1 << 34)
 
-static const size_t format_bytes[SAMPLE_FORMAT_COUNT] = {
+static const size_t format_bytes[] = {
     [SAMPLE_FORMAT_F32] = 4, [SAMPLE_FORMAT_F16] = 2,
     [SAMPLE_FORMAT_UNORM8] = 1, [SAMPLE_FORMAT_SRGB8] = 1,
 };
+_Static_assert(sizeof format_bytes / sizeof format_bytes[0] == SAMPLE_FORMAT_COUNT, "one size per format");
 
 size_t sample_format_bytes(sample_format f)
 {

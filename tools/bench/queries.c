@@ -17,13 +17,14 @@ const char *const bench_set_names[BENCH_SET_COUNT] = {
     [BENCH_SET_SHUFFLED] = "plane-shuffled",
 };
 
-const unsigned bench_set_seeds[BENCH_SET_COUNT] = {
+const unsigned bench_set_seeds[] = {
     [BENCH_SET_MAGNIFY] = 1,
     [BENCH_SET_MINIFY] = 2,
     [BENCH_SET_ANISO] = 3,
     [BENCH_SET_PLANE] = 0,
     [BENCH_SET_SHUFFLED] = 4,
 };
+_Static_assert(sizeof bench_set_seeds / sizeof bench_set_seeds[0] == BENCH_SET_COUNT, "one seed per set");
 
 /* splitmix64 (Steele, Lea, Flood 2014): a fixed sequence on every platform. */
 static uint64_t next(uint64_t *state)
