@@ -69,6 +69,18 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* SAMPLE_API marks every public function. The library is compiled with
+ * -fvisibility=hidden, so these are the only symbols libsample.so exports;
+ * its build defines SAMPLE_BUILDING_SHARED. Empty for the static library,
+ * for programs using either, and for compilers other than GCC and Clang. */
+#ifndef SAMPLE_API
+#if defined(SAMPLE_BUILDING_SHARED) && (defined(__GNUC__) || defined(__clang__))
+#define SAMPLE_API __attribute__((visibility("default")))
+#else
+#define SAMPLE_API
+#endif
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -102,7 +114,7 @@ typedef enum sample_status {
 } sample_status;
 
 /* A short, static, English name of a status ("invalid argument"). */
-const char *sample_strerror(sample_status status);
+SAMPLE_API const char *sample_strerror(sample_status status);
 
 /* Optional detail for creation calls: pass NULL if not wanted. */
 typedef struct sample_error {
@@ -113,12 +125,12 @@ typedef struct sample_error {
 /* Fill `err` (if not NULL) with a status and a printf-style message, and
  * return the status: how libsample and libraries built on it (libsample_io)
  * report errors in one way. */
-sample_status sample_error_set(sample_error *err, sample_status status, const char *fmt, ...)
+SAMPLE_API sample_status sample_error_set(sample_error *err, sample_status status, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-sample_status sample_error_vset(sample_error *err, sample_status status, const char *fmt, va_list ap);
+SAMPLE_API sample_status sample_error_vset(sample_error *err, sample_status status, const char *fmt, va_list ap);
 
 /* ---- Textures ---------------------------------------------------------- */
 
@@ -131,7 +143,7 @@ typedef enum sample_format {
 } sample_format;
 
 /* Bytes of one channel of a format (4, 2, 1, 1). */
-size_t sample_format_bytes(sample_format format);
+SAMPLE_API size_t sample_format_bytes(sample_format format);
 
 /* A caller-owned image: the library copies what it needs. */
 typedef struct sample_image {
@@ -171,23 +183,23 @@ typedef struct sample_mip_params {
     int max_levels;       /* 0 = all the way to 1×1 */
 } sample_mip_params;
 
-void sample_mip_params_init(sample_mip_params *params);
+SAMPLE_API void sample_mip_params_init(sample_mip_params *params);
 
 typedef struct sample_texture sample_texture;
 
 /* Copy `image` into a new texture and, unless mip is NULL or mip->filter is
  * SAMPLE_MIPGEN_NONE, build its pyramid. */
-sample_status sample_texture_create(const sample_image *image,
+SAMPLE_API sample_status sample_texture_create(const sample_image *image,
                                     const sample_mip_params *mip,
                                     sample_texture **out, sample_error *err);
 
 /* Create from caller-supplied levels (e.g. read from a mip-mapped file).
  * levels[k] must be max(1, ⌊w/2^k⌋) × max(1, ⌊h/2^k⌋) with the same channel
  * count and format as levels[0]. A partial chain (count < full) is allowed. */
-sample_status sample_texture_create_levels(const sample_image *levels, int count,
+SAMPLE_API sample_status sample_texture_create_levels(const sample_image *levels, int count,
                                            sample_texture **out, sample_error *err);
 
-void sample_texture_destroy(sample_texture *tex); /* accepts NULL */
+SAMPLE_API void sample_texture_destroy(sample_texture *tex); /* accepts NULL */
 
 typedef struct sample_texture_info {
     int width, height, channels, levels;
@@ -195,12 +207,12 @@ typedef struct sample_texture_info {
     size_t bytes; /* texel memory held, all levels */
 } sample_texture_info;
 
-void sample_texture_info_get(const sample_texture *tex, sample_texture_info *info);
+SAMPLE_API void sample_texture_info_get(const sample_texture *tex, sample_texture_info *info);
 /* Size of level k (0 ≤ k < levels); returns 0 and zeros if k is out of range. */
-int sample_texture_level_size(const sample_texture *tex, int level, int *w, int *h);
+SAMPLE_API int sample_texture_level_size(const sample_texture *tex, int level, int *w, int *h);
 /* Decoded linear RGBA float of texel (i, j) of a level, no wrapping: for
  * tests and tools, not for sampling loops. Out-of-range gives 0. */
-void sample_texture_texel(const sample_texture *tex, int level, int i, int j, float rgba[4]);
+SAMPLE_API void sample_texture_texel(const sample_texture *tex, int level, int i, int j, float rgba[4]);
 
 /* ---- Sampler state (mirrors an OpenGL sampler object) ------------------- */
 
@@ -268,9 +280,9 @@ typedef struct sample_sampler {
 } sample_sampler;
 
 /* OpenGL's initial sampler-object state (GL 4.6 table 23.18). */
-void sample_sampler_init(sample_sampler *sampler);
+SAMPLE_API void sample_sampler_init(sample_sampler *sampler);
 /* Checks enums and ranges; sample_batch() calls it too. */
-sample_status sample_sampler_validate(const sample_sampler *sampler);
+SAMPLE_API sample_status sample_sampler_validate(const sample_sampler *sampler);
 
 /* ---- Queries ----------------------------------------------------------- */
 
@@ -311,42 +323,42 @@ typedef struct sample_batch_args {
 /* Sample `count` queries. Results are bit-for-bit independent of how a job is
  * split into batches or threads. Derivatives are of the filtered result with
  * respect to (s, t) at fixed footprint; NEAREST gives 0. */
-sample_status sample_batch(const sample_texture *tex, const sample_sampler *sampler,
+SAMPLE_API sample_status sample_batch(const sample_texture *tex, const sample_sampler *sampler,
                            const sample_batch_args *args);
 
 /* One query; a thin wrapper over sample_batch(). */
-sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,
+SAMPLE_API sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,
                          const sample_query *query, float rgba[4]);
 
 /* The instruction set sampling runs on in this process (section 6):
  * "scalar", "sse2", "avx2" or "avx512". Static string; decides the choice
  * if no sampling has yet. For tools to print what ran; results do not
  * depend on it. */
-const char *sample_isa_name(void);
+SAMPLE_API const char *sample_isa_name(void);
 
 /* ---- Names ------------------------------------------------------------- */
 
 /* Lower-case names as the command line spells them ("clamp_to_edge",
  * "linear_mipmap_linear", "catmull-rom", "blinn-newell"). Parsing returns −1
  * for an unknown name. */
-const char *sample_wrap_name(sample_wrap wrap);
-int sample_wrap_parse(const char *name);
-const char *sample_filter_name(sample_filter filter);
-int sample_filter_parse(const char *name);
-const char *sample_cubic_name(sample_cubic cubic);
-int sample_cubic_parse(const char *name);
-const char *sample_footprint_name(sample_footprint footprint);
-int sample_footprint_parse(const char *name);
-const char *sample_mipgen_name(sample_mipgen mipgen);
-int sample_mipgen_parse(const char *name);
-const char *sample_format_name(sample_format format);
+SAMPLE_API const char *sample_wrap_name(sample_wrap wrap);
+SAMPLE_API int sample_wrap_parse(const char *name);
+SAMPLE_API const char *sample_filter_name(sample_filter filter);
+SAMPLE_API int sample_filter_parse(const char *name);
+SAMPLE_API const char *sample_cubic_name(sample_cubic cubic);
+SAMPLE_API int sample_cubic_parse(const char *name);
+SAMPLE_API const char *sample_footprint_name(sample_footprint footprint);
+SAMPLE_API int sample_footprint_parse(const char *name);
+SAMPLE_API const char *sample_mipgen_name(sample_mipgen mipgen);
+SAMPLE_API int sample_mipgen_parse(const char *name);
+SAMPLE_API const char *sample_format_name(sample_format format);
 
 /* ---- Colour helpers ---------------------------------------------------- */
 
-float sample_srgb_to_linear(float v); /* exact sRGB EOTF (IEC 61966-2-1) */
-float sample_linear_to_srgb(float v); /* its inverse */
-float sample_half_to_float(uint16_t h);
-uint16_t sample_float_to_half(float f); /* round to nearest even */
+SAMPLE_API float sample_srgb_to_linear(float v); /* exact sRGB EOTF (IEC 61966-2-1) */
+SAMPLE_API float sample_linear_to_srgb(float v); /* its inverse */
+SAMPLE_API float sample_half_to_float(uint16_t h);
+SAMPLE_API uint16_t sample_float_to_half(float f); /* round to nearest even */
 
 #ifdef __cplusplus
 }

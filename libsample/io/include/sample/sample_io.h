@@ -47,6 +47,17 @@
 
 #include <stddef.h>
 
+/* SAMPLE_IO_API marks every public function of libsample_io, as SAMPLE_API
+ * does libsample's (sample.h): the only symbols libsample_io.so exports;
+ * its build defines SAMPLE_IO_BUILDING_SHARED. */
+#ifndef SAMPLE_IO_API
+#if defined(SAMPLE_IO_BUILDING_SHARED) && (defined(__GNUC__) || defined(__clang__))
+#define SAMPLE_IO_API __attribute__((visibility("default")))
+#else
+#define SAMPLE_IO_API
+#endif
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -70,12 +81,12 @@ typedef struct sample_io_options {
 
 #define SAMPLE_IO_DEFAULT_MAX_BYTES ((size_t)1 << 32) /* 4 GiB */
 
-void sample_io_options_init(sample_io_options *o);
+SAMPLE_IO_API void sample_io_options_init(sample_io_options *o);
 
 /* Read an image file into a new texture. `o` may be NULL (defaults).
  * `mip` is used when the file has no levels (or use_file_levels is 0);
  * NULL keeps the base level only. */
-sample_status sample_io_read_texture(const char *path, const sample_io_options *o,
+SAMPLE_IO_API sample_status sample_io_read_texture(const char *path, const sample_io_options *o,
                                      const sample_mip_params *mip, sample_texture **out,
                                      sample_error *err);
 
@@ -83,7 +94,7 @@ sample_status sample_io_read_texture(const char *path, const sample_io_options *
  * extension ("png", ".exr", "x.tif") naming the format; NULL lets
  * OpenImageIO guess from the bytes. Formats whose OpenImageIO reader cannot
  * read from memory give SAMPLE_E_UNSUPPORTED. */
-sample_status sample_io_read_memory(const void *data, size_t size, const char *format_hint,
+SAMPLE_IO_API sample_status sample_io_read_memory(const void *data, size_t size, const char *format_hint,
                                     const sample_io_options *o, const sample_mip_params *mip,
                                     sample_texture **out, sample_error *err);
 
@@ -106,22 +117,22 @@ typedef struct sample_io_write_options {
     const char *ocio_config; /* as in sample_io_options */
 } sample_io_write_options;
 
-void sample_io_write_options_init(sample_io_write_options *o);
+SAMPLE_IO_API void sample_io_write_options_init(sample_io_write_options *o);
 
 /* Write w × h linear RGBA floats (rgba[4·(y·w + x)], row 0 = t = 0 = the
  * file's first stored row) as a picture with 3 or 4 channels. colorspace
  * NULL chooses by extension: .exr linear half, .png/.jpg/... sRGB 8-bit.
  * Integer types are clamped to [0, 1] and rounded to nearest; NaN → 0. */
-sample_status sample_io_write_image(const char *path, const float *rgba, int w, int h,
+SAMPLE_IO_API sample_status sample_io_write_image(const char *path, const float *rgba, int w, int h,
                                     int channels_to_write, const char *colorspace,
                                     sample_error *err);
-sample_status sample_io_write_image_ex(const char *path, const float *rgba, int w, int h,
+SAMPLE_IO_API sample_status sample_io_write_image_ex(const char *path, const float *rgba, int w, int h,
                                        int channels_to_write, const sample_io_write_options *o,
                                        sample_error *err);
 
 /* Write a float OpenEXR with `nchannels` named channels (any names, e.g.
  * "ds", "dt", "lod"), data[(y·w + x)·nchannels + c]; no colour conversion. */
-sample_status sample_io_write_channels(const char *path, const float *data, int w, int h,
+SAMPLE_IO_API sample_status sample_io_write_channels(const char *path, const float *data, int w, int h,
                                        int nchannels, const char *const *names,
                                        sample_error *err);
 
@@ -136,13 +147,13 @@ typedef struct sample_io_exr_options {
     void *progress_user;
 } sample_io_exr_options;
 
-void sample_io_exr_options_init(sample_io_exr_options *o);
+SAMPLE_IO_API void sample_io_exr_options_init(sample_io_exr_options *o);
 
 /* Write every level of `tex` (decoded to linear values) as a tiled OpenEXR:
  * MIPMAP_LEVELS with ROUND_DOWN sizes when the texture has its full chain,
  * ONE_LEVEL when it has only its base; a partial chain is refused.
  * Channels are R, G, B, A (as many as the texture has). `o` may be NULL. */
-sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex,
+SAMPLE_IO_API sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex,
                                       const sample_io_exr_options *o, sample_error *err);
 
 #ifdef __cplusplus
