@@ -37,6 +37,10 @@ static char *slurp(const char *name)
     return check_slurp(p, NULL);
 }
 
+/* Names are at most TOOL_FILTER_NAME_MAX − 1 = 47 characters: the commands
+ * below print them with %.47s, which also tells GCC their length. */
+_Static_assert(TOOL_FILTER_NAME_MAX == 48, "the %.47s below");
+
 /* Every pick the registry has: each entry, then each twin. */
 static int all_picks(tool_pick *out)
 {
@@ -236,7 +240,7 @@ static void lookup_runs(void)
     }
     n = check_help("lookup", "Registry filters", 0, names, dflt);
     for (k = 0; k < n; ++k) {
-        snprintf(args, sizeof args, "lookup --raw tex.raw --w 4 --h 4 --queries q.raw --filter %s", names[k]);
+        snprintf(args, sizeof args, "lookup --raw tex.raw --w 4 --h 4 --queries q.raw --filter %.47s", names[k]);
         CHECK(run(args) == 0, "lookup --filter %s", names[k]);
     }
     /* An alias samples as its entry and says which it is. */
@@ -261,7 +265,7 @@ static void bench_runs(void)
     n = check_help("bench", "\nFilters:\n", 0, names, dflt);
     for (k = 0; k < n; ++k) {
         snprintf(args, sizeof args,
-                 "bench --filters %s --size 16 --queries 16 --runs 1 --threads 1 --sets magnify "
+                 "bench --filters %.47s --size 16 --queries 16 --runs 1 --threads 1 --sets magnify "
                  "--formats float --no-oiio --json -", names[k]);
         CHECK(run(args) == 0, "bench --filters %s", names[k]);
     }
@@ -288,7 +292,7 @@ static void freq_runs(void)
     n = check_help("freq", "Filters (", accept, names, dflt);
     for (k = 0; k < n; ++k) {
         snprintf(args, sizeof args,
-                 "freq --filters %s --quick --m 2 --theta 0 --r 1 --size 16 --step 0.5 --fmax 1 "
+                 "freq --filters %.47s --quick --m 2 --theta 0 --r 1 --size 16 --step 0.5 --fmax 1 "
                  "--width 2 --phases 2 --no-png --out f", names[k]);
         CHECK(run(args) == 0, "freq --filters %s", names[k]);
     }
@@ -310,7 +314,7 @@ static void compare_runs(void)
     n = check_help("compare", "--configs", TOOL_PICK_OIIO | TOOL_PICK_CORNERS, names, dflt);
     for (k = 0; k < n; ++k) {
         snprintf(args, sizeof args,
-                 "compare --scene plane --size 8 --truth-samples 2 --threads 1 --configs %s --out c",
+                 "compare --scene plane --size 8 --truth-samples 2 --threads 1 --configs %.47s --out c",
                  names[k]);
         CHECK(run(args) == 0, "compare --configs %s", names[k]);
     }
