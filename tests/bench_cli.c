@@ -22,30 +22,21 @@ static const char *exe, *dir;
 static int run(const char *args)
 {
     char cmd[2048];
-    int st;
     snprintf(cmd, sizeof cmd, "cd '%s' && '%s' bench %s >out.txt 2>err.txt", dir, exe, args);
-    st = system(cmd);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
-
-static char *slurp(const char *name)
-{
-    char p[1024];
-    snprintf(p, sizeof p, "%s/%s", dir, name);
-    return check_slurp(p, NULL);
+    return check_shell(cmd);
 }
 
 static void help_and_usage(void)
 {
     char *out;
     CHECK(run("--help") == 0, "--help exits 0");
-    out = slurp("out.txt");
+    out = check_slurp_in(dir, "out.txt");
     CHECK(out && strstr(out, "usage: texsample bench") != NULL, "help text");
     free(out);
     CHECK(run("--frobnicate") == 2, "unknown option exits 2");
     CHECK(run("--runs 0") == 2, "--runs 0 exits 2");
     CHECK(run("--sets magnify,nope") == 2, "unknown set exits 2");
-    out = slurp("err.txt");
+    out = check_slurp_in(dir, "err.txt");
     CHECK(out && strstr(out, "nope") != NULL, "the message names the bad set");
     free(out);
     CHECK(run("--json") == 2, "--json without a file exits 2");
@@ -74,10 +65,10 @@ static void tiny_json(void)
     rc = run("--quick --size 32 --queries 300 --runs 1 --threads 2 --batch 64 "
              "--sets magnify,plane --formats float,srgb8 --json r.json");
     CHECK(rc == 0, "tiny run exits 0 (got %d)", rc);
-    text = slurp("out.txt");
+    text = check_slurp_in(dir, "out.txt");
     CHECK(text && strstr(text, "\nlibsample ISA: ") != NULL, "the table names the instruction set");
     free(text);
-    text = slurp("r.json");
+    text = check_slurp_in(dir, "r.json");
     CHECK(text != NULL, "r.json written");
     if (!text) return;
     root = cJSON_Parse(text);
@@ -129,7 +120,7 @@ static void tiny_json(void)
              "--formats half --filters trilinear,ewa --scalar --json -");
     unsetenv("LIBSAMPLE_ISA");
     CHECK(rc == 0, "--json - exits 0");
-    text = slurp("out.txt");
+    text = check_slurp_in(dir, "out.txt");
     root = text ? cJSON_Parse(text) : NULL;
     CHECK(root != NULL, "--json - prints only JSON on stdout");
     res = root ? cJSON_GetObjectItemCaseSensitive(root, "results") : NULL;

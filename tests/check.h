@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 
 static int check_pass_count, check_fail_count, check_case_failed, check_skip_count;
 
@@ -92,6 +93,21 @@ static inline void *check_slurp(const char *path, size_t *len)
     }
     fclose(f);
     return s;
+}
+
+/* check_slurp of the file `name` in the folder `dir`. */
+static inline char *check_slurp_in(const char *dir, const char *name)
+{
+    char path[4096];
+    if (snprintf(path, sizeof path, "%s/%s", dir, name) >= (int)sizeof path) return NULL;
+    return (char *)check_slurp(path, NULL);
+}
+
+/* Run a shell command; its exit status, or −1 if it did not exit. */
+static inline int check_shell(const char *cmd)
+{
+    int st = system(cmd);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
 #endif

@@ -24,17 +24,8 @@ static const char *exe, *dir;
 static int run(const char *args)
 {
     char cmd[4096];
-    int st;
     snprintf(cmd, sizeof cmd, "mkdir -p %s && cd %s && %s %s >out.txt 2>err.txt", dir, dir, exe, args);
-    st = system(cmd);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
-
-static char *slurp(const char *name)
-{
-    char p[1024];
-    snprintf(p, sizeof p, "%s/%s", dir, name);
-    return check_slurp(p, NULL);
+    return check_shell(cmd);
 }
 
 /* Names are at most TOOL_FILTER_NAME_MAX − 1 = 47 characters: the commands
@@ -197,7 +188,7 @@ static int check_help(const char *tool, const char *after, unsigned accept,
     int n, i, j, want = 0, ndflt = 0;
     snprintf(cmd, sizeof cmd, "%s --help", tool);
     CHECK(run(cmd) == 0, "%s --help exits 0", tool);
-    help = slurp("out.txt");
+    help = check_slurp_in(dir, "out.txt");
     n = help_names(help, after, names, dflt, 64);
     free(help);
     for (i = 0, j = all_picks(p); i < j; ++i) {
@@ -245,11 +236,11 @@ static void lookup_runs(void)
     }
     /* An alias samples as its entry and says which it is. */
     CHECK(run("lookup --raw tex.raw --w 4 --h 4 --queries q.raw --filter nmn --stats") == 0, "nmn");
-    a = slurp("err.txt");
+    a = check_slurp_in(dir, "err.txt");
     CHECK(a && strstr(a, "'nmn' is read as 'nearest_mipmap_nearest'"), "alias note: %s", a ? a : "");
     CHECK(run("lookup --raw tex.raw --w 4 --h 4 --queries q.raw --filter nearest_mipmap_nearest --stats") == 0,
           "nearest_mipmap_nearest");
-    b = slurp("err.txt");
+    b = check_slurp_in(dir, "err.txt");
     CHECK(a && b && strstr(a, strstr(b, "queries") ? strstr(b, "queries") : "?"), "same texels read");
     free(a);
     free(b);
@@ -271,7 +262,7 @@ static void bench_runs(void)
     }
     CHECK(run("bench --filters bicubic --size 16 --queries 16 --runs 1 --threads 1 --sets magnify "
               "--formats float --no-oiio --json -") == 0, "bench --filters bicubic");
-    out = slurp("out.txt");
+    out = check_slurp_in(dir, "out.txt");
     CHECK(out && strstr(out, "\"bicubic-bspline\"") && !strstr(out, "\"bicubic\""),
           "the JSON names the canonical entry");
     free(out);
@@ -285,7 +276,7 @@ static void freq_runs(void)
     tool_pick q;
     unsigned accept = 0;
     CHECK(run("freq --help") == 0, "freq --help");
-    csv = slurp("out.txt");
+    csv = check_slurp_in(dir, "out.txt");
     /* The shim is in the build when freq lists a twin. */
     if (csv && strstr(csv, "oiio-trilinear")) accept = TOOL_PICK_OIIO;
     free(csv);
@@ -302,7 +293,7 @@ static void freq_runs(void)
     }
     CHECK(run("freq --filters blinn_newell --quick --m 2 --theta 0 --r 1 --size 16 --step 0.5 --fmax 1 "
               "--width 2 --phases 2 --no-png --out f") == 0, "freq --filters blinn_newell");
-    csv = slurp("f/freq.csv");
+    csv = check_slurp_in(dir, "f/freq.csv");
     CHECK(csv && strstr(csv, "blinn-newell") && !strstr(csv, "blinn_newell"), "freq.csv: the canonical name");
     free(csv);
 }
@@ -320,7 +311,7 @@ static void compare_runs(void)
     }
     CHECK(run("compare --scene plane --size 8 --truth-samples 2 --threads 1 --configs bn-corners,nmn "
               "--out c") == 0, "compare --configs bn-corners,nmn");
-    csv = slurp("c/results.csv");
+    csv = check_slurp_in(dir, "c/results.csv");
     CHECK(csv && strstr(csv, "plane,nearest_mipmap_nearest,") && strstr(csv, "plane,blinn-newell-corners,") &&
               !strstr(csv, ",nmn,"),
           "results.csv: canonical names, registry order");

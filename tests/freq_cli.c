@@ -19,17 +19,8 @@ static const char *exe, *dir;
 static int run(const char *args)
 {
     char cmd[4096];
-    int st;
     snprintf(cmd, sizeof cmd, "'%s' freq %s >/dev/null 2>&1", exe, args);
-    st = system(cmd);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
-
-static char *slurp(const char *name)
-{
-    char path[2048];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return check_slurp(path, NULL);
+    return check_shell(cmd);
 }
 
 static void test_usage(void)
@@ -78,7 +69,7 @@ static double tick(const char *svg, const char *cls, const char *label, const ch
  * labelled 0.5 and run at the heights labelled 1 and 0, from F = 0 to 2. */
 static void test_svg_ideal(void)
 {
-    char *svg = slurp("plot_r1_t0.svg");
+    char *svg = check_slurp_in(dir, "plot_r1_t0.svg");
     const char *p;
     double x[4], y[4];
     int k;
@@ -114,7 +105,7 @@ static void test_svg_ideal(void)
  * mips leaks nearly everything above Nyquist while trilinear leaks little. */
 static void test_csv(void)
 {
-    char *csv = slurp("freq.csv"), *line, *save = NULL;
+    char *csv = check_slurp_in(dir, "freq.csv"), *line, *save = NULL;
     double sum_n = 0, sum_t = 0;
     int n_n = 0, n_t = 0, rows = 0;
     CHECK(csv != NULL, "freq.csv missing");
@@ -159,7 +150,7 @@ static void test_csv(void)
 /* Every src/href of the page names a file in the folder (self-contained). */
 static void test_html(void)
 {
-    char *html = slurp("index.html");
+    char *html = check_slurp_in(dir, "index.html");
     const char *p;
     int links = 0;
     CHECK(html != NULL, "index.html missing");
