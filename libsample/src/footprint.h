@@ -176,7 +176,7 @@ typedef struct fp_level_rows {
     int lv, nrows, tr;
     int in_place; /* float RGBA: texels inside the level are read where they are */
     double jlo, u0, v0, wlim, hlim;
-    const unsigned char *data; /* the level's texel (0, 0) */
+    const unsigned char *data; /* the level's texel (0, 0); NULL unless resident */
     const isa_kernels *k;      /* the batch's kernels (sample_ctx.isa) */
     size_t pitch, lstride;
 } fp_level_rows;
@@ -213,7 +213,7 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     lr->v0 = vw;
     lr->wlim = (double)(tr ? L->h : L->w);
     lr->hlim = (double)(tr ? L->w : L->h);
-    lr->data = L->data;
+    lr->data = tex_resident(c->tex) ? L->data : NULL;
     lr->k = c->isa;
     lr->pitch = tr ? L->stride : tb;
     lr->lstride = tr ? tb : L->stride;
@@ -249,7 +249,7 @@ SAMPLE_FORCE_INLINE void fp_prefetch_texels(const fp_level_rows *lr, const unsig
 SAMPLE_FORCE_INLINE void fp_prefetch_span(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
     double lo = ilo < 0.0 ? 0.0 : ilo, hi = ilo + ncol - 1.0;
-    if (!(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
+    if (!lr->data || !(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
     if (hi > lr->wlim - 1.0) hi = lr->wlim - 1.0;
     if (!(lo <= hi)) return;
     fp_prefetch_texels(lr, fp_texel_at(lr, j, lo), hi - lo + 1.0);
@@ -268,11 +268,11 @@ typedef struct fp_spans {
 } fp_spans;
 
 /* The address of texels ilo … ilo + ncol − 1 of walk row j when they all
- * lie inside the level (then every wrap mode reads them there, ctx_texel's
- * own shortcut), NULL otherwise. */
+ * lie inside a resident level (then every wrap mode reads them there,
+ * ctx_texel's own shortcut), NULL otherwise (read through ctx_texel). */
 SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
-    if (j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim) return fp_texel_at(lr, j, ilo);
+    if (lr->data && j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim) return fp_texel_at(lr, j, ilo);
     return NULL;
 }
 

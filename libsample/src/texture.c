@@ -101,6 +101,7 @@ static sample_texture *tex_new(const sample_image *base)
 {
     sample_texture *tex = (sample_texture *)calloc(1, sizeof *tex);
     if (!tex) return NULL;
+    tex->kind = SAMPLE_TEXTURE_2D;
     tex->width = base->width;
     tex->height = base->height;
     tex->channels = base->channels;
@@ -194,6 +195,7 @@ void sample_texture_destroy(sample_texture *tex)
     int k;
     if (!tex) return;
     for (k = 0; k < SAMPLE_MAX_LEVELS; ++k) free(tex->level[k].data);
+    if (tex->source) tex->source->destroy(tex->source);
     free(tex);
 }
 
@@ -208,6 +210,7 @@ void sample_texture_info_get(const sample_texture *tex, sample_texture_info *inf
     info->levels = tex->nlevels;
     info->format = tex->format;
     info->bytes = tex->bytes;
+    info->kind = tex->kind;
 }
 
 int sample_texture_level_size(const sample_texture *tex, int level, int *w, int *h)
@@ -225,7 +228,7 @@ void sample_texture_texel(const sample_texture *tex, int level, int i, int j, fl
         rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
         return;
     }
-    tex_decode(tex, &tex->level[level], i, j, rgba);
+    tex_read(tex, level, i, j, rgba);
 }
 
 static unsigned char to_u8(float v)
