@@ -412,6 +412,45 @@ SAMPLE_FORCE_INLINE void fp_pass_add(fp_pass *ps, double w, double dwdu, double 
     ps->total += 1.0;
 }
 
+/* The weights alone over a level (no derivatives), by the batch's row
+ * kernel `level` (fp_row_kernels: bn_level, ewa_level) with the filter's
+ * parameters par: sums kept in registers for the whole level, then folded
+ * into acc. Returns the texels added. */
+SAMPLE_FORCE_INLINE double fp_level_sums(fp_accum *acc, const fp_level_rows *lr,
+                                         void (*level)(struct fp_sums *, const struct fp_level_rows *, const double *),
+                                         const double *par)
+{
+    fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
+    level(&sm, lr, par);
+    fp_accum_fold(acc, &sm);
+    return sm.n;
+}
+
+/* A filter's weight at texel offset (du, dv) from the centre, in the walk
+ * frame, and its gradient (wu, wv) = ∂w/∂(du, dv); 0 where the texel
+ * adds nothing (outside the footprint). `pass` is the filter's pass state,
+ * whose first member is the fp_pass. */
+typedef int (*fp_weight_fn)(const void *pass, double du, double dv, double *w, double *wu, double *wv);
+
+/* One row of a derivative pass (fp_pass_run's row, for every filter):
+ * each texel's weight and gradient from weight(), added with the centre's
+ * motion — du = c − u0, so ∂w/∂u0 = −wu, times ku (and likewise v). Texel
+ * positions du = (ilo + k) − u0 are the other passes' to the bit. Generic
+ * over weight(), inlined with it (zstd style). */
+SAMPLE_FORCE_INLINE void fp_pass_row(void *pass, fp_weight_fn weight, const unsigned char *p, size_t pitch, int n,
+                                     double ilo, double dv)
+{
+    fp_pass *ps = (fp_pass *)pass;
+    int k;
+    for (k = 0; k < n; ++k) {
+        double w, wu, wv;
+        float t4[4];
+        if (!weight(pass, (ilo + k) - ps->u0, dv, &w, &wu, &wv)) continue;
+        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
+        fp_pass_add(ps, w, -wu * ps->ku, -wv * ps->kv, t4);
+    }
+}
+
 /* One level of a footprint filter: when `count_only`, returns (as a double,
  * +inf if unbounded) how many texels the level would visit, reading none;
  * otherwise accumulates into `acc` and returns the texels read. */

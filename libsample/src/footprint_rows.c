@@ -334,10 +334,10 @@ SAMPLE_FORCE_INLINE void walk_level(fp_sums *s, const fp_level_rows *lr, const d
 }
 
 /* m = M (the parallelogram's J′⁻¹, row-major). */
-static void bn_level(fp_sums *s, const fp_level_rows *lr, const double M[2][2]) { walk_level(s, lr, &M[0][0], bn_row); }
+static void bn_level(fp_sums *s, const fp_level_rows *lr, const double *M) { walk_level(s, lr, M, bn_row); }
 
 /* abc = A, B, C of the normalized ellipse. */
-static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double abc[3]) { walk_level(s, lr, abc, ewa_row); }
+static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double *abc) { walk_level(s, lr, abc, ewa_row); }
 
 /* ---- This build's level kernels (isa.c) --------------------------------- */
 

@@ -144,6 +144,10 @@ static inline void tex_read(const sample_texture *tex, int lv, int i, int j, flo
  * texture's format; used by the pyramid builder. */
 void ls_tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst);
 
+/* A texture with no levels yet (no source: resident), its texel size set;
+ * NULL if out of memory. */
+sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int channels, sample_format format);
+
 /* Allocate level k's storage (size from the level rule); tex->bytes updated. */
 sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err);
 

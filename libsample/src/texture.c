@@ -97,17 +97,22 @@ static void copy_image(struct sample_level *L, size_t texel_bytes, const sample_
         memcpy(L->data + (size_t)j * L->stride, (const unsigned char *)im->data + (size_t)j * src_stride, row);
 }
 
-static sample_texture *tex_new(const sample_image *base)
+sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int channels, sample_format format)
 {
     sample_texture *tex = (sample_texture *)calloc(1, sizeof *tex);
     if (!tex) return NULL;
-    tex->kind = SAMPLE_TEXTURE_2D;
-    tex->width = base->width;
-    tex->height = base->height;
-    tex->channels = base->channels;
-    tex->format = base->format;
-    tex->texel_bytes = (size_t)base->channels * format_bytes[base->format];
+    tex->kind = kind;
+    tex->width = width;
+    tex->height = height;
+    tex->channels = channels;
+    tex->format = format;
+    tex->texel_bytes = (size_t)channels * format_bytes[format];
     return tex;
+}
+
+static sample_texture *tex_new(const sample_image *base)
+{
+    return ls_tex_new(SAMPLE_TEXTURE_2D, base->width, base->height, base->channels, base->format);
 }
 
 sample_status sample_texture_create(const sample_image *image, const sample_mip_params *mip,

@@ -88,7 +88,7 @@ sample_status sample_texture_tiled_copy(const sample_texture *tex, int tile_log2
                     "tiled copy: the texture must be resident");
     RETURN_ERROR_IF(tile_log2 < 0 || tile_log2 > 12, err, SAMPLE_E_INVALID_ARGUMENT,
                     "tiled copy: tiles of 2^%d texels a side (0 to 12)", tile_log2);
-    copy = (sample_texture *)calloc(1, sizeof *copy);
+    copy = ls_tex_new(tex->kind, tex->width, tex->height, tex->channels, tex->format);
     t = (tiled_source *)calloc(1, sizeof *t);
     if (!copy || !t) {
         free(copy);
@@ -99,12 +99,6 @@ sample_status sample_texture_tiled_copy(const sample_texture *tex, int tile_log2
     t->base.destroy = tiled_destroy;
     t->log2 = tile_log2;
     t->texel_bytes = tex->texel_bytes;
-    copy->kind = tex->kind;
-    copy->width = tex->width;
-    copy->height = tex->height;
-    copy->channels = tex->channels;
-    copy->format = tex->format;
-    copy->texel_bytes = tex->texel_bytes;
     copy->source = &t->base;
     for (lv = 0; lv < tex->nlevels && st == SAMPLE_OK; ++lv) {
         st = tile_level(t, tex, copy, lv, err);
