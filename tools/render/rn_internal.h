@@ -122,6 +122,9 @@ typedef struct rn_seed {
 int patch_seeds(const rn_object *o, const double eye[3], const double dir[3], rn_seed *seeds,
                 int max);
 
+/* The tessellation grid point of p nearest P: its (u, v) and squared distance. */
+void patch_nearest_grid(const rn_patch *p, const double P[3], double *u, double *v, double *d2);
+
 /* Teapot data (teapot_data.c): 1-based indices as published. */
 #define TEAPOT_PATCHES 32
 #define TEAPOT_POINTS 306
