@@ -70,7 +70,7 @@ static void skip_ws(jparser *p)
         ++p->at;
 }
 
-static uint32_t new_node(jparser *p, rn_jtype type, uint32_t key)
+static uint32_t new_node(jparser *p, rn_jtype type, uint32_t key, size_t pos)
 {
     rn_json *j = p->j;
     rn_jnode *nd;
@@ -89,7 +89,7 @@ static uint32_t new_node(jparser *p, rn_jtype type, uint32_t key)
         j->cap = cap;
     }
     nd = &j->node[j->count];
-    nd->type_pos = (uint32_t)type | (uint32_t)(p->at << 3);
+    nd->type_pos = (uint32_t)type | (uint32_t)(pos << 3);
     nd->span = 1;
     nd->key = key;
     nd->val = 0;
@@ -287,7 +287,7 @@ static int parse_number(jparser *p)
     return 1;
 }
 
-static int parse_value(jparser *p, uint32_t key, int depth);
+static int parse_value(jparser *p, uint32_t key, size_t pos, int depth);
 
 /* Array or object at p->at (its opening bracket) as node nd. */
 static int parse_container(jparser *p, uint32_t nd, int object, int depth)
@@ -305,7 +305,9 @@ static int parse_container(jparser *p, uint32_t nd, int object, int depth)
     }
     for (;;) {
         uint32_t key = RN_JNONE;
+        size_t pos;
         skip_ws(p);
+        pos = p->at;
         if (object) {
             if (p->at >= p->j->len || s[p->at] != '"')
                 return fail_at(p, p->at, "expected a member name in double quotes");
@@ -316,7 +318,7 @@ static int parse_container(jparser *p, uint32_t nd, int object, int depth)
             ++p->at;
             skip_ws(p);
         }
-        if (!parse_value(p, key, depth + 1)) return 0;
+        if (!parse_value(p, key, pos, depth + 1)) return 0;
         ++count;
         skip_ws(p);
         if (p->at < p->j->len && s[p->at] == ',') {
@@ -327,7 +329,8 @@ static int parse_container(jparser *p, uint32_t nd, int object, int depth)
             ++p->at;
             break;
         }
-        return fail_at(p, p->at, "expected ',' or '%c'", close);
+        return fail_at(p, p->at, "expected ',' or '%c'%s", close,
+                       p->at >= p->j->len ? ", found the end of the text" : "");
     }
     p->j->node[nd].val = count;
     return 1;
@@ -342,7 +345,8 @@ static int literal(jparser *p, const char *word)
     return 1;
 }
 
-static int parse_value(jparser *p, uint32_t key, int depth)
+/* A value at p->at; its node records pos (an object member's: its name). */
+static int parse_value(jparser *p, uint32_t key, size_t pos, int depth)
 {
     const char *s = p->j->text;
     uint32_t nd;
@@ -351,22 +355,25 @@ static int parse_value(jparser *p, uint32_t key, int depth)
     if (p->at >= p->j->len) return fail_at(p, p->at, "expected a JSON value, found the end");
     c = s[p->at];
     if (c == '{' || c == '[') {
-        if ((nd = new_node(p, c == '{' ? RN_JOBJECT : RN_JARRAY, key)) == RN_JNONE) return 0;
+        if ((nd = new_node(p, c == '{' ? RN_JOBJECT : RN_JARRAY, key, pos)) == RN_JNONE) return 0;
         ok = parse_container(p, nd, c == '{', depth);
         p->j->node[nd].span = p->j->count - nd;
         return ok;
     }
     if (c == '"') {
         uint32_t off;
-        if ((nd = new_node(p, RN_JSTRING, key)) == RN_JNONE || !parse_string(p, &off)) return 0;
+        if ((nd = new_node(p, RN_JSTRING, key, pos)) == RN_JNONE || !parse_string(p, &off)) return 0;
         p->j->node[nd].val = off;
         return 1;
     }
-    if (c == '-' || (c >= '0' && c <= '9'))
-        return new_node(p, RN_JNUMBER, key) != RN_JNONE && parse_number(p);
-    if (c == 't') return new_node(p, RN_JTRUE, key) != RN_JNONE && literal(p, "true");
-    if (c == 'f') return new_node(p, RN_JFALSE, key) != RN_JNONE && literal(p, "false");
-    if (c == 'n') return new_node(p, RN_JNULL, key) != RN_JNONE && literal(p, "null");
+    if (c == '-' || (c >= '0' && c <= '9')) {
+        if ((nd = new_node(p, RN_JNUMBER, key, pos)) == RN_JNONE) return 0;
+        p->j->node[nd].val = (uint32_t)p->at;
+        return parse_number(p);
+    }
+    if (c == 't') return new_node(p, RN_JTRUE, key, pos) != RN_JNONE && literal(p, "true");
+    if (c == 'f') return new_node(p, RN_JFALSE, key, pos) != RN_JNONE && literal(p, "false");
+    if (c == 'n') return new_node(p, RN_JNULL, key, pos) != RN_JNONE && literal(p, "null");
     return fail_at(p, p->at, "expected a JSON value");
 }
 
@@ -389,7 +396,7 @@ int rn_json_parse(rn_json *j, const char *text, size_t len, uint32_t max_nodes, 
     /* A UTF-8 byte order mark is tolerated (RFC 8259 §8.1 lets parsers). */
     if (len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) p.at = 3;
     skip_ws(&p);
-    if (parse_value(&p, RN_JNONE, 0)) {
+    if (parse_value(&p, RN_JNONE, p.at, 0)) {
         skip_ws(&p);
         if (p.at == len) return 1;
         fail_at(&p, p.at, "unexpected text after the JSON value");
@@ -452,7 +459,7 @@ uint32_t rn_json_at(const rn_json *j, uint32_t n, uint32_t k)
 double rn_json_number(const rn_json *j, uint32_t n)
 {
     if (n >= j->count || rn_json_type(j, n) != RN_JNUMBER) return NAN;
-    return number_at(j->text, j->len, j->node[n].type_pos >> 3);
+    return number_at(j->text, j->len, j->node[n].val);
 }
 
 const char *rn_json_string(const rn_json *j, uint32_t n)

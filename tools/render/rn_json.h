@@ -31,10 +31,12 @@ typedef enum rn_jtype {
 #define RN_JNONE UINT32_MAX /* "no node", "no key" */
 
 typedef struct rn_jnode {
-    uint32_t type_pos; /* rn_jtype in the low 3 bits, byte offset of the value above */
+    uint32_t type_pos; /* rn_jtype in the low 3 bits; above, the byte offset of the
+                          value, or of its name for an object member (for messages) */
     uint32_t span;     /* nodes in this subtree, itself included: next sibling at index + span */
     uint32_t key;      /* object members: pool offset of the decoded name; else RN_JNONE */
-    uint32_t val;      /* strings: pool offset; arrays, objects: element count */
+    uint32_t val;      /* strings: pool offset; numbers: text offset; arrays, objects:
+                          element count */
 } rn_jnode;
 
 typedef struct rn_json {
@@ -62,7 +64,8 @@ static inline rn_jtype rn_json_type(const rn_json *j, uint32_t n)
 }
 /* 1-based line and column (in bytes) of byte offset pos of a text. */
 void rn_json_line_col(const char *text, size_t len, size_t pos, int *line, int *column);
-/* The same where node n's value starts (RN_JNONE: the end of the text). */
+/* The same where node n starts: its value, or for an object member its name
+ * (RN_JNONE: the end of the text). */
 void rn_json_where(const rn_json *j, uint32_t n, int *line, int *column);
 /* First element or member of an array or object (RN_JNONE if empty), and
  * the one after n within its parent (RN_JNONE after the last). */
