@@ -409,10 +409,7 @@ void rn_json_free(rn_json *j)
 {
     free(j->node);
     free(j->pool);
-    j->node = NULL;
-    j->pool = NULL;
-    j->count = j->cap = 0;
-    j->pool_len = j->pool_cap = 0;
+    memset(j, 0, sizeof *j);
 }
 
 uint32_t rn_json_first(const rn_json *j, uint32_t n)
