@@ -19,10 +19,13 @@
 static char dir[64];
 static const char *texsample;
 
+/* Processor time of this process: what a refusal costs, unaffected by how
+ * busy the machine is. A refusal that blocks (a FIFO's open) costs none
+ * and is caught by the alarm in test_files instead. */
 static double now(void)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -190,6 +193,7 @@ static void test_big_texts(void)
         r = render_scene_parse(a, n, 0, 0, &sc, err, sizeof err);
         CHECK(r != 0 && strstr(err, "more than 4194304 JSON values"), "list: r = %d, '%s'", r, err);
         CHECK(now() - t0 < 2.0, "list refused after %.2f s", now() - t0);
+        printf("6 million numbers refused after %.3f s of processor time\n", now() - t0);
         render_scene_destroy(sc);
     }
     if (limited) setrlimit(RLIMIT_AS, &old);

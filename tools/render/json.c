@@ -262,7 +262,7 @@ static int parse_number(jparser *p)
 {
     const char *s = p->j->text;
     size_t n = p->j->len, start = p->at;
-    double v;
+    int exponent = 0;
     if (p->at < n && s[p->at] == '-') ++p->at;
     if (p->at < n && s[p->at] == '0') {
         ++p->at;
@@ -276,14 +276,16 @@ static int parse_number(jparser *p)
         if (!digits(p)) return fail_at(p, start, "invalid number (digits must follow '.')");
     }
     if (p->at < n && (s[p->at] == 'e' || s[p->at] == 'E')) {
+        exponent = 1;
         ++p->at;
         if (p->at < n && (s[p->at] == '+' || s[p->at] == '-')) ++p->at;
         if (!digits(p)) return fail_at(p, start, "invalid number (digits must follow 'e')");
     }
     if (p->at - start > JSON_MAX_NUMBER)
         return fail_at(p, start, "number longer than %d characters", JSON_MAX_NUMBER);
-    v = number_at(s, n, start);
-    if (!isfinite(v)) return fail_at(p, start, "number out of the range of a double");
+    /* Without an exponent, at most 100 digits stay far below DBL_MAX. */
+    if (exponent && !isfinite(number_at(s, n, start)))
+        return fail_at(p, start, "number out of the range of a double");
     return 1;
 }
 
