@@ -7,7 +7,11 @@
 #include "sample/testing.h"
 #include "commands.h"
 #include "texload.h"
+#ifdef TEXSAMPLE_FRONT
+#include "image_program.h"
+#endif
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,7 +46,7 @@ int cmd_lookup(int argc, char **argv)
     sample_sampler smp;
     sample_mip_params mip;
     const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v;
-    int text = 0, want_stats = 0, reference = 0, i, rc = EXIT_RUNTIME;
+    int text = 0, want_stats = 0, reference = 0, i, r, rc = EXIT_RUNTIME;
     void *qdata = NULL, *cdata = NULL;
     size_t qsize = 0, csize = 0, n;
     sample_texture *tex = NULL;
@@ -55,7 +59,6 @@ int cmd_lookup(int argc, char **argv)
     sample_sampler_init(&smp);
     sample_mip_params_init(&mip);
     for (i = 1; i < argc; ++i) {
-        int r;
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
             cli_sampler_help_print();
@@ -73,17 +76,18 @@ int cmd_lookup(int argc, char **argv)
             if (r < 0) return EXIT_USAGE;
             continue;
         }
-        if (cli_opt(argc, argv, &i, "--queries", &qpath)) { if (!qpath) return cli_usage_error(sub, "--queries needs a file"); continue; }
-        if (cli_opt(argc, argv, &i, "--corners", &cpath)) { if (!cpath) return cli_usage_error(sub, "--corners needs a file"); continue; }
-        if (cli_opt(argc, argv, &i, "--out", &opath)) { if (!opath) return cli_usage_error(sub, "--out needs a file"); continue; }
+        if (cli_opt(argc, argv, &i, "--queries", &qpath)) continue;
+        if (cli_opt(argc, argv, &i, "--corners", &cpath)) continue;
+        if (cli_opt(argc, argv, &i, "--out", &opath)) continue;
         if (cli_opt(argc, argv, &i, "--text", NULL)) { text = 1; continue; }
         if (cli_opt(argc, argv, &i, "--stats", NULL)) { want_stats = 1; continue; }
         if (cli_opt(argc, argv, &i, "--mipgen", &v)) {
-            int m = v ? sample_mipgen_parse(v) : -1;
-            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v ? v : "");
+            int m = sample_mipgen_parse(v);
+            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v);
             mip.filter = (sample_mipgen)m;
             continue;
         }
+        if (argv[i][0] != '-') return cli_usage_error(sub, "unexpected argument '%s' (files are given by options)", argv[i]);
         return cli_usage_error(sub, "unknown option '%s'", argv[i]);
     }
     if (!qpath) return cli_usage_error(sub, "--queries FILE is required");
@@ -94,10 +98,15 @@ int cmd_lookup(int argc, char **argv)
     /* The pyramid's edges follow the sampler's wrap modes. */
     mip.wrap_s = smp.wrap_s;
     mip.wrap_t = smp.wrap_t;
-    if (tl_load(sub, &src, &mip, &tex) != 0) return EXIT_RUNTIME;
+    if ((r = tl_load(sub, &src, &mip, &tex)) != 0) {
+#ifdef TEXSAMPLE_FRONT
+        if (r == TL_IMAGE_PROGRAM) return image_program_run(argc, argv);
+#endif
+        return EXIT_RUNTIME;
+    }
 
     if (!cli_read_file(qpath, &qdata, &qsize)) {
-        cli_runtime_error(sub, "cannot read query file '%s'", qpath);
+        cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, strerror(errno));
         goto done;
     }
     if (qsize % (6 * sizeof(float)) != 0) {
@@ -107,7 +116,7 @@ int cmd_lookup(int argc, char **argv)
     n = qsize / (6 * sizeof(float));
     if (cpath) {
         if (!cli_read_file(cpath, &cdata, &csize)) {
-            cli_runtime_error(sub, "cannot read corner file '%s'", cpath);
+            cli_runtime_error(sub, "cannot read corner file '%s': %s", cpath, strerror(errno));
             goto done;
         }
         if (csize != n * 8 * sizeof(float)) {
@@ -133,7 +142,7 @@ int cmd_lookup(int argc, char **argv)
         goto done;
     }
     if (opath && !cli_write_file(opath, out, n * 4 * sizeof(float))) {
-        cli_runtime_error(sub, "cannot write '%s'", opath);
+        cli_runtime_error(sub, "cannot write '%s': %s", opath, strerror(errno));
         goto done;
     }
     if (text) {

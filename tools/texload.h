@@ -17,7 +17,11 @@ void tl_source_init(tl_source *src);
  * consumed, 0 if not ours, −1 on a bad value (reported). */
 int tl_source_flag(const char *sub, int argc, char **argv, int *i, tl_source *src);
 int tl_source_given(const tl_source *src);
-/* Loads the texture; errors are reported on stderr. Returns 0 on success. */
+/* Loads the texture; errors are reported on stderr. Returns 0 on success,
+ * −1 after reporting an error, and in the front program (which reads no
+ * image files: tools/CMakeLists.txt) TL_IMAGE_PROGRAM for an image file:
+ * the command is then run again in the image program (image_program.h). */
+enum { TL_IMAGE_PROGRAM = 1 };
 int tl_load(const char *sub, const tl_source *src, const sample_mip_params *mip, sample_texture **out);
 
 #endif

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -23,22 +24,57 @@ static bool file_exists(const std::string &p)
     return stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
-// The shipped config: first beside the installed binary or library (the
-// object holding this function, found with dladdr, so an installed tree can
-// be moved), then in the source tree this build came from.
+// Where the shipped config lies relative to an installed object: the
+// install puts it in <prefix>/share/libsample/ocio/, and the objects that
+// hold this code sit one to three directories below <prefix> (bin/,
+// lib/, lib/<multiarch>/, libexec/libsample/). So the directory holding the
+// object and its parents up to three levels are searched for
+// share/libsample/ocio/config.ocio: an installed tree can be moved, and no
+// absolute install path is baked in.
+static const int shipped_config_depth = 3;
+
+static std::string directory_of(const std::string &path)
+{
+    size_t slash = path.rfind('/');
+    if (slash == std::string::npos) return std::string();
+    return slash == 0 ? std::string("/") : path.substr(0, slash);
+}
+
+static std::string shipped_config_below(std::string dir)
+{
+    for (int up = 0; up <= shipped_config_depth && !dir.empty(); ++up) {
+        std::string p = (dir == "/" ? std::string() : dir) + "/share/libsample/ocio/config.ocio";
+        if (file_exists(p)) return p;
+        if (dir == "/") break;
+        dir = directory_of(dir);
+    }
+    return std::string();
+}
+
+// The object's own path, symbolic links resolved. dladdr names a shared
+// library by the path it was loaded from, but for code linked into the
+// program itself glibc reports argv[0], which for a program run from $PATH
+// is a bare name: /proc/self/exe (proc(5)) is the program's real path.
+static std::string real_path(const char *p)
+{
+    char *r = p ? realpath(p, nullptr) : nullptr;
+    std::string s = r ? r : "";
+    std::free(r);
+    return s;
+}
+
+// The shipped config: below the object holding this function (the shared
+// libsample_io, or the program it is linked into), then below the running
+// program, then in the source tree this build came from (build-tree use).
 static std::string shipped_config()
 {
     Dl_info info;
-    if (dladdr(reinterpret_cast<void *>(&shipped_config), &info) && info.dli_fname) {
-        std::string dir(info.dli_fname);
-        size_t slash = dir.rfind('/');
-        dir = slash == std::string::npos ? std::string(".") : dir.substr(0, slash);
-        for (const char *rel : {SAMPLE_IO_OCIO_FROM_LIBDIR, "../share/libsample/ocio/config.ocio"}) {
-            std::string p = dir + "/" + rel;
-            if (file_exists(p)) return p;
-        }
-    }
-    return SAMPLE_IO_OCIO_SOURCE;
+    std::string found;
+    if (dladdr(reinterpret_cast<void *>(&shipped_config), &info) && info.dli_fname &&
+        std::strchr(info.dli_fname, '/'))
+        found = shipped_config_below(directory_of(real_path(info.dli_fname)));
+    if (found.empty()) found = shipped_config_below(directory_of(real_path("/proc/self/exe")));
+    return found.empty() ? std::string(SAMPLE_IO_OCIO_SOURCE) : found;
 }
 
 extern "C" sample_status io_colour_open(const char *path, io_colour **out, sample_error *err)
