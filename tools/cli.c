@@ -93,10 +93,7 @@ void cli_args_free(void)
     made_count = 0;
 }
 
-/* TEXSAMPLE_TRACE_OPTIONS=1 prints every option name a command asks about
- * (tests/cli_options.sh: given an unknown option, a command asks about all
- * of its own, and each must be in its --help). */
-static int trace_options(void)
+int cli_trace_options(void)
 {
     static int trace = -1;
     if (trace < 0) {
@@ -110,7 +107,7 @@ int cli_opt(int argc, char **argv, int *i, const char *name, const char **val)
 {
     const char *a = argv[*i];
     size_t n = strlen(name);
-    if (trace_options()) fprintf(stderr, "texsample: option %s\n", name);
+    if (cli_trace_options()) fprintf(stderr, "texsample: option %s\n", name);
     if (strncmp(a, name, n) != 0 || (a[n] != '\0' && a[n] != '=')) return 0;
     if (!val) {
         if (a[n] == '\0') return 1;

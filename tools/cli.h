@@ -35,6 +35,12 @@ void cli_args_free(void);
  * any work). */
 int cli_opt(int argc, char **argv, int *i, const char *name, const char **val);
 int cli_is_help(const char *arg);
+/* TEXSAMPLE_TRACE_OPTIONS=1 (tests/cli_options.c): cli_opt prints every
+ * option name it is asked about on stderr, and main.c runs the command a
+ * second time with --help. Given an option it does not know, a command
+ * asks about each of its own before reporting it, and each must be in its
+ * help. */
+int cli_trace_options(void);
 
 /* Strict number parsing: whole string, finite. Return 0 on failure. */
 int cli_parse_int(const char *s, int *out);

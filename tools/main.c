@@ -52,6 +52,10 @@ static int run(size_t k, int argc, char **argv)
 #else
     rc = commands[k].fn(argc, argv);
 #endif
+    if (cli_trace_options() && commands[k].fn) {
+        char *help[] = {argv[0], "--help", NULL};
+        commands[k].fn(2, help);
+    }
     cli_args_free();
     return cli_usage_reported() ? EXIT_USAGE : rc;
 }
