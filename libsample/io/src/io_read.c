@@ -50,10 +50,8 @@ static sample_status choose_colorspace(const io_colour *col, const sample_io_opt
 {
     size_t k;
     if (o->colorspace) {
-        if (!io_colour_known(col, o->colorspace))
-            return sample_error_set(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", o->colorspace);
         *name = o->colorspace;
-        return SAMPLE_OK;
+        return io_colour_require(col, o->colorspace, err);
     }
     /* Metadata the config does not know (OIIO writes names like
      * "GammaCorrected1.8") falls through to the rule rather than failing:

@@ -145,6 +145,10 @@ typedef struct sample_io_exr_options {
     /* Called after each tile row is written (may be NULL). */
     void (*progress)(void *user, size_t done, size_t total);
     void *progress_user;
+    /* The OCIO config whose scene_linear space the texels are in, named in
+     * the file (oiio:ColorSpace, chromaticities where known). NULL: $OCIO
+     * if set, else the shipped config. */
+    const char *ocio_config;
 } sample_io_exr_options;
 
 SAMPLE_IO_API void sample_io_exr_options_init(sample_io_exr_options *o);
