@@ -49,7 +49,7 @@ int cmd_lookup(int argc, char **argv)
     sample_sampler smp;
     sample_mip_params mip;
     const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v;
-    int text = 0, want_stats = 0, reference = 0, i, r, rc = EXIT_RUNTIME;
+    int text = 0, want_stats = 0, reference = 0, wrap_s_given = 0, wrap_t_given = 0, i, r, rc = EXIT_RUNTIME;
     void *qdata = NULL, *cdata = NULL;
     size_t qsize = 0, csize = 0, n;
     sample_texture *tex = NULL;
@@ -70,6 +70,12 @@ int cmd_lookup(int argc, char **argv)
         if (cli_opt(argc, argv, &i, "--reference-path", NULL)) {
             reference = 1;
             continue;
+        }
+        /* --wrap, --wrap-s, --wrap-t (and their --opt=value forms) override
+         * the wrap modes an image file stores, axis by axis. */
+        if (strncmp(argv[i], "--wrap", 6) == 0) {
+            wrap_s_given |= argv[i][6] != '-' || argv[i][7] == 's';
+            wrap_t_given |= argv[i][6] != '-' || argv[i][7] == 't';
         }
         if ((r = cli_sampler_flag(sub, argc, argv, &i, &smp)) != 0) {
             if (r < 0) return EXIT_USAGE;
@@ -98,14 +104,20 @@ int cmd_lookup(int argc, char **argv)
     if (sample_sampler_validate(&smp) != SAMPLE_OK)
         return cli_usage_error(sub, "inconsistent sampler state (min-lod > max-lod, base-level > max-level, or aniso < 1)");
 
-    /* The pyramid's edges follow the sampler's wrap modes. */
+    /* The pyramid's edges follow the sampler's wrap modes: the file's when
+     * it stores them and the command line names none. */
     mip.wrap_s = smp.wrap_s;
     mip.wrap_t = smp.wrap_t;
+    src.wrap_from_file = !wrap_s_given && !wrap_t_given;
     if ((r = tl_load(sub, &src, &mip, &tex)) != 0) {
 #ifdef TEXSAMPLE_FRONT
         if (r == TL_IMAGE_PROGRAM) return image_program_run(argc, argv);
 #endif
         return EXIT_RUNTIME;
+    }
+    if (src.has_wrap) {
+        if (!wrap_s_given) smp.wrap_s = src.wrap_s;
+        if (!wrap_t_given) smp.wrap_t = src.wrap_t;
     }
 
     if (!cli_read_file(qpath, &qdata, &qsize)) {

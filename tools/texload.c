@@ -96,20 +96,30 @@ done:
     return rc;
 }
 
-int tl_load(const char *sub, const tl_source *src, const sample_mip_params *mip, sample_texture **out)
+int tl_load(const char *sub, tl_source *src, const sample_mip_params *mip, sample_texture **out)
 {
     *out = NULL;
     if (src->raw) return load_raw(sub, src, mip, out);
 #ifdef TEXSAMPLE_HAVE_IO
     {
         sample_io_options opt;
+        sample_io_file_info file;
         sample_error err;
         sample_io_options_init(&opt);
         opt.colorspace = src->colorspace;
+        opt.file_info = &file;
+        opt.mip_wrap_from_file = src->wrap_from_file;
         if (sample_io_read_texture(src->image, &opt, mip, out, &err) != SAMPLE_OK) {
             cli_runtime_error(sub, "%s", err.message);
             return -1;
         }
+        if (file.colorspace_unknown)
+            fprintf(stderr, "texsample %s: warning: '%s' names colour space '%s', which the OCIO config does not "
+                    "know; decoded as '%s' (name its space with --colorspace)\n",
+                    sub, src->image, file.colorspace, file.colorspace_used);
+        src->has_wrap = file.has_wrap;
+        src->wrap_s = file.wrap_s;
+        src->wrap_t = file.wrap_t;
         return 0;
     }
 #elif defined(TEXSAMPLE_FRONT)

@@ -17,18 +17,6 @@
 #include <string>
 #include <vector>
 
-// The "wrapmodes" attribute as maketx and OIIO's TextureSystem spell it
-// (black, clamp, periodic, mirror); modes without an equivalent say clamp.
-static const char *wrap_word(sample_wrap w)
-{
-    switch (w) {
-    case SAMPLE_WRAP_REPEAT: return "periodic";
-    case SAMPLE_WRAP_MIRRORED_REPEAT: return "mirror";
-    case SAMPLE_WRAP_CLAMP_TO_BORDER: return "black";
-    default: return "clamp";
-    }
-}
-
 static int full_chain(int w, int h)
 {
     int n = 1, m = w > h ? w : h;
@@ -56,7 +44,7 @@ extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_tex
                                                     Imf::ROUND_DOWN));
         for (int c = 0; c < inf.channels; ++c) hdr.channels().insert(names[c], Imf::Channel(pt));
         hdr.compression() = Imf::ZIP_COMPRESSION; // maketx's default, lossless
-        std::string wrap = std::string(wrap_word(o->wrap_s)) + "," + wrap_word(o->wrap_t);
+        std::string wrap = std::string(io_wrap_word(o->wrap_s)) + "," + io_wrap_word(o->wrap_t);
         hdr.insert("wrapmodes", Imf::StringAttribute(wrap));
         // The working space by its own name (OpenImageIO reads it back as
         // oiio:ColorSpace) and, where known, OpenEXR's standard

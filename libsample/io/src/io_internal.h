@@ -40,7 +40,15 @@ typedef struct io_reader_info {
     int alpha_channel;  /* index of alpha, −1 if none */
     io_ptype native;    /* the type the level should be read as */
     char colorspace[64];/* oiio:ColorSpace metadata, "" if none */
+    char wrapmodes[64]; /* "wrapmodes" metadata ("periodic,clamp"), "" if none */
 } io_reader_info;
+
+/* io_wrapmodes.c: the words of the "wrapmodes" attribute (maketx, OIIO's
+ * TextureSystem) for libsample's wrap modes, both ways. Modes without a
+ * word of their own are written "clamp". io_wrapmodes_parse reads "S,T"
+ * (or one word for both); 0 if it names no mode libsample has. */
+const char *io_wrap_word(sample_wrap w);
+int io_wrapmodes_parse(const char *s, sample_wrap *wrap_s, sample_wrap *wrap_t);
 
 /* Exactly one of path or (data, size) is given. format_hint may be NULL. */
 sample_status io_reader_open(const char *path, const void *data, size_t size,
