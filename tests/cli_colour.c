@@ -11,6 +11,7 @@
  */
 #define _XOPEN_SOURCE 700
 #include "check.h"
+#include "cli_util.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -94,15 +95,6 @@ static void run_all(int n, const char *const *env, const char *const *args, int 
     }
 }
 
-static int holds(const char *name, const char *text)
-{
-    char *s = check_slurp_in(dir, name);
-    int r = s && strstr(s, text) != NULL;
-    if (!r) printf("  %s: wanted \"%s\", got \"%s\"\n", name, text, s ? s : "(nothing)");
-    free(s);
-    return r;
-}
-
 /* An OpenEXR header attribute (OpenEXR file layout: after the magic number
  * and version, "name\0type\0" size value, up to an empty name): its value
  * copied to val (at most n bytes); its size, or −1 if absent. */
@@ -141,7 +133,8 @@ static void check_label(const char *name, const char *want_name, int want_chroma
     snprintf(path, sizeof path, "%s/%s", dir, name);
     if (want_name) {
         n = exr_attribute(path, "oiio:ColorSpace", text, (int)sizeof text - 1);
-        CHECK(n == (int)strlen(want_name) && strcmp(text, want_name) == 0, "%s names %s (%d: '%s')", name, want_name, n, text);
+        CHECK(n == (int)strlen(want_name) && strcmp(text, want_name) == 0, "%s names %s (%d: '%s')", name,
+              want_name, n, text);
     }
     n = exr_attribute(path, "chromaticities", xy, (int)sizeof xy);
     if (!want_chromaticities) {
@@ -198,13 +191,15 @@ static void colour_and_wrap(void)
 
     run_all(4, env2, args2, rc);
     CHECK(rc[0] == 0 && rc[1] == 0 && rc[2] == 0, "lookups: %d %d %d", rc[0], rc[1], rc[2]);
-    CHECK(holds("err.0", "warning: 'aces.exr' names colour space 'ACEScg', which the OCIO config does not know; "
-                         "decoded as 'scene_linear'"),
+    CHECK(cli_holds(dir, "err.0",
+                    "warning: 'aces.exr' names colour space 'ACEScg', which the OCIO config does not know; "
+                    "decoded as 'scene_linear'"),
           "a file's unknown colour space is reported, with the space used");
     CHECK(first_red(0) == first_red(1), "the file's wrap modes are used: %g, %g", first_red(0), first_red(1));
     CHECK(first_red(2) != first_red(0), "--wrap-s overrides them: %g, %g", first_red(2), first_red(0));
-    CHECK(rc[3] == 1 && holds("err.3", "unknown colour space 'nosuch'; the OCIO config 'aces.ocio' has ACES2065-1, "
-                                       "ACEScg, sRGB - Texture, Raw"),
+    CHECK(rc[3] == 1 && cli_holds(dir, "err.3",
+                                  "unknown colour space 'nosuch'; the OCIO config 'aces.ocio' has ACES2065-1, "
+                                  "ACEScg, sRGB - Texture, Raw"),
           "an unknown --colorspace lists the config's names");
 }
 
@@ -220,11 +215,7 @@ int main(int argc, char **argv)
     snprintf(dir, sizeof dir, "%s", tmpl);
     unsetenv("OCIO");
     RUN(colour_and_wrap);
-    {
-        char cmd[512];
-        snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-        if (check_shell(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
-    }
+    cli_remove_dir(dir);
     free(exe);
     return check_finish();
 }

@@ -8,6 +8,7 @@
  */
 #define _XOPEN_SOURCE 700
 #include "check.h"
+#include "cli_util.h"
 #include "sample/sample.h"
 
 #include <stdio.h>
@@ -109,16 +110,6 @@ static void exit_codes(void)
     CHECK(run("lookup --raw tex.raw --w 0 --h 2 --queries q.raw") == 2, "zero width");
 }
 
-/* Does the file `name` in the scratch dir hold `text`? */
-static int holds(const char *name, const char *text)
-{
-    char *s = check_slurp_in(dir, name);
-    int r = s && strstr(s, text) != NULL;
-    if (!r) printf("  %s: wanted \"%s\", got \"%s\"\n", name, text, s ? s : "(nothing)");
-    free(s);
-    return r;
-}
-
 /* The shared parser (tools/cli.c): --opt=value, "--", a missing value
  * naming its option, usage errors exiting 2 from whichever command, and
  * read errors saying why. */
@@ -130,40 +121,45 @@ static void syntax(void)
           "--opt=value");
     CHECK(get("r.raw", out, sizeof out) == sizeof out, "output size");
     CHECK_EQF(out[0], 2.75f);
-    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries") == 2 && holds("err.txt", "option --queries needs a value"),
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries") == 2 &&
+              cli_holds(dir, "err.txt", "option --queries needs a value"),
           "missing value names the option");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --wrap") == 2 &&
-              holds("err.txt", "option --wrap needs a value"),
+              cli_holds(dir, "err.txt", "option --wrap needs a value"),
           "missing sampler value names the option");
-    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries=") == 2 && holds("err.txt", "option --queries needs a value"),
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries=") == 2 &&
+              cli_holds(dir, "err.txt", "option --queries needs a value"),
           "empty value after = is missing");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --text=yes") == 2 &&
-              holds("err.txt", "option --text takes no value"),
+              cli_holds(dir, "err.txt", "option --text takes no value"),
           "a flag given a value");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw extra") == 2 &&
-              holds("err.txt", "unexpected argument 'extra'"),
+              cli_holds(dir, "err.txt", "unexpected argument 'extra'"),
           "an operand lookup does not take");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw -- --text") == 2 &&
-              holds("err.txt", "unexpected argument './--text'"),
+              cli_holds(dir, "err.txt", "unexpected argument './--text'"),
           "after --, an option-like argument is an operand");
-    CHECK(run("info --raw tex.raw") == 2 && holds("err.txt", "--raw needs --w and --h"), "info --raw without a size is a usage error");
+    CHECK(run("info --raw tex.raw") == 2 && cli_holds(dir, "err.txt", "--raw needs --w and --h"),
+          "info --raw without a size is a usage error");
     CHECK(run("lookup --raw tex.raw --queries q.raw") == 2, "lookup --raw without a size is a usage error");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries missing.raw") == 1 &&
-              holds("err.txt", "cannot read query file 'missing.raw': No such file or directory"),
+              cli_holds(dir, "err.txt", "cannot read query file 'missing.raw': No such file or directory"),
           "missing query file says why");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries .") == 1 &&
-              holds("err.txt", "cannot read query file '.': Is a directory"),
+              cli_holds(dir, "err.txt", "cannot read query file '.': Is a directory"),
           "a directory as query file says why");
-    CHECK(run("lookup --raw . --w 2 --h 2 --queries q.raw") == 1 && holds("err.txt", "cannot read '.': Is a directory"),
+    CHECK(run("lookup --raw . --w 2 --h 2 --queries q.raw") == 1 &&
+              cli_holds(dir, "err.txt", "cannot read '.': Is a directory"),
           "a directory as texture says why");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --out nodir/r.raw") == 1 &&
-              holds("err.txt", "cannot write 'nodir/r.raw': No such file or directory"),
+              cli_holds(dir, "err.txt", "cannot write 'nodir/r.raw': No such file or directory"),
           "an unwritable output says why");
     /* "--" lets an image file start with '-' (run in the image program). */
     snprintf(args, sizeof args, "cp %s/testimages/rgb8.png %s/-rgb8.png", source, dir);
     CHECK(check_shell(args) == 0, "copy a test image");
-    CHECK(run("info -- -rgb8.png") == 0 && holds("out.txt", "size      19 x 13"), "info -- -rgb8.png");
-    CHECK(run("info -rgb8.png") == 2 && holds("err.txt", "unknown option '-rgb8.png'"), "without --, it is an option");
+    CHECK(run("info -- -rgb8.png") == 0 && cli_holds(dir, "out.txt", "size      19 x 13"), "info -- -rgb8.png");
+    CHECK(run("info -rgb8.png") == 2 && cli_holds(dir, "err.txt", "unknown option '-rgb8.png'"),
+          "without --, it is an option");
 }
 
 int main(int argc, char **argv)
@@ -179,11 +175,7 @@ int main(int argc, char **argv)
     RUN(explicit_levels);
     RUN(exit_codes);
     RUN(syntax);
-    {
-        char cmd[512];
-        snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-        if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
-    }
+    cli_remove_dir(dir);
     free(exe);
     return check_finish();
 }

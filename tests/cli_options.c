@@ -9,6 +9,7 @@
  */
 #define _XOPEN_SOURCE 700
 #include "check.h"
+#include "cli_util.h"
 
 #include <ctype.h>
 #include <stdio.h>
@@ -73,7 +74,6 @@ int main(int argc, char **argv)
         free(help);
         free(rc);
     }
-    snprintf(cmd, sizeof cmd, "rm -rf %s", tmpl);
-    if (check_shell(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmpl);
+    cli_remove_dir(tmpl);
     return check_finish();
 }

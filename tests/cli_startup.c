@@ -11,6 +11,7 @@
  */
 #define _XOPEN_SOURCE 700
 #include "check.h"
+#include "cli_util.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -85,7 +86,8 @@ int main(int argc, char **argv)
         }
         {
             char *out = check_slurp_in(dir, "out.txt");
-            CHECK(out && strcmp(out, "0.5 0.5 -> 0.25 0.5 0.75 1\n") == 0, "the raw lookup's result: %s", out ? out : "");
+            CHECK(out && strcmp(out, "0.5 0.5 -> 0.25 0.5 0.75 1\n") == 0, "the raw lookup's result: %s",
+                  out ? out : "");
             free(out);
         }
     }
@@ -98,8 +100,7 @@ int main(int argc, char **argv)
     }
     printf("lookup --help: best of 5 %.3f s\n", best);
     CHECK(best < 0.2, "lookup --help starts in under 0.2 s (%.3f s)", best);
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    if (check_shell(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
+    cli_remove_dir(dir);
     free(exe);
     return check_finish();
 }

@@ -99,7 +99,8 @@ int cmd_lookup(int argc, char **argv)
             mip.filter = (sample_mipgen)m;
             continue;
         }
-        if (argv[i][0] != '-') return cli_usage_error(sub, "unexpected argument '%s' (files are given by options)", argv[i]);
+        if (argv[i][0] != '-')
+            return cli_usage_error(sub, "unexpected argument '%s' (files are given by options)", argv[i]);
         return cli_usage_error(sub, "unknown option '%s'", argv[i]);
     }
     if (!qpath) return cli_usage_error(sub, "--queries FILE is required");

@@ -26,7 +26,8 @@ int image_program_run(int argc, char **argv)
     ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
     char *slash;
     int k;
-    if (n <= 0) return cli_runtime_error(argv[0], "cannot find this program's path (/proc/self/exe): %s", strerror(errno));
+    if (n <= 0)
+        return cli_runtime_error(argv[0], "cannot find this program's path (/proc/self/exe): %s", strerror(errno));
     self[n] = '\0';
     slash = strrchr(self, '/');
     if (slash) *slash = '\0';
