@@ -45,6 +45,17 @@ static sample_status src_read(io_source *s, int k, io_ptype type, int nchan, voi
 static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture",
                                          "Utility - sRGB - Texture"};
 
+/* OpenImageIO's own names for what the rule below assumes anyway: "sRGB"
+ * for 8- and 16-bit PNG, JPEG and TIFF, "Linear" (OpenEXR, whether or not
+ * the file names a space) or "linear" (Radiance HDR) for half and float.
+ * A config that spells these spaces otherwise (ACES: "sRGB - Texture")
+ * decodes them the same, so they are not reported as unknown. */
+static int oiio_generic_name(const char *name, io_ptype native)
+{
+    if (native == IO_HALF || native == IO_FLOAT) return strcmp(name, "Linear") == 0 || strcmp(name, "linear") == 0;
+    return strcmp(name, "sRGB") == 0;
+}
+
 /* *unknown is set when the file names a space the config does not know. */
 static sample_status choose_colorspace(const io_colour *col, const sample_io_options *o,
                                        const io_reader_info *inf, const char **name, int *unknown,
@@ -65,7 +76,7 @@ static sample_status choose_colorspace(const io_colour *col, const sample_io_opt
             *name = inf->colorspace;
             return SAMPLE_OK;
         }
-        *unknown = 1;
+        *unknown = !oiio_generic_name(inf->colorspace, inf->native);
     }
     if (inf->native == IO_HALF || inf->native == IO_FLOAT) {
         *name = "scene_linear";
