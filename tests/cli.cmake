@@ -20,12 +20,13 @@ if(TARGET texsample_cli)
   target_compile_options(cli_options PRIVATE ${SAMPLE_WARNINGS})
   add_test(NAME cli_options COMMAND cli_options $<TARGET_FILE:texsample_cli>)
   set_tests_properties(cli_options PROPERTIES TIMEOUT 60)
-  # Colour labels, colour-space names and stored wrap modes.
+  # Colour labels, colour-space names and stored wrap modes (the flat file
+  # with wrap modes is made by oiiotool: that part skipped, 77, without it).
   add_executable(cli_colour ${CMAKE_CURRENT_SOURCE_DIR}/cli_colour.c)
   target_include_directories(cli_colour PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_compile_options(cli_colour PRIVATE ${SAMPLE_WARNINGS})
   add_test(NAME cli_colour COMMAND cli_colour $<TARGET_FILE:texsample_cli> ${PROJECT_SOURCE_DIR})
-  set_tests_properties(cli_colour PROPERTIES TIMEOUT 60)
+  set_tests_properties(cli_colour PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 60)
 endif()
 # The filter registry (tools/filters.h) the tools share: its names, aliases
 # and settings, and that each tool's --help lists and runs its names.

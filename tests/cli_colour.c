@@ -158,6 +158,34 @@ static float first_red(int k)
     return r;
 }
 
+/* A flat OpenEXR file (no levels) that stores "mirror,mirror": lookup
+ * builds its pyramid with Lanczos-3, which reads past the edges, so the
+ * edge handling of the pyramid shows in a minified corner lookup. */
+static void flat_file_pyramid(void)
+{
+    const float q[6] = {0.02f, 0.03f, 0.2f, 0, 0, 0.2f};
+    const char *env[2] = {"", ""};
+    const char *args[2] = {"lookup --image flat.exr --mipgen lanczos3 --queries corner.raw --text",
+                           "lookup --image flat.exr --mipgen lanczos3 --queries corner.raw --text "
+                           "--wrap mirrored_repeat"};
+    char cmd[1024];
+    int rc[2];
+    FILE *f;
+    snprintf(cmd, sizeof cmd, "command -v oiiotool >/dev/null && cd %s && oiiotool %s --attrib wrapmodes mirror,mirror "
+                              "-d half -o flat.exr",
+             dir, image);
+    if (check_shell(cmd) != 0) {
+        check_skip("no oiiotool to write a flat file with wrap modes");
+        return;
+    }
+    snprintf(cmd, sizeof cmd, "%s/corner.raw", dir);
+    if ((f = fopen(cmd, "wb")) != NULL) fwrite(q, sizeof q, 1, f), fclose(f);
+    run_all(2, env, args, rc);
+    CHECK(rc[0] == 0 && rc[1] == 0, "lookups: %d %d", rc[0], rc[1]);
+    CHECK(first_red(0) == first_red(1) && first_red(0) > 0, "the built pyramid's edges follow the file: %g, %g",
+          first_red(0), first_red(1));
+}
+
 static void colour_and_wrap(void)
 {
     const float q[6] = {-0.3f, 0.5f, 0, 0, 0, 0}; /* left of the texture */
@@ -222,6 +250,7 @@ int main(int argc, char **argv)
     snprintf(dir, sizeof dir, "%s", tmpl);
     unsetenv("OCIO");
     RUN(colour_and_wrap);
+    RUN(flat_file_pyramid);
     cli_remove_dir(dir);
     free(exe);
     return check_finish();
