@@ -7,7 +7,7 @@
 
 static const char help[] =
     "usage: texsample info (--image FILE | --raw FILE --w W --h H [--levels PREFIX])\n"
-    "                      [--mipgen box|lanczos3|kaiser|none]\n\n"
+    "                      [--colorspace NAME] [--mipgen box|lanczos3|kaiser|none]\n\n"
     "Prints the size, channels, storage format and every mip level of a texture.\n";
 
 int cmd_info(int argc, char **argv)

@@ -102,6 +102,7 @@ int cmd_mip(int argc, char **argv)
     }
     if (!in || !outp) return cli_usage_error(sub, "an input image and an output file are required");
     x.wrap_s = mip.wrap_s;
+    x.ocio_config = o.ocio_config;
     x.wrap_t = mip.wrap_t;
     x.progress = progress;
     if (sample_io_read_texture(in, &o, &mip, &tex, &err) != SAMPLE_OK)

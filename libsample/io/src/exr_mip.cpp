@@ -7,6 +7,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTileDescription.h>
 #include <OpenEXR/ImfTiledOutputFile.h>
@@ -16,18 +17,6 @@
 #include <string>
 #include <vector>
 
-// The "wrapmodes" attribute as maketx and OIIO's TextureSystem spell it
-// (black, clamp, periodic, mirror); modes without an equivalent say clamp.
-static const char *wrap_word(sample_wrap w)
-{
-    switch (w) {
-    case SAMPLE_WRAP_REPEAT: return "periodic";
-    case SAMPLE_WRAP_MIRRORED_REPEAT: return "mirror";
-    case SAMPLE_WRAP_CLAMP_TO_BORDER: return "black";
-    default: return "clamp";
-    }
-}
-
 static int full_chain(int w, int h)
 {
     int n = 1, m = w > h ? w : h;
@@ -36,7 +25,8 @@ static int full_chain(int w, int h)
 }
 
 extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
-                                          const sample_io_exr_options *o, sample_error *err)
+                                          const sample_io_exr_options *o, const io_colour_label *label,
+                                          sample_error *err)
 {
     static const char *const names[4] = {"R", "G", "B", "A"};
     sample_texture_info inf;
@@ -54,8 +44,19 @@ extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_tex
                                                     Imf::ROUND_DOWN));
         for (int c = 0; c < inf.channels; ++c) hdr.channels().insert(names[c], Imf::Channel(pt));
         hdr.compression() = Imf::ZIP_COMPRESSION; // maketx's default, lossless
-        std::string wrap = std::string(wrap_word(o->wrap_s)) + "," + wrap_word(o->wrap_t);
+        std::string wrap = std::string(io_wrap_word(o->wrap_s)) + "," + io_wrap_word(o->wrap_t);
         hdr.insert("wrapmodes", Imf::StringAttribute(wrap));
+        // The working space by its own name (OpenImageIO reads it back as
+        // oiio:ColorSpace) and, where known, OpenEXR's standard
+        // chromaticities (absent, a reader assumes Rec.709).
+        if (label) {
+            hdr.insert("oiio:ColorSpace", Imf::StringAttribute(label->name));
+            if (label->has_chromaticities) {
+                const float *c = label->chromaticities;
+                Imf::addChromaticities(hdr, Imf::Chromaticities(Imath::V2f(c[0], c[1]), Imath::V2f(c[2], c[3]),
+                                                                Imath::V2f(c[4], c[5]), Imath::V2f(c[6], c[7])));
+            }
+        }
         Imf::TiledOutputFile out(tmp_path, hdr);
 
         size_t done = 0, total = 0;

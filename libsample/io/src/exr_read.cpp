@@ -14,6 +14,7 @@
 #include <OpenEXR/ImfMultiPartInputFile.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTileDescription.h>
 #include <OpenEXR/ImfTiledInputPart.h>
 
@@ -138,9 +139,16 @@ extern "C" sample_status io_exr_tiled_open(const char *path, const void *data, s
         inf.nlevels = x->part->numLevels();
         inf.alpha_channel = x->nchan == 4 ? 3 : -1;
         inf.native = x->type == Imf::HALF ? IO_HALF : IO_FLOAT;
-        // No colour space metadata: OIIO 2.4 reports every OpenEXR file as
-        // linear, so the rule (half/float is linear) decides on both paths
-        // alike; a forced non-linear space goes to OIIO (io_read.c).
+        // The metadata OIIO's reader reports too: a colour space named in
+        // the file (oiio:ColorSpace, as sample_io_write_mip_exr writes it;
+        // without one OIIO 2.4 says linear, and the rule decides alike)
+        // and the wrap modes. A space that needs converting goes to OIIO
+        // (io_read.c).
+        const Imf::Header &h = x->file->header(0);
+        if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("oiio:ColorSpace"))
+            std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", a->value().c_str());
+        if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("wrapmodes"))
+            std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", a->value().c_str());
         *out = x.release();
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {

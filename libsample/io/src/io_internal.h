@@ -40,7 +40,15 @@ typedef struct io_reader_info {
     int alpha_channel;  /* index of alpha, −1 if none */
     io_ptype native;    /* the type the level should be read as */
     char colorspace[64];/* oiio:ColorSpace metadata, "" if none */
+    char wrapmodes[64]; /* "wrapmodes" metadata ("periodic,clamp"), "" if none */
 } io_reader_info;
+
+/* io_wrapmodes.c: the words of the "wrapmodes" attribute (maketx, OIIO's
+ * TextureSystem) for libsample's wrap modes, both ways. Modes without a
+ * word of their own are written "clamp". io_wrapmodes_parse reads "S,T"
+ * (or one word for both); 0 if it names no mode libsample has. */
+const char *io_wrap_word(sample_wrap w);
+int io_wrapmodes_parse(const char *s, sample_wrap *wrap_s, sample_wrap *wrap_t);
 
 /* Exactly one of path or (data, size) is given. format_hint may be NULL. */
 sample_status io_reader_open(const char *path, const void *data, size_t size,
@@ -83,6 +91,20 @@ sample_status io_colour_open(const char *path, io_colour **out, sample_error *er
 void io_colour_close(io_colour *c); /* accepts NULL */
 /* Does the config know this colour space (name, role or alias)? */
 int io_colour_known(const io_colour *c, const char *name);
+/* SAMPLE_OK if the config knows `name`, else SAMPLE_E_COLOR with a
+ * message naming it and listing the config's colour spaces. */
+sample_status io_colour_require(const io_colour *c, const char *name, sample_error *err);
+/* What a file written in colour space `name` is labelled with: the space's
+ * own name (a role or alias such as scene_linear resolved: "ACEScg" under
+ * an ACES config) and, where the config ties it to ACES2065-1 without a
+ * change of white, its chromaticities (OpenEXR's order: CIE xy of red,
+ * green, blue, white). */
+typedef struct io_colour_label {
+    char name[128];
+    int has_chromaticities;
+    float chromaticities[8];
+} io_colour_label;
+void io_colour_label_get(const io_colour *c, const char *name, io_colour_label *out);
 /* Is the space data (no conversion) or the scene_linear space itself? */
 int io_colour_is_linear(const io_colour *c, const char *name);
 /* Does src → scene_linear equal the sRGB EOTF on every 8-bit code? Then
@@ -98,13 +120,15 @@ sample_status io_colour_apply(const io_colour *c, const char *name, int to_linea
 
 /* Write w × h × nchan pixels of `type` to tmp_path in the format of
  * final_path's extension; names may be NULL (R, G, B, A). The spec carries
- * the colour space name as oiio:ColorSpace when non-NULL. */
+ * the label's name as oiio:ColorSpace and its chromaticities, when label is
+ * non-NULL. */
 sample_status io_oiio_write(const char *final_path, const char *tmp_path, const void *px,
                             io_ptype type, int w, int h, int nchan, const char *const *names,
-                            const char *colorspace, sample_error *err);
+                            const io_colour_label *label, sample_error *err);
 
+/* The file carries the label's name (oiio:ColorSpace) and chromaticities. */
 sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
-                               const sample_io_exr_options *o, sample_error *err);
+                               const sample_io_exr_options *o, const io_colour_label *label, sample_error *err);
 
 /* Make a new, empty, uniquely named file beside `path` (same directory);
  * tmp receives its name. */

@@ -45,22 +45,38 @@ static sample_status src_read(io_source *s, int k, io_ptype type, int nchan, voi
 static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture",
                                          "Utility - sRGB - Texture"};
 
+/* OpenImageIO's own names for what the rule below assumes anyway: "sRGB"
+ * for 8- and 16-bit PNG, JPEG and TIFF, "Linear" (OpenEXR, whether or not
+ * the file names a space) or "linear" (Radiance HDR) for half and float.
+ * A config that spells these spaces otherwise (ACES: "sRGB - Texture")
+ * decodes them the same, so they are not reported as unknown. */
+static int oiio_generic_name(const char *name, io_ptype native)
+{
+    if (native == IO_HALF || native == IO_FLOAT) return strcmp(name, "Linear") == 0 || strcmp(name, "linear") == 0;
+    return strcmp(name, "sRGB") == 0;
+}
+
+/* *unknown is set when the file names a space the config does not know. */
 static sample_status choose_colorspace(const io_colour *col, const sample_io_options *o,
-                                       const io_reader_info *inf, const char **name, sample_error *err)
+                                       const io_reader_info *inf, const char **name, int *unknown,
+                                       sample_error *err)
 {
     size_t k;
+    *unknown = 0;
     if (o->colorspace) {
-        if (!io_colour_known(col, o->colorspace))
-            return sample_error_set(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", o->colorspace);
         *name = o->colorspace;
-        return SAMPLE_OK;
+        return io_colour_require(col, o->colorspace, err);
     }
     /* Metadata the config does not know (OIIO writes names like
      * "GammaCorrected1.8") falls through to the rule rather than failing:
-     * files carry all sorts of names. */
-    if (inf->colorspace[0] && io_colour_known(col, inf->colorspace)) {
-        *name = inf->colorspace;
-        return SAMPLE_OK;
+     * files carry all sorts of names. The caller is told (file_info), so
+     * that a program can say which name was not known and what was used. */
+    if (inf->colorspace[0]) {
+        if (io_colour_known(col, inf->colorspace)) {
+            *name = inf->colorspace;
+            return SAMPLE_OK;
+        }
+        *unknown = !oiio_generic_name(inf->colorspace, inf->native);
     }
     if (inf->native == IO_HALF || inf->native == IO_FLOAT) {
         *name = "scene_linear";
@@ -180,7 +196,9 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
     read_plan p;
     sample_image lv[SAMPLE_MAX_LEVELS];
     void *data[SAMPLE_MAX_LEVELS] = {0};
-    int count = 0, k;
+    sample_mip_params file_mip;
+    sample_wrap ws = SAMPLE_WRAP_REPEAT, wt = SAMPLE_WRAP_REPEAT;
+    int count = 0, k, unknown = 0, has_wrap;
     sample_status st;
     if (!o) {
         sample_io_options_init(&defaults);
@@ -197,7 +215,24 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
     memset(&p, 0, sizeof p);
     p.nchan = inf.channels < 4 ? inf.channels : 4;
     st = io_colour_open(o->ocio_config, &col, err);
-    if (st == SAMPLE_OK) st = choose_colorspace(col, o, &inf, &p.colorspace, err);
+    if (st == SAMPLE_OK) st = choose_colorspace(col, o, &inf, &p.colorspace, &unknown, err);
+    has_wrap = inf.wrapmodes[0] && io_wrapmodes_parse(inf.wrapmodes, &ws, &wt);
+    if (st == SAMPLE_OK && o->file_info) {
+        sample_io_file_info *fi = o->file_info;
+        memset(fi, 0, sizeof *fi);
+        snprintf(fi->colorspace, sizeof fi->colorspace, "%s", inf.colorspace);
+        fi->colorspace_unknown = unknown;
+        snprintf(fi->colorspace_used, sizeof fi->colorspace_used, "%s", p.colorspace);
+        fi->has_wrap = has_wrap;
+        fi->wrap_s = ws;
+        fi->wrap_t = wt;
+    }
+    if (has_wrap && o->mip_wrap_from_file && mip) {
+        file_mip = *mip;
+        file_mip.wrap_s = ws;
+        file_mip.wrap_t = wt;
+        mip = &file_mip;
+    }
     if (st == SAMPLE_OK && r->exr && !io_colour_is_linear(col, p.colorspace)) {
         *fallback = 1;
         io_colour_close(col);

@@ -62,6 +62,7 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     sample_io_type type;
     const char *cs;
     io_colour *col = NULL;
+    io_colour_label label;
     float *buf = NULL;
     size_t n, i;
     char tmp[4096];
@@ -84,10 +85,10 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     if (!cs && (type == SAMPLE_IO_TYPE_HALF || type == SAMPLE_IO_TYPE_FLOAT)) cs = "scene_linear";
     for (i = 0; !cs && i < sizeof srgb_names / sizeof srgb_names[0]; ++i)
         if (io_colour_known(col, srgb_names[i])) cs = srgb_names[i];
-    if (!cs || !io_colour_known(col, cs)) {
-        st = sample_error_set(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", cs ? cs : "sRGB");
-        goto done;
-    }
+    st = cs ? io_colour_require(col, cs, err)
+            : sample_error_set(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit files");
+    if (st != SAMPLE_OK) goto done;
+    io_colour_label_get(col, cs, &label);
     n = (size_t)w * (size_t)h;
     if (!(buf = malloc(n * (size_t)channels_to_write * sizeof(float)))) {
         st = sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a %d x %d image", w, h);
@@ -101,7 +102,7 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     st = io_tmp_create(path, tmp, sizeof tmp, err);
     if (st != SAMPLE_OK) goto done;
     /* sample_io_type U8 … FLOAT are io_ptype IO_U8 … IO_FLOAT plus one. */
-    st = io_oiio_write(path, tmp, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, cs, err);
+    st = io_oiio_write(path, tmp, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, &label, err);
     st = io_tmp_finish(st, tmp, path, err);
 done:
     free(buf);
@@ -147,6 +148,8 @@ sample_status sample_io_write_mip_exr(const char *path, const sample_texture *te
 {
     sample_io_exr_options defaults;
     char tmp[4096];
+    io_colour *col = NULL;
+    io_colour_label label;
     sample_status st;
     if (!path || !*path || !tex)
         return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_write_mip_exr: no path or no texture");
@@ -157,8 +160,13 @@ sample_status sample_io_write_mip_exr(const char *path, const sample_texture *te
     if (o->tile_w < 1 || o->tile_h < 1 || o->tile_w > 4096 || o->tile_h > 4096)
         return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "tile size %d x %d: each side must be 1 to 4096", o->tile_w,
                        o->tile_h);
+    /* The texels are in the config's scene_linear space: say which. */
+    st = io_colour_open(o->ocio_config, &col, err);
+    if (st != SAMPLE_OK) return st;
+    io_colour_label_get(col, "scene_linear", &label);
+    io_colour_close(col);
     st = io_tmp_create(path, tmp, sizeof tmp, err);
     if (st != SAMPLE_OK) return st;
-    st = io_exr_write_mip(tmp, tex, o, err);
+    st = io_exr_write_mip(tmp, tex, o, &label, err);
     return io_tmp_finish(st, tmp, path, err);
 }

@@ -122,6 +122,8 @@ extern "C" sample_status io_reader_open(const char *path, const void *data, size
         inf.native = native_type(spec.format);
         std::string cs = spec.get_string_attribute("oiio:ColorSpace");
         std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", cs.c_str());
+        std::string wrap = spec.get_string_attribute("wrapmodes");
+        std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", wrap.c_str());
         if (spec.depth != 1)
             return sample_error_set(err, SAMPLE_E_UNSUPPORTED, "volume images (depth %d) are not textures", spec.depth);
         // Mip levels of subimage 0, as maketx and `texsample mip` store them.

@@ -9,7 +9,7 @@
 using namespace OIIO;
 
 extern "C" sample_status io_oiio_write(const char *final_path, const char *tmp_path, const void *px, io_ptype type,
-                                       int w, int h, int nchan, const char *const *names, const char *colorspace,
+                                       int w, int h, int nchan, const char *const *names, const io_colour_label *label,
                                        sample_error *err)
 {
     static const TypeDesc types[] = {TypeDesc::UINT8, TypeDesc::UINT16, TypeDesc::HALF, TypeDesc::FLOAT};
@@ -31,7 +31,14 @@ extern "C" sample_status io_oiio_write(const char *final_path, const char *tmp_p
         }
         // Store the values as given: no premultiplied/straight conversion.
         spec.attribute("oiio:UnassociatedAlpha", 1);
-        if (colorspace) spec.attribute("oiio:ColorSpace", colorspace);
+        if (label) {
+            spec.attribute("oiio:ColorSpace", label->name);
+            // OpenEXR's standard chromaticities attribute (OIIO passes a
+            // float[8] "chromaticities" through). OIIO 2.4's OpenEXR writer
+            // drops oiio:ColorSpace; later versions keep it.
+            if (label->has_chromaticities)
+                spec.attribute("chromaticities", TypeDesc(TypeDesc::FLOAT, 8), label->chromaticities);
+        }
         if (!out->open(tmp_path, spec) || !out->write_image(types[type], px) || !out->close()) {
             std::string msg = out->geterror();
             return sample_error_set(err, SAMPLE_E_IO, "cannot write '%s': %s", final_path, msg.c_str());

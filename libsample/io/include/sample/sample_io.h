@@ -64,6 +64,23 @@ extern "C" {
 
 /* ---- Reading ------------------------------------------------------------ */
 
+/* What a file says about itself, and what the reader made of it: filled
+ * when sample_io_options.file_info points here. */
+typedef struct sample_io_file_info {
+    /* The file's colour-space metadata (oiio:ColorSpace), "" if none. */
+    char colorspace[64];
+    /* 1: the file names a colour space the OCIO config does not know, and
+     * colorspace_used was chosen by the rule instead (section 2). */
+    int colorspace_unknown;
+    /* The space the texels were converted from (an OCIO name or role). */
+    char colorspace_used[64];
+    /* 1: the file stores wrap modes ("wrapmodes", as maketx, OIIO's
+     * TextureSystem and sample_io_write_mip_exr write them: black, clamp,
+     * periodic, mirror), in wrap_s and wrap_t. */
+    int has_wrap;
+    sample_wrap wrap_s, wrap_t;
+} sample_io_file_info;
+
 typedef struct sample_io_options {
     /* Source colour space (an OCIO name, role or alias). NULL: from the file
      * metadata, else the rule in section 2. */
@@ -77,6 +94,12 @@ typedef struct sample_io_options {
      * allocate; a file claiming more gives SAMPLE_E_TOO_LARGE before any
      * pixel is read. 0 means the default, SAMPLE_IO_DEFAULT_MAX_BYTES. */
     size_t max_bytes;
+    /* NULL, or filled with what the file says (above). */
+    sample_io_file_info *file_info;
+    /* 1: a pyramid built here (the file holds no levels) takes its edges
+     * from the file's wrap modes where it stores them, rather than from
+     * `mip`; 0 (default): from `mip`. */
+    int mip_wrap_from_file;
 } sample_io_options;
 
 #define SAMPLE_IO_DEFAULT_MAX_BYTES ((size_t)1 << 32) /* 4 GiB */
@@ -145,6 +168,10 @@ typedef struct sample_io_exr_options {
     /* Called after each tile row is written (may be NULL). */
     void (*progress)(void *user, size_t done, size_t total);
     void *progress_user;
+    /* The OCIO config whose scene_linear space the texels are in, named in
+     * the file (oiio:ColorSpace, chromaticities where known). NULL: $OCIO
+     * if set, else the shipped config. */
+    const char *ocio_config;
 } sample_io_exr_options;
 
 SAMPLE_IO_API void sample_io_exr_options_init(sample_io_exr_options *o);
