@@ -175,6 +175,9 @@ typedef struct fp_level_rows {
     const void *lg;
     int lv, nrows, tr;
     int in_place; /* float RGBA: texels inside the level are read where they are */
+    /* hlim is 0 unless the texture is resident: the in-level tests
+     * (fp_span_at, the counting passes, the prefetches) then fail without
+     * a test of their own, and every texel is read through ctx_texel. */
     double jlo, u0, v0, wlim, hlim;
     const unsigned char *data; /* the level's texel (0, 0); NULL unless resident */
     const isa_kernels *k;      /* the batch's kernels (sample_ctx.isa) */
@@ -212,7 +215,7 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     lr->u0 = uw;
     lr->v0 = vw;
     lr->wlim = (double)(tr ? L->h : L->w);
-    lr->hlim = (double)(tr ? L->w : L->h);
+    lr->hlim = tex_resident(c->tex) ? (double)(tr ? L->w : L->h) : 0.0;
     lr->data = tex_resident(c->tex) ? L->data : NULL;
     lr->k = c->isa;
     lr->pitch = tr ? L->stride : tb;
@@ -249,7 +252,7 @@ SAMPLE_FORCE_INLINE void fp_prefetch_texels(const fp_level_rows *lr, const unsig
 SAMPLE_FORCE_INLINE void fp_prefetch_span(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
     double lo = ilo < 0.0 ? 0.0 : ilo, hi = ilo + ncol - 1.0;
-    if (!lr->data || !(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
+    if (!(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
     if (hi > lr->wlim - 1.0) hi = lr->wlim - 1.0;
     if (!(lo <= hi)) return;
     fp_prefetch_texels(lr, fp_texel_at(lr, j, lo), hi - lo + 1.0);
@@ -272,7 +275,7 @@ typedef struct fp_spans {
  * ctx_texel's own shortcut), NULL otherwise (read through ctx_texel). */
 SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
-    if (lr->data && j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim) return fp_texel_at(lr, j, ilo);
+    if (j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim) return fp_texel_at(lr, j, ilo);
     return NULL;
 }
 
