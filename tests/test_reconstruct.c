@@ -299,6 +299,79 @@ static void bilinear_derivatives(void)
     sample_texture_destroy(t);
 }
 
+/* SAMPLE_OPT_CUBIC_CLAMP is continuous (reconstruct.c, cubic_clamp): on a
+ * step (0 | 1 between texels 7 and 8) and on a diagonal step, swept in
+ * steps of 1/512 texel across texel centres, no clamped value jumps by more
+ * than the filter's own slope allows (a clamp to the central 2 × 2 alone
+ * jumps by 1/6 for the B-spline and 1/18 for Mitchell at the centres of
+ * texels 7 and 8). By hand: at the centre of texel 7 the B-spline gives
+ * (0 + 4·0 + 1)/6 = 1/6, inside the clamp's range [0, ½] there (the
+ * interpolant at x + 1 is halfway up the step), so it is kept; Catmull–Rom
+ * still never leaves [0, 1]. Where the result is clamped its derivative is
+ * the bound's: a finite difference agrees with it. */
+static void cubic_clamp_continuous(void)
+{
+    enum { N = 16 };
+    float step[N * N * 4], diag[N * N * 4];
+    int i, j, v, which;
+    for (j = 0; j < N; ++j)
+        for (i = 0; i < N; ++i) {
+            float *st = &step[4 * (j * N + i)], *d = &diag[4 * (j * N + i)];
+            st[0] = i < 8 ? 0.0f : 1.0f; st[1] = st[2] = 0.0f; st[3] = 1.0f;
+            d[0] = i + j < 16 ? 0.0f : 1.0f; d[1] = d[2] = 0.0f; d[3] = 1.0f;
+        }
+    for (which = 0; which < 2; ++which)
+        for (v = 0; v < SAMPLE_CUBIC_COUNT; ++v) {
+            sample_texture *t = make_tex(N, N, 4, SAMPLE_FORMAT_F32, which ? diag : step);
+            sample_sampler s;
+            double jump = 0.0, prev = 0.0, worst_deriv = 0.0;
+            int k;
+            sampler_for(&s, SAMPLE_CUBIC, SAMPLE_WRAP_CLAMP_TO_EDGE);
+            s.cubic = (sample_cubic)v;
+            s.options |= SAMPLE_OPT_CUBIC_CLAMP;
+            for (k = 0; k <= 6 * 512; ++k) {
+                const float u = 5.0f + (float)k / 512.0f, tv = which ? 16.0f - u + 0.25f : 8.5f;
+                sample_query q = {0};
+                sample_batch_args a;
+                float out[4], ds[4], out2[4];
+                q.s = u / N;
+                q.t = tv / N;
+                memset(&a, 0, sizeof a);
+                a.count = 1; a.queries = &q; a.rgba = out; a.drgba_ds = ds;
+                CHECK(sample_batch(t, &s, &a) == SAMPLE_OK, "batch");
+                CHECK(out[0] >= 0.0f && out[0] <= 1.0f, "%s clamped at u = %g: %g", sample_cubic_name(s.cubic),
+                      (double)u, (double)out[0]);
+                if (k > 0 && fabs(out[0] - prev) > jump) jump = fabs(out[0] - prev);
+                prev = out[0];
+                /* Central difference of ±1/4096 texel in s against ds
+                 * (per unit s: N per texel), away from texel centres
+                 * and the step's edges where the slope has a kink. */
+                if (!which && k % 64 == 17) {
+                    const float h = 1.0f / 4096.0f;
+                    float lo[4];
+                    q.s = (u + h) / N;
+                    a.rgba = out2; a.drgba_ds = NULL;
+                    CHECK(sample_batch(t, &s, &a) == SAMPLE_OK, "batch");
+                    q.s = (u - h) / N;
+                    a.rgba = lo;
+                    CHECK(sample_batch(t, &s, &a) == SAMPLE_OK, "batch");
+                    {
+                        double fd = (out2[0] - lo[0]) / (2.0 * h) * N, e = fabs(fd - ds[0]);
+                        if (e > worst_deriv) worst_deriv = e;
+                    }
+                }
+            }
+            /* The steepest slope is below 2 per texel (Catmull–Rom's 1.25
+             * on a unit step), so a step of 1/512 texel moves < 0.005. */
+            CHECK(jump < 0.005, "%s%s: clamped result jumps by %g", sample_cubic_name(s.cubic),
+                  which ? " (diagonal)" : "", jump);
+            CHECK(worst_deriv < 0.05, "%s: derivative off a finite difference by %g", sample_cubic_name(s.cubic),
+                  worst_deriv);
+            if (!which && v == SAMPLE_CUBIC_BSPLINE) CHECK_NEAR(at(t, &s, 7.5f / N, 8.5f / N, 0), 1.0 / 6.0, 1e-6);
+            sample_texture_destroy(t);
+        }
+}
+
 int main(void)
 {
     RUN(bilinear_exact_average);
@@ -309,5 +382,6 @@ int main(void)
     RUN(cubic_kernel_values);
     RUN(cubic_precision_and_interpolation);
     RUN(bilinear_derivatives);
+    RUN(cubic_clamp_continuous);
     return check_finish();
 }

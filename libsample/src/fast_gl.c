@@ -333,8 +333,8 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
             for (y = 0; y < 4; ++y)
                 for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]));
         }
-        ls_recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0,
-                            out, dds, ddt);
+        ls_recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, tp->fu,
+                               tp->fv, out, dds, ddt);
         n = 16;
     }
     /* ∂/∂s = ∂/∂u · w, as ls_recon_level. */

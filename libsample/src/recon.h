@@ -67,14 +67,15 @@ SAMPLE_FORCE_INLINE float recon_linear_origin(float u, float *alpha)
 /* The Mitchell–Netravali combination of a 4 × 4 block T[y][x] (taps −1 … 2
  * around (i0, j0)) with weights wx, wy and their derivatives, accumulated
  * in double (16 float products would lose the exact reproduction of
- * constants and ramps); `clamp` is SAMPLE_OPT_CUBIC_CLAMP. Shared by the
+ * constants and ramps); `clamp` is SAMPLE_OPT_CUBIC_CLAMP, which needs the
+ * block's fractions fu, fv (reconstruct.c, cubic_clamp). Shared by the
  * general and the fast path. Texels as plain floats, not v4f: v4f is a
  * different type in each instruction-set build of the fast path (isa.c),
  * and this function is compiled once. T is only read (not const-qualified
  * because C before C23 does not convert float (*)[4] to that implicitly). */
 void ls_recon_cubic_combine(float T[16][4], const double wx[4], const double wy[4],
-                         const double dwx[4], const double dwy[4], int clamp, float out[4],
-                         float ddu[4], float ddv[4]);
+                            const double dwx[4], const double dwy[4], int clamp, float fu, float fv,
+                            float out[4], float ddu[4], float ddv[4]);
 
 /* Cubic kernel weights for fractional offset f ∈ [0, 1): taps at −1, 0, 1, 2,
  * and their derivatives d/df (dw may be NULL). */

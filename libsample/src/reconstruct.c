@@ -81,9 +81,74 @@ static uint32_t recon_linear(const sample_ctx *c, int lv, float u, float v, floa
     return 4;
 }
 
+/* One of the clamp's bounds (cubic_clamp): a value of the bilinear
+ * interpolant and its derivatives by u and v (texel units). */
+typedef struct clamp_point {
+    double v, du, dv;
+} clamp_point;
+
+/* The four values of the bilinear interpolant along one line of taps a[0 …
+ * 3] (offsets −1 … 2, fraction f) where the window [x − 1, x + 1] meets its
+ * knots: the window's ends, x − 1 and x + 1, which lie at fraction f
+ * between taps −1, 0 and 1, 2, and the two knots inside, 0 and 1; with
+ * each value's derivative along the line. */
+static void clamp_line(const clamp_point a[4], double f, clamp_point out[4], int along_u)
+{
+    int k;
+    for (k = 0; k < 2; ++k) {
+        const clamp_point *p = &a[2 * k], *q = &a[2 * k + 1];
+        clamp_point *e = &out[3 * k];
+        e->v = (1.0 - f) * p->v + f * q->v;
+        e->du = (1.0 - f) * p->du + f * q->du;
+        e->dv = (1.0 - f) * p->dv + f * q->dv;
+        if (along_u) e->du = q->v - p->v;
+        else e->dv = q->v - p->v;
+    }
+    out[1] = a[1];
+    out[2] = a[2];
+}
+
+/* SAMPLE_OPT_CUBIC_CLAMP for channel k: the result is clamped to the range
+ * of the bilinear interpolant of the texels over the square of one texel
+ * either side of the sample point, [x − 1, x + 1] × [y − 1, y + 1] (x = i0
+ * + fu, y = j0 + fv in texel-centre units). That range holds the central
+ * 2 × 2 texels (the knots inside the square), so it removes the ringing of
+ * Catmull–Rom and Mitchell past a step's own values; and it moves
+ * continuously with the sample point — when the 4 × 4 block shifts by a
+ * texel at fu = 1 → 0 the square's bounds are the same — so the clamped
+ * result is continuous, where a clamp to the central 2 × 2 alone jumps at
+ * texel centres (by 1/6 for the B-spline on a step). On each cell of the
+ * square the interpolant is bilinear, so its extremes lie at the 4 × 4
+ * points where the square's edges and the grid lines inside it cross.
+ * Where the result is clamped its derivatives are the bound's. */
+static void cubic_clamp(float tx[16][4], int k, float fu, float fv, float *out, float *ddu, float *ddv)
+{
+    clamp_point row[4][4], col[4], pts[4], line[4], lo, hi;
+    int x, y;
+    for (y = 0; y < 4; ++y) {
+        for (x = 0; x < 4; ++x) line[x] = (clamp_point){tx[4 * y + x][k], 0.0, 0.0};
+        clamp_line(line, fu, row[y], 1);
+    }
+    lo = hi = row[1][1];
+    for (x = 0; x < 4; ++x) {
+        for (y = 0; y < 4; ++y) col[y] = row[y][x];
+        clamp_line(col, fv, pts, 0);
+        for (y = 0; y < 4; ++y) {
+            if (pts[y].v < lo.v) lo = pts[y];
+            if (pts[y].v > hi.v) hi = pts[y];
+        }
+    }
+    if (*out < lo.v || *out > hi.v) {
+        const clamp_point *b = *out < lo.v ? &lo : &hi;
+        *out = (float)b->v;
+        if (ddu) *ddu = (float)b->du;
+        if (ddv) *ddv = (float)b->dv;
+    }
+}
+
 void ls_recon_cubic_combine(float tx[16][4], const double wx[4], const double wy[4],
-                         const double dwx[4], const double dwy[4], int clamp, float out[4],
-                         float ddu[4], float ddv[4])
+                         const double dwx[4], const double dwy[4], int clamp, float fu, float fv,
+                         float out[4], float ddu[4], float ddv[4])
 {
     /* Separable: each row is first combined across x (with wx, and with dwx
      * for ∂/∂u), then the rows across y — 5 × 16 products instead of 3 × 32,
@@ -114,17 +179,7 @@ void ls_recon_cubic_combine(float tx[16][4], const double wx[4], const double wy
         out[k] = (float)acc[k];
         if (ddu) ddu[k] = (float)au[k];
         if (ddv) ddv[k] = (float)av[k];
-        if (clamp) {
-            /* Optional overshoot clamp to the central 2×2 range; where it
-             * clamps, the result is locally constant. */
-            float lo = fminf(fminf(tx[5][k], tx[6][k]), fminf(tx[9][k], tx[10][k]));
-            float hi = fmaxf(fmaxf(tx[5][k], tx[6][k]), fmaxf(tx[9][k], tx[10][k]));
-            if (out[k] < lo || out[k] > hi) {
-                out[k] = out[k] < lo ? lo : hi;
-                if (ddu) ddu[k] = 0.0f;
-                if (ddv) ddv[k] = 0.0f;
-            }
-        }
+        if (clamp) cubic_clamp(tx, k, fu, fv, &out[k], ddu ? &ddu[k] : NULL, ddv ? &ddv[k] : NULL);
     }
 }
 
@@ -140,8 +195,8 @@ static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float
     for (y = 0; y < 4; ++y)
         for (x = 0; x < 4; ++x)
             ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, T[4 * y + x]);
-    ls_recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, out,
-                        ddu, ddv);
+    ls_recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, al, be,
+                           out, ddu, ddv);
     return 16;
 }
 
