@@ -106,12 +106,23 @@ sample_status io_oiio_write(const char *final_path, const char *tmp_path, const 
 sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
                                const sample_io_exr_options *o, sample_error *err);
 
-/* Make a new, empty, uniquely named file beside `path` (same directory);
- * tmp receives its name. */
-sample_status io_tmp_create(const char *path, char *tmp, size_t tmp_size, sample_error *err);
-/* st == SAMPLE_OK: rename tmp over path; otherwise (or if the rename fails)
- * remove tmp. Returns the final status. */
-sample_status io_tmp_finish(sample_status st, const char *tmp, const char *path, sample_error *err);
+/* A temporary file beside a target (io_tmp.c): unnamed (O_TMPFILE) where
+ * the file system allows, else named PATH.tmpPID-N and removed on SIGINT,
+ * SIGTERM or SIGHUP. Writers write to write_path. */
+#define IO_TMP_NAME_MAX 4096
+typedef struct io_tmp {
+    char write_path[IO_TMP_NAME_MAX]; /* what writers open: /proc/self/fd/N or name */
+    char name[IO_TMP_NAME_MAX];       /* the named temporary, once there is one */
+    int fd;                           /* the O_TMPFILE descriptor, −1 when named */
+    int slot;                         /* its entry in the signal handler's table, −1 */
+} io_tmp;
+sample_status io_tmp_create(const char *path, io_tmp *t, sample_error *err);
+/* st == SAMPLE_OK: name the file and rename it over path; otherwise (or if
+ * that fails) remove it. Returns the final status. */
+sample_status io_tmp_finish(sample_status st, io_tmp *t, const char *path, sample_error *err);
+/* Tests: 0 forces the named protocol (to test the signal handler where
+ * O_TMPFILE works); 1 (the default) allows O_TMPFILE. */
+void io_tmp_set_unnamed(int on);
 
 /* Lower-case extension of a path without the dot ("" if none), into ext. */
 void io_extension(const char *path, char *ext, size_t ext_size);

@@ -255,6 +255,7 @@ sample_status sample_io_read_texture(const char *path, const sample_io_options *
     if (!out) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: out is NULL");
     *out = NULL;
     if (!path || !*path) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
+    if ((st = sample_io_check_regular_file(path, "image", err)) != SAMPLE_OK) return st;
     if ((st = io_exr_guard_file(path, err)) != SAMPLE_OK || (st = io_jpeg_guard_file(path, err)) != SAMPLE_OK)
         return st;
     return read_source(path, NULL, 0, NULL, o, mip, out, err);

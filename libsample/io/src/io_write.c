@@ -64,7 +64,7 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     io_colour *col = NULL;
     float *buf = NULL;
     size_t n, i;
-    char tmp[4096];
+    io_tmp tmp;
     sample_status st = check_size(path, w, h, err);
     int c;
     if (st != SAMPLE_OK) return st;
@@ -98,11 +98,11 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     st = io_colour_apply(col, cs, 0, buf, n, channels_to_write, err);
     if (st != SAMPLE_OK) goto done;
     quantize(buf, n * (size_t)channels_to_write, type);
-    st = io_tmp_create(path, tmp, sizeof tmp, err);
+    st = io_tmp_create(path, &tmp, err);
     if (st != SAMPLE_OK) goto done;
     /* sample_io_type U8 … FLOAT are io_ptype IO_U8 … IO_FLOAT plus one. */
-    st = io_oiio_write(path, tmp, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, cs, err);
-    st = io_tmp_finish(st, tmp, path, err);
+    st = io_oiio_write(path, tmp.write_path, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, cs, err);
+    st = io_tmp_finish(st, &tmp, path, err);
 done:
     free(buf);
     io_colour_close(col);
@@ -121,7 +121,7 @@ sample_status sample_io_write_image(const char *path, const float *rgba, int w, 
 sample_status sample_io_write_channels(const char *path, const float *data, int w, int h, int nchannels,
                                        const char *const *names, sample_error *err)
 {
-    char tmp[4096];
+    io_tmp tmp;
     int a, b;
     sample_status st = check_size(path, w, h, err);
     if (st != SAMPLE_OK) return st;
@@ -136,17 +136,17 @@ sample_status sample_io_write_channels(const char *path, const float *data, int 
             if (strcmp(names[a], names[b]) == 0)
                 return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "channel name '%s' is used twice", names[a]);
     }
-    st = io_tmp_create(path, tmp, sizeof tmp, err);
+    st = io_tmp_create(path, &tmp, err);
     if (st != SAMPLE_OK) return st;
-    st = io_oiio_write(path, tmp, data, IO_FLOAT, w, h, nchannels, names, NULL, err);
-    return io_tmp_finish(st, tmp, path, err);
+    st = io_oiio_write(path, tmp.write_path, data, IO_FLOAT, w, h, nchannels, names, NULL, err);
+    return io_tmp_finish(st, &tmp, path, err);
 }
 
 sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
                                       sample_error *err)
 {
     sample_io_exr_options defaults;
-    char tmp[4096];
+    io_tmp tmp;
     sample_status st;
     if (!path || !*path || !tex)
         return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_write_mip_exr: no path or no texture");
@@ -157,8 +157,8 @@ sample_status sample_io_write_mip_exr(const char *path, const sample_texture *te
     if (o->tile_w < 1 || o->tile_h < 1 || o->tile_w > 4096 || o->tile_h > 4096)
         return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "tile size %d x %d: each side must be 1 to 4096", o->tile_w,
                        o->tile_h);
-    st = io_tmp_create(path, tmp, sizeof tmp, err);
+    st = io_tmp_create(path, &tmp, err);
     if (st != SAMPLE_OK) return st;
-    st = io_exr_write_mip(tmp, tex, o, err);
-    return io_tmp_finish(st, tmp, path, err);
+    st = io_exr_write_mip(tmp.write_path, tex, o, err);
+    return io_tmp_finish(st, &tmp, path, err);
 }

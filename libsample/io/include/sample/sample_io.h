@@ -98,6 +98,14 @@ SAMPLE_IO_API sample_status sample_io_read_memory(const void *data, size_t size,
                                     const sample_io_options *o, const sample_mip_params *mip,
                                     sample_texture **out, sample_error *err);
 
+/* Is `path` a regular file that can be opened for reading? SAMPLE_OK, or
+ * SAMPLE_E_IO with a message naming `what` ("image", "scene", "OCIO
+ * config"; NULL: "file"), the path and what it is instead (a directory, a
+ * FIFO, a device). It never blocks: a FIFO is opened with O_NONBLOCK and
+ * judged by fstat. Every reader of libsample_io calls it before any library
+ * sees the path; programs call it for the other files they read. */
+SAMPLE_IO_API sample_status sample_io_check_regular_file(const char *path, const char *what, sample_error *err);
+
 /* ---- Writing pictures --------------------------------------------------- */
 
 typedef enum sample_io_type {
