@@ -137,6 +137,9 @@ typedef struct io_src {
 int io_src_byte(io_src *s, int *c);
 int io_src_skip(io_src *s, uint64_t n);
 int io_src_file(io_src *s, FILE *f); /* 0 if its size cannot be found */
+int io_src_seek(io_src *s, uint64_t pos); /* 0 past the end */
+/* An unsigned integer of nbytes (1 to 4) bytes; 0 at the end. */
+int io_src_uint(io_src *s, int nbytes, int big_endian, uint32_t *v);
 void io_src_memory(io_src *s, const void *data, size_t size);
 /* A pre-flight over the file at path (or, with path NULL, the buffer):
  * nothing unless its first nmagic bytes are the format's (is_format),
@@ -157,6 +160,19 @@ sample_status io_exr_guard_file(const char *path, sample_error *err);
  * past it); other files pass through untouched. */
 sample_status io_jpeg_guard_memory(const void *data, size_t size, sample_error *err);
 sample_status io_jpeg_guard_file(const char *path, sample_error *err);
+
+/* tiff_guard.c: reject TIFF files whose strip or tile tables are shorter
+ * than the image, point past the end of the file, or (uncompressed) hold
+ * fewer bytes than the image needs: OpenImageIO would allocate the whole
+ * image and fill what is missing with zeros. Other files pass untouched. */
+sample_status io_tiff_guard_memory(const void *data, size_t size, sample_error *err);
+sample_status io_tiff_guard_file(const char *path, sample_error *err);
+
+/* tga_guard.c: reject Targa files whose RLE packets run past the image or
+ * whose colour-map indices lie outside the map: OpenImageIO drops the rest
+ * of the packet, or reads whatever is there, without a word. */
+sample_status io_tga_guard_memory(const void *data, size_t size, sample_error *err);
+sample_status io_tga_guard_file(const char *path, sample_error *err);
 
 #ifdef __cplusplus
 }

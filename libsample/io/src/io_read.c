@@ -248,6 +248,22 @@ static sample_status read_source(const char *path, const void *data, size_t size
     return st;
 }
 
+/* The header pre-flights (exr_guard.c, jpeg_guard.c, tiff_guard.c,
+ * tga_guard.c), each a no-op on other formats, on a file (path) or bytes. */
+static sample_status preflight(const char *path, const void *data, size_t size, sample_error *err)
+{
+    static sample_status (*const on_file[])(const char *, sample_error *) = {
+        io_exr_guard_file, io_jpeg_guard_file, io_tiff_guard_file, io_tga_guard_file};
+    static sample_status (*const on_memory[])(const void *, size_t, sample_error *) = {
+        io_exr_guard_memory, io_jpeg_guard_memory, io_tiff_guard_memory, io_tga_guard_memory};
+    size_t k;
+    for (k = 0; k < sizeof on_file / sizeof on_file[0]; ++k) {
+        sample_status st = path ? on_file[k](path, err) : on_memory[k](data, size, err);
+        if (st != SAMPLE_OK) return st;
+    }
+    return SAMPLE_OK;
+}
+
 sample_status sample_io_read_texture(const char *path, const sample_io_options *o, const sample_mip_params *mip,
                                      sample_texture **out, sample_error *err)
 {
@@ -256,8 +272,7 @@ sample_status sample_io_read_texture(const char *path, const sample_io_options *
     *out = NULL;
     if (!path || !*path) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
     if ((st = sample_io_check_regular_file(path, "image", err)) != SAMPLE_OK) return st;
-    if ((st = io_exr_guard_file(path, err)) != SAMPLE_OK || (st = io_jpeg_guard_file(path, err)) != SAMPLE_OK)
-        return st;
+    if ((st = preflight(path, NULL, 0, err)) != SAMPLE_OK) return st;
     return read_source(path, NULL, 0, NULL, o, mip, out, err);
 }
 
@@ -270,8 +285,6 @@ sample_status sample_io_read_memory(const void *data, size_t size, const char *f
     *out = NULL;
     if (!data && size) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
     if (size == 0) return sample_error_set(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
-    if ((st = io_exr_guard_memory(data, size, err)) != SAMPLE_OK ||
-        (st = io_jpeg_guard_memory(data, size, err)) != SAMPLE_OK)
-        return st;
+    if ((st = preflight(NULL, data, size, err)) != SAMPLE_OK) return st;
     return read_source(NULL, data, size, format_hint, o, mip, out, err);
 }

@@ -156,7 +156,11 @@ extern "C" sample_status io_reader_read(io_reader *r, int k, io_ptype type, int 
                                         sample_error *err)
 {
     try {
-        if (!r->in->read_image(0, k, 0, nchan, oiio_type(type), dst)) {
+        // A reader that made up part of the image may still return true
+        // and leave its complaint pending (ImageInput::has_error): that is
+        // a failure too, not a picture.
+        bool ok = r->in->read_image(0, k, 0, nchan, oiio_type(type), dst);
+        if (!ok || r->in->has_error()) {
             std::string msg = r->in->geterror();
             return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k,
                            msg.empty() ? "unknown error" : msg.c_str());
