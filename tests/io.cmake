@@ -37,6 +37,11 @@ if(TARGET sample_io)
       ${PROJECT_SOURCE_DIR}/testimages ${CMAKE_CURRENT_BINARY_DIR}/io_cli_scratch
       "${SAMPLE_OIIOTOOL_ARG}" "${SAMPLE_EXRHEADER_ARG}")
     set_tests_properties(io_cli PROPERTIES TIMEOUT 300 ENVIRONMENT "OCIO=" SKIP_RETURN_CODE 77)
+    # Hostile files through the program: a huge-claiming TIFF under a 1 GiB
+    # address-space limit, /dev/zero, a FIFO, a directory.
+    add_test(NAME io_hostile_cli COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/io_hostile_cli.sh $<TARGET_FILE:texsample>
+      ${CMAKE_CURRENT_BINARY_DIR}/io_hostile_cli_scratch)
+    set_tests_properties(io_hostile_cli PROPERTIES TIMEOUT 120 ENVIRONMENT "OCIO=" SKIP_RETURN_CODE 77)
   endif()
   if(COMMAND sample_add_fuzzer)
     sample_add_fuzzer(fuzz_io fuzz_io.c corpus_io sample_io sample)

@@ -214,6 +214,32 @@ static void test_tga_made_up(void)
     CHECK_NEAR(read_ok(&o, "ok_rle.tga", "tga", 0), 0.0, 1e-6); /* entry 1 is green */
 }
 
+/* The byte budget counts the levels the reader will build, not only the
+ * base: rgb8.png (19 × 13 × 3) is 2964 bytes as float, 3792 with its
+ * pyramid of 5 levels. */
+static void test_budget_counts_pyramid(void)
+{
+    char p[1024];
+    sample_io_options o;
+    sample_mip_params mip;
+    sample_texture *t = NULL;
+    sample_error e;
+    sample_io_options_init(&o);
+    sample_mip_params_init(&mip);
+    o.max_bytes = 3000;
+    io_path(p, sizeof p, io_images, "rgb8.png");
+    CHECK(sample_io_read_texture(p, &o, NULL, &t, &e) == SAMPLE_OK, "base alone within 3000 bytes: %s", e.message);
+    sample_texture_destroy(t);
+    t = NULL;
+    CHECK(sample_io_read_texture(p, &o, &mip, &t, &e) == SAMPLE_E_TOO_LARGE && !t && strstr(e.message, "levels need"),
+          "base + pyramid over 3000 bytes: %s", e.message);
+    sample_texture_destroy(t);
+    o.max_bytes = 3792;
+    t = NULL;
+    CHECK(sample_io_read_texture(p, &o, &mip, &t, &e) == SAMPLE_OK, "exactly 3792 bytes: %s", e.message);
+    sample_texture_destroy(t);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3) return fprintf(stderr, "usage: io_hostile TESTIMAGES SCRATCH\n"), 2;
@@ -224,5 +250,6 @@ int main(int argc, char **argv)
     RUN(test_not_regular);
     RUN(test_tiff_claims);
     RUN(test_tga_made_up);
+    RUN(test_budget_counts_pyramid);
     return check_finish();
 }

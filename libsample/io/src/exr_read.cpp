@@ -138,6 +138,9 @@ extern "C" sample_status io_exr_tiled_open(const char *path, const void *data, s
         inf.nlevels = x->part->numLevels();
         inf.alpha_channel = x->nchan == 4 ? 3 : -1;
         inf.native = x->type == Imf::HALF ? IO_HALF : IO_FLOAT;
+        // OpenEXR colour is premultiplied by alpha (the format's rule).
+        inf.straight_alpha = 0;
+        for (int c = 0; c < x->nchan; ++c) std::snprintf(inf.channel_names[c], sizeof inf.channel_names[c], "%s", rgba_names[c]);
         // No colour space metadata: OIIO 2.4 reports every OpenEXR file as
         // linear, so the rule (half/float is linear) decides on both paths
         // alike; a forced non-linear space goes to OIIO (io_read.c).

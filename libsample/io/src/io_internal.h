@@ -40,6 +40,12 @@ typedef struct io_reader_info {
     int alpha_channel;  /* index of alpha, −1 if none */
     io_ptype native;    /* the type the level should be read as */
     char colorspace[64];/* oiio:ColorSpace metadata, "" if none */
+    int straight_alpha; /* 1: colour is not multiplied by alpha (PNG, TGA, some TIFF) */
+    /* What the file says, for sample_io_describe (io_describe.c); the
+     * direct OpenEXR reader leaves them as its layout implies. */
+    char format[32], pixel_type[16], compression[32], wrapmodes[64];
+    int tile_w, tile_h; /* 0: scanlines */
+    char channel_names[SAMPLE_IO_NAMED_CHANNELS][32];
 } io_reader_info;
 
 /* Exactly one of path or (data, size) is given. format_hint may be NULL. */
@@ -52,6 +58,27 @@ sample_status io_reader_level_size(io_reader *r, int k, int *w, int *h, sample_e
 sample_status io_reader_read(io_reader *r, int k, io_ptype type, int nchan, void *dst,
                              sample_error *err);
 void io_reader_close(io_reader *r); /* accepts NULL */
+
+/* ---- The reader's decisions (io_read.c) ---------------------------------- */
+
+typedef struct io_colour io_colour;
+
+/* What the reader decided for one file. */
+typedef struct io_plan {
+    int nchan;              /* channels kept (≤ 4) */
+    io_ptype read_as;       /* type asked of the reader */
+    sample_format format;   /* texture storage */
+    int convert;            /* 1: OCIO conversion to scene_linear */
+    int premultiply;        /* 1: colour × alpha after the conversion */
+    int alpha;              /* alpha's index among the kept channels, −1 */
+    const char *colorspace; /* resolved source space */
+} io_plan;
+
+sample_status io_read_plan(const io_colour *col, const io_reader_info *inf, const sample_io_options *o, io_plan *p,
+                           sample_error *err);
+/* The header pre-flights, each a no-op on other formats, on a file (path)
+ * or bytes. */
+sample_status io_preflight(const char *path, const void *data, size_t size, sample_error *err);
 
 /* ---- Direct OpenEXR reader (exr_read.cpp) -------------------------------- */
 
@@ -75,8 +102,6 @@ void io_exr_direct_count(void);
 unsigned long io_exr_direct_reads(void);
 
 /* ---- Colour (ocio.cpp) --------------------------------------------------- */
-
-typedef struct io_colour io_colour;
 
 /* Load the config: `path`, else $OCIO, else the shipped config. */
 sample_status io_colour_open(const char *path, io_colour **out, sample_error *err);

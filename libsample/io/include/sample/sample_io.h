@@ -77,6 +77,20 @@ typedef struct sample_io_options {
      * allocate; a file claiming more gives SAMPLE_E_TOO_LARGE before any
      * pixel is read. 0 means the default, SAMPLE_IO_DEFAULT_MAX_BYTES. */
     size_t max_bytes;
+    /* 1: store every level as float (SAMPLE_FORMAT_F32) whatever the
+     * file's precision, so that a pyramid built from it is built in float
+     * (what `texsample mip` does). 0 (default): keep the file's precision
+     * (section 1); a pyramid is then built in the texture's format, as
+     * glGenerateMipmap builds it (an SRGB8 level from the SRGB8 level
+     * above). */
+    int float_storage;
+    /* 1: when the file stores straight alpha (PNG, Targa, TIFF marked
+     * unassociated), multiply colour by alpha once it is linear, so the
+     * texture holds premultiplied colour as OpenEXR defines it and a
+     * pyramid built from it is filtered premultiplied (no colour bleeds
+     * from transparent texels). The texture is then half or float. 0
+     * (default): alpha as stored, never applied. */
+    int premultiply;
 } sample_io_options;
 
 #define SAMPLE_IO_DEFAULT_MAX_BYTES ((size_t)1 << 32) /* 4 GiB */
@@ -105,6 +119,44 @@ SAMPLE_IO_API sample_status sample_io_read_memory(const void *data, size_t size,
  * judged by fstat. Every reader of libsample_io calls it before any library
  * sees the path; programs call it for the other files they read. */
 SAMPLE_IO_API sample_status sample_io_check_regular_file(const char *path, const char *what, sample_error *err);
+
+/* ---- Describing a file -------------------------------------------------- */
+
+/* Channel names sample_io_file_info keeps (a file may have more channels). */
+#define SAMPLE_IO_NAMED_CHANNELS 16
+
+typedef struct sample_io_file_info {
+    /* What the file holds (subimage 0), as OpenImageIO reports it; strings
+     * are "" where the file says nothing. */
+    char format[32];     /* reader: "png", "openexr", "tiff", ... */
+    char pixel_type[16]; /* "uint8", "uint16", "half", "float", ... */
+    int width, height;   /* level 0, data window */
+    int channels;        /* every channel of the file */
+    char channel_names[SAMPLE_IO_NAMED_CHANNELS][32];
+    int alpha_channel;   /* −1: none */
+    int straight_alpha;  /* 1: colour is not multiplied by alpha */
+    int levels;          /* mip levels stored (1: none) */
+    int level_width[SAMPLE_MAX_LEVELS], level_height[SAMPLE_MAX_LEVELS];
+    int tile_width, tile_height; /* 0: scanlines */
+    char compression[32];
+    char wrapmodes[64];  /* maketx's "wrapmodes" attribute */
+    char colorspace[64]; /* the file's oiio:ColorSpace */
+    /* What sample_io_read_texture makes of it with the same options. */
+    char colorspace_used[64]; /* the space decoded from */
+    int colorspace_from_rule; /* 1: no usable name (none, or one the config
+                                 does not know): section 2's rule chose */
+    sample_format texture_format;
+    int texture_channels;
+    int texture_file_levels;  /* levels taken from the file (1: built) */
+} sample_io_file_info;
+
+/* Describe an image file from its headers, without reading its pixels:
+ * the memory used is that of the headers (doc/io-and-colour.md,
+ * "Describing"). The same checks as sample_io_read_texture run first (a
+ * regular file, the header pre-flights), so a file refused there is
+ * refused here. `o` may be NULL. */
+SAMPLE_IO_API sample_status sample_io_describe(const char *path, const sample_io_options *o,
+                                               sample_io_file_info *info, sample_error *err);
 
 /* ---- Writing pictures --------------------------------------------------- */
 
