@@ -129,7 +129,7 @@ sample_status io_oiio_write(const char *final_path, const char *tmp_path, const 
                             const char *colorspace, sample_error *err);
 
 sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
-                               const sample_io_exr_options *o, sample_error *err);
+                               const sample_io_exr_options *o, size_t *overflows, sample_error *err);
 
 /* A temporary file beside a target (io_tmp.c): unnamed (O_TMPFILE) where
  * the file system allows, else named PATH.tmpPID-N and removed on SIGINT,
@@ -148,6 +148,28 @@ sample_status io_tmp_finish(sample_status st, io_tmp *t, const char *path, sampl
 /* Tests: 0 forces the named protocol (to test the signal handler where
  * O_TMPFILE works); 1 (the default) allows O_TMPFILE. */
 void io_tmp_set_unnamed(int on);
+
+/* In place: n floats → `type` (U8, U16: clamped to [0, 1], rounded; HALF;
+ * FLOAT unchanged), packed at the start of buf (each output element is no
+ * wider than the float it replaces). Returns how many finite values became
+ * ±inf in half (±65504 instead when half_clamp). */
+size_t io_quantize(float *buf, size_t n, sample_io_type type, int half_clamp);
+
+/* io_mip_write.c: level k of tex as packed pixels of `type`, malloc'ed in
+ * *out: half/float linear, U8/U16 encoded to `cs` through col; half
+ * overflows are added to *overflows. */
+sample_status io_level_pixels(const sample_texture *tex, int k, sample_io_type type, const io_colour *col,
+                              const char *cs, int half_clamp, size_t *overflows, void **out, sample_error *err);
+/* oiio_write.cpp: every level of tex as a tiled TIFF (maketx's .tx layout). */
+sample_status io_oiio_write_mip(const char *final_path, const char *tmp_path, const sample_texture *tex,
+                                const sample_io_exr_options *o, sample_io_type type, const io_colour *col,
+                                const char *cs, size_t *overflows, sample_error *err);
+/* Which mip-mapped writer path's extension names (*tiff: 1 TIFF, 0
+ * OpenEXR), or SAMPLE_E_INVALID_ARGUMENT where it names a format without
+ * levels or one without `type`. */
+sample_status io_mip_target(const char *path, sample_io_type type, int *tiff, sample_error *err);
+/* The "wrapmodes" word for a wrap mode, as maketx spells it. */
+const char *io_wrap_word(sample_wrap w);
 
 /* Lower-case extension of a path without the dot ("" if none), into ext. */
 void io_extension(const char *path, char *ext, size_t ext_size);

@@ -196,15 +196,38 @@ SAMPLE_IO_API sample_status sample_io_write_channels(const char *path, const flo
                                        int nchannels, const char *const *names,
                                        sample_error *err);
 
-/* ---- Tiled mip-mapped OpenEXR ------------------------------------------- */
+/* ---- Tiled mip-mapped files -------------------------------------------- */
 
+/* Options of the mip-mapped writers (the name is historical: OpenEXR was
+ * the first). */
 typedef struct sample_io_exr_options {
     int tile_w, tile_h;         /* default 64 × 64 */
-    int use_float;              /* 0 (default): half; 1: float */
+    int use_float;              /* type AUTO: 0 (default) half, 1 float */
     sample_wrap wrap_s, wrap_t; /* stored as the "wrapmodes" attribute; default CLAMP_TO_EDGE */
     /* Called after each tile row is written (may be NULL). */
     void (*progress)(void *user, size_t done, size_t total);
     void *progress_user;
+    /* AUTO (default): half or float by use_float. HALF and FLOAT store the
+     * texture's linear values; U8 and U16 (TIFF only: OpenEXR has no such
+     * type) store them sRGB-encoded, as maketx's `-d uint8` does, clamped
+     * to [0, 1] and rounded to nearest. */
+    sample_io_type type;
+    /* Names of the texture's channels (as many as it has); NULL: R, G, B, A.
+     * A grey + alpha texture read from a PNG is Y, A. */
+    const char *const *channel_names;
+    /* Index of the alpha channel, −1 (default) for none. */
+    int alpha_channel;
+    /* 1: the colour channels are premultiplied by alpha (OpenEXR's rule,
+     * and what sample_io_options.premultiply reads). Recorded in the file:
+     * the "libsample:alpha" attribute in OpenEXR, the ExtraSamples tag
+     * (associated / unassociated alpha) in TIFF. */
+    int premultiplied;
+    /* Half output: a finite value beyond ±65504 becomes ±inf (0, default)
+     * or ±65504 (1). Where half_overflows is not NULL it receives how many
+     * values were that large, so a caller can say so. */
+    int half_clamp;
+    size_t *half_overflows;
+    const char *ocio_config;    /* for U8 / U16's sRGB encoding; as in sample_io_options */
 } sample_io_exr_options;
 
 SAMPLE_IO_API void sample_io_exr_options_init(sample_io_exr_options *o);
@@ -212,9 +235,32 @@ SAMPLE_IO_API void sample_io_exr_options_init(sample_io_exr_options *o);
 /* Write every level of `tex` (decoded to linear values) as a tiled OpenEXR:
  * MIPMAP_LEVELS with ROUND_DOWN sizes when the texture has its full chain,
  * ONE_LEVEL when it has only its base; a partial chain is refused.
- * Channels are R, G, B, A (as many as the texture has). `o` may be NULL. */
+ * `o` may be NULL. */
 SAMPLE_IO_API sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex,
                                       const sample_io_exr_options *o, sample_error *err);
+
+/* The same, in the format the path's extension names: .exr as
+ * sample_io_write_mip_exr; .tx, .tif, .tiff a tiled TIFF holding every
+ * level (maketx's .tx layout, read back by OpenImageIO and by this
+ * library). Any other extension, or U8/U16 for OpenEXR, is
+ * SAMPLE_E_INVALID_ARGUMENT: such formats hold no mip levels. */
+SAMPLE_IO_API sample_status sample_io_write_mip(const char *path, const sample_texture *tex,
+                                  const sample_io_exr_options *o, sample_error *err);
+
+/* An image file in, a tiled mip-mapped file out (what maketx does and
+ * `texsample mip` calls): the input is read in float (ro's colour space
+ * and config; its own levels ignored), straight alpha multiplied into the
+ * colour, every level built from the base with `mip`'s kernel and wrap
+ * modes (NULL: box, clamp to edge), and the levels written by
+ * sample_io_write_mip with wo's tiles, type and half overflow handling
+ * (NULL: defaults), the input's channel names, its alpha channel marked
+ * premultiplied, and the wrap modes as `wrapmodes`. An output whose
+ * extension names a format without levels (or without wo's type) is
+ * SAMPLE_E_INVALID_ARGUMENT before the input is read; an input with more
+ * than 4 channels is SAMPLE_E_UNSUPPORTED. Nothing is written then. */
+SAMPLE_IO_API sample_status sample_io_make_mip(const char *in, const char *out, const sample_io_options *ro,
+                                               const sample_mip_params *mip, const sample_io_exr_options *wo,
+                                               sample_error *err);
 
 #ifdef __cplusplus
 }
