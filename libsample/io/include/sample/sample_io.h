@@ -16,8 +16,10 @@
  *   row 0, t = 0 (as OpenImageIO's TextureSystem). Storage keeps the file's
  *   precision: 8-bit stays 8-bit (SRGB8 when the colour space decodes like
  *   sRGB, UNORM8 when it is the working space or data), half stays half,
- *   16-bit integers and float become float. At most 4 channels are kept
- *   (the first four). Files that hold mip levels (maketx .tx/.exr, our
+ *   16-bit integers and float become float (options can ask for float and
+ *   for premultiplied alpha). At most 4 channels are kept (the first four).
+ *   Only regular files are read, and headers claiming more than the file
+ *   holds are refused before pixels are allocated. Files that hold mip levels (maketx .tx/.exr, our
  *   `texsample mip`) give their levels as stored, unless use_file_levels is
  *   0; otherwise `mip` builds the pyramid (NULL: base level only).
  *
@@ -34,11 +36,17 @@
  * 3. WRITING
  *
  *   Every writer writes a temporary file beside the target and renames it
- *   into place, so a failed write leaves no file behind.
+ *   into place, so a failed write leaves no file behind. The temporary has
+ *   no name while it is written where the file system allows (Linux
+ *   O_TMPFILE), so even SIGKILL leaves nothing; elsewhere a handler for
+ *   SIGINT, SIGTERM and SIGHUP, installed on the first write for those of
+ *   the three still at SIG_DFL, removes it before the process dies.
  *
  * 4. THREADS
  *
- *   No global state; every function may be called from several threads.
+ *   Every function may be called from several threads. The only
+ *   process-wide state is that signal handler and its table of named
+ *   temporaries.
  */
 #ifndef SAMPLE_SAMPLE_IO_H
 #define SAMPLE_SAMPLE_IO_H
