@@ -44,6 +44,7 @@ static void print_texture(int w, int h, int channels, sample_format f, int level
         printf("  level %2d  %d x %d\n", k, w >> k > 0 ? w >> k : 1, h >> k > 0 ? h >> k : 1);
 }
 
+#ifdef TEXSAMPLE_HAVE_IO
 static int levels_built(int w, int h, const sample_mip_params *mip)
 {
     int n = 1, m = w > h ? w : h;
@@ -52,7 +53,6 @@ static int levels_built(int w, int h, const sample_mip_params *mip)
     return n;
 }
 
-#ifdef TEXSAMPLE_HAVE_IO
 static const char *or_none(const char *s, const char *none) { return s[0] ? s : none; }
 
 static int info_image(const char *sub, const tl_source *src, const sample_mip_params *mip)
