@@ -29,26 +29,28 @@ entry() { le16 "$1"; le16 "$2"; le32 "$3"; le32 "$4"; }
 } > "$dir/huge.tif"
 check "crafted TIFF is 130 bytes" '[ "$(wc -c < "$dir/huge.tif")" -eq 130 ]'
 
-if (ulimit -v 1048576 && "$ts" info --help >/dev/null 2>&1); then
-  for cmd in info mip; do
-    if [ $cmd = info ]; then args="$dir/huge.tif"; else args="$dir/huge.tif $dir/out.exr"; fi
-    msg=$( (ulimit -v 1048576; exec timeout 20 "$ts" $cmd $args) 2>&1 >/dev/null); rc=$?
-    check "$cmd huge.tif under 1 GiB: exit 1 (got $rc: $msg)" '[ $rc -eq 1 ]'
-    check "$cmd huge.tif: says why ($msg)" 'echo "$msg" | grep -q "strip table has 1 entries of the 32768 it needs"'
-  done
-  check "no output from the refused mip" '[ ! -e "$dir/out.exr" ] && [ -z "$(ls "$dir" | grep tmp)" ]'
-else
-  echo "SKIP: texsample does not start under ulimit -v 1048576 (sanitizer build?)"; skipped=1
-fi
+# A process that cannot start under the limit (the loader cannot map a
+# library, a sanitizer cannot reserve its shadow memory) exits with another
+# status and no message of texsample's: that part is then skipped.
+for cmd in info mip; do
+  if [ $cmd = info ]; then args="$dir/huge.tif"; else args="$dir/huge.tif $dir/out.exr"; fi
+  msg=$( (ulimit -v 1048576; exec timeout 20 "$ts" $cmd $args) 2>&1 >/dev/null); rc=$?
+  if [ $rc -gt 2 ] && ! echo "$msg" | grep -q "^texsample"; then
+    echo "SKIP: texsample $cmd does not start under ulimit -v 1048576 (sanitizer build?): $msg" | head -3
+    skipped=1; continue
+  fi
+  check "$cmd huge.tif under 1 GiB: exit 1 (got $rc: $msg)" '[ $rc -eq 1 ]'
+  check "$cmd huge.tif: says why ($msg)" 'echo "$msg" | grep -q "strip table has 1 entries of the 32768 it needs"'
+done
+check "no output from the refused mip" '[ ! -e "$dir/out.exr" ] && [ -z "$(ls "$dir" | grep tmp)" ]'
 
+# One command each (the library's check is the same for all; io_hostile
+# tests it on every kind): info /dev/zero, mip of a FIFO, info of a directory.
 mkfifo "$dir/fifo.png"
-for f in /dev/zero "$dir/fifo.png" "$dir"; do
-  for cmd in info mip; do
-    if [ $cmd = info ]; then args="$f"; else args="$f $dir/out.exr"; fi
-    msg=$(timeout 5 "$ts" $cmd $args 2>&1 >/dev/null); rc=$?
-    check "$cmd $f: exit 1 at once (got $rc: $msg)" '[ $rc -eq 1 ]'
-    check "$cmd $f: says it is not a regular file ($msg)" 'echo "$msg" | grep -q "only regular files are read"'
-  done
+for run in "info /dev/zero" "mip $dir/fifo.png $dir/out.exr" "info $dir"; do
+  msg=$(timeout 5 "$ts" $run 2>&1 >/dev/null); rc=$?
+  check "$run: exit 1 at once (got $rc: $msg)" '[ $rc -eq 1 ]'
+  check "$run: says it is not a regular file ($msg)" 'echo "$msg" | grep -q "only regular files are read"'
 done
 check "no output from the refused reads" '[ ! -e "$dir/out.exr" ]'
 
