@@ -5,9 +5,12 @@
  * progress callback, after the first tile row is on disk: no timing, no
  * sleeping. Both protocols of io_tmp.c are run: the unnamed O_TMPFILE file
  * (every signal, SIGKILL included) and the named file the handler removes
- * (the catchable signals). Where the file system has no O_TMPFILE the
- * unnamed cases are skipped (exit 77).
- * Usage: io_signal TESTIMAGES SCRATCH */
+ * (the catchable signals). Then `texsample mip` itself is killed by each
+ * signal from outside, once its first progress line shows it writing (its
+ * stderr is a one-page pipe that is not read further, so it cannot finish
+ * first). Where the file system has no O_TMPFILE the unnamed cases are
+ * skipped (exit 77).
+ * Usage: io_signal TESTIMAGES SCRATCH [TEXSAMPLE] */
 #define _GNU_SOURCE
 #include "io_util.h"
 #include "io_internal.h"
@@ -17,6 +20,7 @@
 #include <sys/wait.h>
 
 static const char old_bytes[] = "the old file";
+static const char *texsample;
 static int signal_to_raise, expect_named;
 
 /* Called after each tile row; the first call is mid-file. Before dying the
@@ -133,13 +137,67 @@ static void test_complete_writes(void)
     io_tmp_set_unnamed(1);
 }
 
+/* texsample mip of a 16 × 512 picture with 1 × 1 tiles (1023 tile rows,
+ * 48 bytes of progress each) into a file that exists, killed by `sig`
+ * after its first progress line; the old file is kept, nothing else is
+ * left. All four signals run at once (each its own target). */
+static void test_cli_killed(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGKILL};
+    enum { N = sizeof sigs / sizeof sigs[0] };
+    static float px[16 * 512 * 4];
+    char in[1024], out[N][1024], name[64];
+    int fds[N][2], n = has_tmpfile() ? N : N - 1, k;
+    pid_t pid[N];
+    sample_error e;
+    if (!texsample || !*texsample) {
+        check_skip("texsample not built: the program itself not killed");
+        return;
+    }
+    for (k = 0; k < 16 * 512 * 4; ++k) px[k] = (float)(k % 7) / 7.0f;
+    CHECK(sample_io_write_image(io_path(in, sizeof in, io_scratch, "tall.png"), px, 16, 512, 3, NULL, &e) ==
+              SAMPLE_OK,
+          "%s", e.message);
+    fflush(NULL);
+    for (k = 0; k < n; ++k) {
+        snprintf(name, sizeof name, "killed%d.exr", k);
+        write_old(io_path(out[k], sizeof out[k], io_scratch, name));
+        CHECK(pipe(fds[k]) == 0, "pipe failed");
+        fcntl(fds[k][1], F_SETPIPE_SZ, 4096); /* the smallest pipe: one page */
+        pid[k] = fork();
+        if (pid[k] == 0) {
+            dup2(fds[k][1], 2);
+            setenv("TEXSAMPLE_PROGRESS", "1", 1);
+            execl(texsample, "texsample", "mip", in, out[k], "--tile", "1", (char *)NULL);
+            _exit(127);
+        }
+        close(fds[k][1]);
+    }
+    for (k = 0; k < n; ++k) {
+        char buf[64];
+        int status = 0;
+        CHECK(read(fds[k][0], buf, sizeof buf) > 0, "signal %d: no progress from texsample", sigs[k]);
+        kill(pid[k], sigs[k]);
+        CHECK(waitpid(pid[k], &status, 0) == pid[k], "waitpid failed");
+        close(fds[k][0]);
+        CHECK(WIFSIGNALED(status) && WTERMSIG(status) == sigs[k], "texsample mip: signal %d, but %s %d", sigs[k],
+              WIFSIGNALED(status) ? "died of" : "exited with",
+              WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status));
+        CHECK(is_old(out[k]), "signal %d: the old file was not kept", sigs[k]);
+    }
+    CHECK(io_count_tmp(io_scratch) == 0, "a killed texsample mip left a temporary file");
+    if (n < N) check_skip("no O_TMPFILE here: texsample mip not killed by SIGKILL");
+}
+
 int main(int argc, char **argv)
 {
-    if (argc < 3) return fprintf(stderr, "usage: io_signal TESTIMAGES SCRATCH\n"), 2;
+    if (argc < 3) return fprintf(stderr, "usage: io_signal TESTIMAGES SCRATCH [TEXSAMPLE]\n"), 2;
     io_images = argv[1];
     io_scratch = argv[2];
+    texsample = argc > 3 ? argv[3] : "";
     RUN(test_named_signals);
     RUN(test_unnamed_signals);
     RUN(test_complete_writes);
+    RUN(test_cli_killed);
     return check_finish();
 }
