@@ -81,9 +81,10 @@ typedef struct sample_io_options {
     /* 1 (default): take mip levels stored in the file; 0: read the base
      * level only and build the pyramid from `mip`. */
     int use_file_levels;
-    /* Largest decoded size (bytes, all levels, as float) the reader will
-     * allocate; a file claiming more gives SAMPLE_E_TOO_LARGE before any
-     * pixel is read. 0 means the default, SAMPLE_IO_DEFAULT_MAX_BYTES. */
+    /* Largest decoded size (bytes, as float) of every level the texture
+     * will hold: the file's, or the base and the levels `mip` builds from
+     * it. A file claiming more gives SAMPLE_E_TOO_LARGE before any pixel
+     * is read. 0 means the default, SAMPLE_IO_DEFAULT_MAX_BYTES. */
     size_t max_bytes;
     /* 1: store every level as float (SAMPLE_FORMAT_F32) whatever the
      * file's precision, so that a pyramid built from it is built in float
