@@ -2,18 +2,23 @@
  * texsample lookup end to end: writes a raw texture, a query file and
  * explicit levels, runs the program, and checks the output file against
  * hand-computed values and against the library called directly. Also the
- * exit codes: 0 success, 1 runtime error, 2 usage error.
+ * exit codes: 0 success, 1 runtime error, 2 usage error, and the shared
+ * command-line syntax. It runs the front program (tools/CMakeLists.txt),
+ * which runs the image program for `info`.
  */
 #define _XOPEN_SOURCE 700
 #include "check.h"
+#include "cli_util.h"
 #include "sample/sample.h"
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 static char *exe;
+static const char *source; /* the source tree: testimages/ */
 static char dir[256];
 
 static void put(const char *name, const void *data, size_t n)
@@ -105,22 +110,72 @@ static void exit_codes(void)
     CHECK(run("lookup --raw tex.raw --w 0 --h 2 --queries q.raw") == 2, "zero width");
 }
 
+/* The shared parser (tools/cli.c): --opt=value, "--", a missing value
+ * naming its option, usage errors exiting 2 from whichever command, and
+ * read errors saying why. */
+static void syntax(void)
+{
+    float out[8] = {0};
+    char args[1024];
+    CHECK(run("lookup --raw=tex.raw --w=2 --h 2 --queries=q.raw --out=r.raw --wrap=clamp_to_edge") == 0,
+          "--opt=value");
+    CHECK(get("r.raw", out, sizeof out) == sizeof out, "output size");
+    CHECK_EQF(out[0], 2.75f);
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries") == 2 &&
+              cli_holds(dir, "err.txt", "option --queries needs a value"),
+          "missing value names the option");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --wrap") == 2 &&
+              cli_holds(dir, "err.txt", "option --wrap needs a value"),
+          "missing sampler value names the option");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries=") == 2 &&
+              cli_holds(dir, "err.txt", "option --queries needs a value"),
+          "empty value after = is missing");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --text=yes") == 2 &&
+              cli_holds(dir, "err.txt", "option --text takes no value"),
+          "a flag given a value");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw extra") == 2 &&
+              cli_holds(dir, "err.txt", "unexpected argument 'extra'"),
+          "an operand lookup does not take");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw -- --text") == 2 &&
+              cli_holds(dir, "err.txt", "unexpected argument './--text'"),
+          "after --, an option-like argument is an operand");
+    CHECK(run("info --raw tex.raw") == 2 && cli_holds(dir, "err.txt", "--raw needs --w and --h"),
+          "info --raw without a size is a usage error");
+    CHECK(run("lookup --raw tex.raw --queries q.raw") == 2, "lookup --raw without a size is a usage error");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries missing.raw") == 1 &&
+              cli_holds(dir, "err.txt", "cannot read query file 'missing.raw': No such file or directory"),
+          "missing query file says why");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries .") == 1 &&
+              cli_holds(dir, "err.txt", "cannot read query file '.': Is a directory"),
+          "a directory as query file says why");
+    CHECK(run("lookup --raw . --w 2 --h 2 --queries q.raw") == 1 &&
+              cli_holds(dir, "err.txt", "cannot read '.': Is a directory"),
+          "a directory as texture says why");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --out nodir/r.raw") == 1 &&
+              cli_holds(dir, "err.txt", "cannot write 'nodir/r.raw': No such file or directory"),
+          "an unwritable output says why");
+    /* "--" lets an image file start with '-' (run in the image program). */
+    snprintf(args, sizeof args, "cp %s/testimages/rgb8.png %s/-rgb8.png", source, dir);
+    CHECK(check_shell(args) == 0, "copy a test image");
+    CHECK(run("info -- -rgb8.png") == 0 && cli_holds(dir, "out.txt", "size      19 x 13"), "info -- -rgb8.png");
+    CHECK(run("info -rgb8.png") == 2 && cli_holds(dir, "err.txt", "unknown option '-rgb8.png'"),
+          "without --, it is an option");
+}
+
 int main(int argc, char **argv)
 {
     char tmpl[] = "/tmp/texsample_cli_XXXXXX";
-    if (argc < 2) return 2;
+    if (argc < 3) return 2;
     exe = realpath(argv[1], NULL); /* the commands run in the scratch dir */
+    source = argv[2];
     if (!exe) return 1;
     if (!mkdtemp(tmpl)) return 1;
     snprintf(dir, sizeof dir, "%s", tmpl);
     RUN(lookup_values);
     RUN(explicit_levels);
     RUN(exit_codes);
-    {
-        char cmd[512];
-        snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-        if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
-    }
+    RUN(syntax);
+    cli_remove_dir(dir);
     free(exe);
     return check_finish();
 }

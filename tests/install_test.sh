@@ -8,7 +8,8 @@
 # libsample::sample, libsample::sample_static, and with IO=ON
 # libsample::sample_io and libsample::sample_io_static), pkg-config for the
 # shared libraries, and `pkg-config --static` for the static ones. No
-# include path may name the source or build tree.
+# include path may name the source or build tree. With IO=ON, the installed
+# texsample is also moved and run from $PATH elsewhere.
 #
 #   install_test.sh symbols NM HEADER LIB PREFIX [HEADER LIB PREFIX]...
 # checks that LIB's dynamic symbol table defines exactly the functions
@@ -123,4 +124,23 @@ for m in $mods; do
   test "$("$work/pc_static_$prog" "$@")" = "$want"
   ok "pkg-config --static $m"
 done
+# The installed texsample, moved to another prefix and run from $PATH in
+# another directory: it finds its image program (libexec/libsample) and the
+# OCIO config installed below it, not the source tree's. The moved config
+# alone names the colour space asked for, so the source tree's config (or
+# none) fails the read.
+if [ "$io" = ON ]; then
+  cp -R "$prefix" "$work/moved"
+  config=$work/moved/share/libsample/ocio/config.ocio
+  sed 's/aliases: \[linear, /aliases: [installed_config_marker, linear, /' "$config" > "$work/config.ocio"
+  cp "$work/config.ocio" "$config"
+  grep -q installed_config_marker "$config"
+  mkdir "$work/elsewhere"
+  info=$(cd "$work/elsewhere" && PATH="$work/moved/bin:$PATH" texsample info --colorspace installed_config_marker "$image")
+  case "$info" in
+    *"size      19 x 13"*"colorspace installed_config_marker"*) ;;
+    *) echo "installed texsample info: $info"; exit 1 ;;
+  esac
+  ok "installed texsample, moved and run from \$PATH: its image program and its OCIO config"
+fi
 echo "$passed passed, 0 failed"

@@ -29,9 +29,10 @@ static sample_status make(const char *in, const char *out, const sample_io_exr_o
 static void write_u8(const char *name, const unsigned char *px, int w, int h, int nchan,
                      const char *const *names, char *path, size_t size)
 {
+    io_colour_label srgb = {"sRGB", 0, {0}};
     sample_error e;
     io_path(path, size, io_scratch, name);
-    CHECK(io_oiio_write(path, path, px, IO_U8, w, h, nchan, names, "sRGB", &e) == SAMPLE_OK, "%s: %s", name,
+    CHECK(io_oiio_write(path, path, px, IO_U8, w, h, nchan, names, &srgb, &e) == SAMPLE_OK, "%s: %s", name,
           e.message);
 }
 

@@ -82,36 +82,64 @@ static render_scene *scene(const char *name, int w)
     return sc;
 }
 
-/* A background pixel between two hits, in a row or a column, on the same
- * patch or on two patches that share a boundary curve is a crack. (Between
- * unrelated parts — knob and rim, handle and body, spout and body — one-pixel
- * wedges of background are real geometry.) */
+/* Is (u, v) within a tessellation cell of its patch's boundary? */
+static int near_edge(const float *uv)
+{
+    const float e = 1.0f / RN_TESS;
+    return uv[0] < e || uv[0] > 1.0f - e || uv[1] < e || uv[1] > 1.0f - e;
+}
+
+/* Cracks, in rows and columns of pixel centres at 256² (where many centres
+ * fall on seams):
+ * - a background pixel between two hits on the same patch or on two
+ *   patches that share a boundary curve;
+ * - a pixel between hits on two neighbouring patches, both next to their
+ *   boundary, that shows a surface farther than both: the seam let the ray
+ *   through to the far side (pixel (62, 185) once showed the bottom through
+ *   the body's seam, by 13 % of the depth).
+ * Between unrelated parts — knob and rim, handle and body, spout and body —
+ * one-pixel wedges of background or of a farther part are real geometry, as
+ * is the spout's mouth between its upper and lower halves. */
 static void test_teapot_no_cracks(void)
 {
-    const int n = 96;
+    const int n = 256;
     render_scene *sc = scene("teapot", n);
     unsigned char *m = malloc((size_t)n * n);
-    int i, j, cracks = 0, hits = 0;
+    double *z = malloc(sizeof *z * (size_t)n * n);
+    float *uv = malloc(sizeof *uv * 2 * (size_t)n * n);
+    int i, j, d, cracks = 0, hits = 0;
     render_hit h;
-    if (!sc || !m) return;
+    if (!sc || !m || !z || !uv) return;
     /* m holds prim + 1, 0 for background. */
     for (j = 0; j < n; ++j)
         for (i = 0; i < n; ++i) {
             int r = render_scene_hit(sc, i + 0.5, j + 0.5, &h);
             hits += r;
             m[j * n + i] = (unsigned char)(r ? h.prim + 1 : 0);
+            z[j * n + i] = h.depth;
+            uv[2 * (j * n + i)] = (float)h.u;
+            uv[2 * (j * n + i) + 1] = (float)h.v;
         }
 #define LINKED(a, b) ((a) && (b) && ((a) == (b) || adjacent[(a) - 1][(b) - 1]))
     for (j = 1; j + 1 < n; ++j)
         for (i = 1; i + 1 < n; ++i)
-            if (!m[j * n + i] && (LINKED(m[j * n + i - 1], m[j * n + i + 1]) ||
-                                  LINKED(m[(j - 1) * n + i], m[(j + 1) * n + i]))) {
-                if (cracks < 8) fprintf(stderr, "crack at pixel (%d, %d)\n", i, j);
+            for (d = 0; d < 2; ++d) {
+                int c = j * n + i, a = d ? c - n : c - 1, b = d ? c + n : c + 1;
+                int seam = LINKED(m[a], m[b]) && m[a] != m[b] && near_edge(uv + 2 * a) &&
+                           near_edge(uv + 2 * b);
+                if (!LINKED(m[a], m[b]) || (m[c] && !(seam && z[c] > fmax(z[a], z[b]) * 1.01)))
+                    continue;
+                if (cracks < 8)
+                    fprintf(stderr, "crack at pixel (%d, %d): prim %d between %d and %d\n", i, j,
+                            m[c] - 1, m[a] - 1, m[b] - 1);
                 ++cracks;
+                break;
             }
-    CHECK(cracks == 0, "%d background pixels inside the silhouette", cracks);
+    CHECK(cracks == 0, "%d crack pixels inside the silhouette", cracks);
     CHECK(hits > n * n / 5, "teapot covers %d pixels", hits);
     free(m);
+    free(z);
+    free(uv);
     render_scene_destroy(sc);
 }
 

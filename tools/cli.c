@@ -9,7 +9,18 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+/* The subcommand being parsed (cli_args_prepare), for the parser's own
+ * messages, and whether a usage error was reported (main.c then exits 2,
+ * whichever code the command returns: a texture source without its size
+ * is found to be a usage error only where the texture is loaded). */
+static const char *current = "texsample";
+static int usage_reported;
+/* The "./-name" strings cli_args_prepare made, freed by cli_args_free. */
+static char **made;
+static int made_count;
 
 static int report(int code, const char *sub, const char *fmt, va_list ap)
 {
@@ -27,8 +38,11 @@ int cli_usage_error(const char *sub, const char *fmt, ...)
     r = report(EXIT_USAGE, sub, fmt, ap);
     va_end(ap);
     fprintf(stderr, "Try 'texsample %s --help'.\n", sub);
+    usage_reported = 1;
     return r;
 }
+
+int cli_usage_reported(void) { return usage_reported; }
 
 int cli_runtime_error(const char *sub, const char *fmt, ...)
 {
@@ -42,17 +56,75 @@ int cli_runtime_error(const char *sub, const char *fmt, ...)
 
 int cli_is_help(const char *a) { return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0; }
 
+int cli_args_prepare(const char *sub, int argc, char **argv)
+{
+    int i, k;
+    current = sub;
+    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; ++i) {
+    }
+    if (i == argc) return argc;
+    /* Operands after "--" that look like options are given as "./NAME",
+     * the same file (POSIX utility syntax guideline 10: "--" ends the
+     * options; every later argument is an operand). */
+    made = (char **)calloc((size_t)argc, sizeof *made);
+    for (k = i + 1; k < argc; ++k) {
+        char *a = argv[k];
+        if (a[0] == '-' && made) {
+            char *b = (char *)malloc(strlen(a) + 3);
+            if (b) {
+                memcpy(b, "./", 2);
+                strcpy(b + 2, a);
+                made[made_count++] = b;
+                a = b;
+            }
+        }
+        argv[k - 1] = a;
+    }
+    argv[argc - 1] = NULL;
+    return argc - 1;
+}
+
+void cli_args_free(void)
+{
+    int k;
+    for (k = 0; k < made_count; ++k) free(made[k]);
+    free(made);
+    made = NULL;
+    made_count = 0;
+}
+
+int cli_trace_options(void)
+{
+    static int trace = -1;
+    if (trace < 0) {
+        const char *e = getenv("TEXSAMPLE_TRACE_OPTIONS");
+        trace = e && *e && strcmp(e, "0") != 0;
+    }
+    return trace;
+}
+
 int cli_opt(int argc, char **argv, int *i, const char *name, const char **val)
 {
-    if (strcmp(argv[*i], name) != 0) return 0;
-    if (val) {
-        if (*i + 1 >= argc) {
-            *val = NULL;
-            return 1;
-        }
-        *val = argv[++*i];
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (cli_trace_options()) fprintf(stderr, "texsample: option %s\n", name);
+    if (strncmp(a, name, n) != 0 || (a[n] != '\0' && a[n] != '=')) return 0;
+    if (!val) {
+        if (a[n] == '\0') return 1;
+        cli_usage_error(current, "option %s takes no value ('%s')", name, a);
+        exit(EXIT_USAGE);
     }
-    return 1;
+    if (a[n] == '=' && a[n + 1] != '\0') {
+        *val = a + n + 1;
+        return 1;
+    }
+    if (a[n] == '\0' && *i + 1 < argc) {
+        *val = argv[++*i];
+        return 1;
+    }
+    /* Options are parsed before any work, so there is nothing to undo. */
+    cli_usage_error(current, "option %s needs a value", name);
+    exit(EXIT_USAGE);
 }
 
 int cli_parse_int(const char *s, int *out)
@@ -133,15 +205,15 @@ void cli_sampler_help_print(void)
  * entry. Returns 0, or −1 after reporting. */
 static int filter_flag(const char *sub, const char *v, sample_sampler *s)
 {
-    int e = v ? sample_footprint_parse(v) : -1;
+    int e = sample_footprint_parse(v);
     tool_pick p;
     if (e >= 0) {
         s->footprint = (sample_footprint)e;
         if (e == SAMPLE_FOOTPRINT_ANISOTROPIC && s->max_anisotropy == 1.0f) s->max_anisotropy = 16.0f;
         return 0;
     }
-    if (!v || tool_pick_read(sub, v, &p) != 0) {
-        cli_usage_error(sub, "--filter: unknown filter '%s'", v ? v : "");
+    if (tool_pick_read(sub, v, &p) != 0) {
+        cli_usage_error(sub, "--filter: unknown filter '%s'", v);
         return -1;
     }
     if (!tool_pick_allowed(&p, 0)) {
@@ -155,9 +227,9 @@ static int filter_flag(const char *sub, const char *v, sample_sampler *s)
 
 #define ENUM_FLAG(opt, parse, field, what)                                          \
     if (cli_opt(argc, argv, i, opt, &v)) {                                          \
-        int e = v ? parse(v) : -1;                                                  \
+        int e = parse(v);                                                           \
         if (e < 0) {                                                                \
-            cli_usage_error(sub, "%s: unknown %s '%s'", opt, what, v ? v : "");     \
+            cli_usage_error(sub, "%s: unknown %s '%s'", opt, what, v);              \
             return -1;                                                              \
         }                                                                           \
         field;                                                                      \
@@ -168,7 +240,7 @@ static int filter_flag(const char *sub, const char *v, sample_sampler *s)
     if (cli_opt(argc, argv, i, opt, &v)) {                                          \
         float f;                                                                    \
         if (!cli_parse_float(v, &f)) {                                              \
-            cli_usage_error(sub, "%s needs a finite number, not '%s'", opt, v ? v : ""); \
+            cli_usage_error(sub, "%s needs a finite number, not '%s'", opt, v);     \
             return -1;                                                              \
         }                                                                           \
         field = f;                                                                  \
@@ -179,7 +251,7 @@ static int filter_flag(const char *sub, const char *v, sample_sampler *s)
     if (cli_opt(argc, argv, i, opt, &v)) {                                          \
         int n;                                                                      \
         if (!cli_parse_int(v, &n) || n < 0) {                                       \
-            cli_usage_error(sub, "%s needs a non-negative integer, not '%s'", opt, v ? v : ""); \
+            cli_usage_error(sub, "%s needs a non-negative integer, not '%s'", opt, v); \
             return -1;                                                              \
         }                                                                           \
         field = n;                                                                  \
@@ -196,9 +268,9 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     ENUM_FLAG("--cubic", sample_cubic_parse, s->cubic = (sample_cubic)e, "cubic variant")
     if (cli_opt(argc, argv, i, "--filter", &v)) return filter_flag(sub, v, s) == 0 ? 1 : -1;
     if (cli_opt(argc, argv, i, "--mag", &v)) {
-        int e = v ? sample_filter_parse(v) : -1;
+        int e = sample_filter_parse(v);
         if (e != SAMPLE_NEAREST && e != SAMPLE_LINEAR && e != SAMPLE_CUBIC) {
-            cli_usage_error(sub, "--mag must be nearest, linear or cubic, not '%s'", v ? v : "");
+            cli_usage_error(sub, "--mag must be nearest, linear or cubic, not '%s'", v);
             return -1;
         }
         s->mag_filter = (sample_filter)e;
@@ -206,7 +278,7 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     }
     if (cli_opt(argc, argv, i, "--border", &v)) {
         if (!cli_parse_float4(v, s->border_color)) {
-            cli_usage_error(sub, "--border needs R,G,B,A, not '%s'", v ? v : "");
+            cli_usage_error(sub, "--border needs R,G,B,A, not '%s'", v);
             return -1;
         }
         return 1;
@@ -228,19 +300,38 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
 int cli_read_file(const char *path, void **data, size_t *size)
 {
     FILE *f = fopen(path, "rb");
+    struct stat st;
     long n;
     void *buf;
+    int e;
     *data = NULL;
     *size = 0;
     if (!f) return 0;
-    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+    /* A directory opens and even seeks on Linux; reading it fails with
+     * EISDIR, which says more than a size it does not have. */
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
         fclose(f);
+        errno = EISDIR;
+        return 0;
+    }
+    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        e = errno;
+        fclose(f);
+        errno = e;
         return 0;
     }
     buf = malloc(n > 0 ? (size_t)n : 1);
-    if (!buf || fread(buf, 1, (size_t)n, f) != (size_t)n) {
+    if (!buf) {
+        fclose(f);
+        errno = ENOMEM;
+        return 0;
+    }
+    if (fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        /* A short read without an error: the file shrank while read. */
+        e = ferror(f) ? errno : EIO;
         free(buf);
         fclose(f);
+        errno = e;
         return 0;
     }
     fclose(f);
@@ -254,7 +345,7 @@ int cli_write_file(const char *path, const void *data, size_t size)
     size_t len = strlen(path);
     char *tmp = (char *)malloc(len + 16);
     FILE *f;
-    int ok;
+    int ok, e;
     if (!tmp) return 0;
     snprintf(tmp, len + 16, "%s.tmp%ld", path, (long)getpid());
     f = fopen(tmp, "wb");
@@ -263,10 +354,12 @@ int cli_write_file(const char *path, const void *data, size_t size)
         return 0;
     }
     ok = fwrite(data, 1, size, f) == size;
-    ok = (fclose(f) == 0) && ok;
-    if (ok) ok = rename(tmp, path) == 0;
+    e = errno;
+    if (fclose(f) != 0 && ok) ok = 0, e = errno;
+    if (ok && rename(tmp, path) != 0) ok = 0, e = errno;
     if (!ok) remove(tmp);
     free(tmp);
+    if (!ok) errno = e;
     return ok;
 }
 

@@ -16,10 +16,31 @@ typedef int (*cli_command_fn)(int argc, char **argv);
 int cli_usage_error(const char *sub, const char *fmt, ...);
 int cli_runtime_error(const char *sub, const char *fmt, ...);
 
-/* Is argv[*i] the option `name`? If it takes a value, *val gets argv[*i+1]
- * and *i advances; a missing value is reported and *val is NULL. */
+/* Was a usage error reported (cli_usage_error)? main.c then exits with
+ * EXIT_USAGE whatever the command returned. */
+int cli_usage_reported(void);
+
+/* Before subcommand `sub` parses argv (argv[0] is its name): "--" ends the
+ * options; it is removed, and each later argument starting with '-' is
+ * given as "./ARG", the same file, so that no command takes an operand for
+ * an option. Returns the new argc. cli_args_free frees what it made. */
+int cli_args_prepare(const char *sub, int argc, char **argv);
+void cli_args_free(void);
+
+/* Is argv[*i] the option `name` ("--name", or "--name=VALUE" when it takes
+ * a value)? If it takes a value (val non-NULL), *val gets VALUE or
+ * argv[*i+1] (and *i advances). A missing or empty value, or a value given
+ * to an option that takes none, is a usage error: reported, naming the
+ * option, and the program exits with EXIT_USAGE (options are parsed before
+ * any work). */
 int cli_opt(int argc, char **argv, int *i, const char *name, const char **val);
 int cli_is_help(const char *arg);
+/* TEXSAMPLE_TRACE_OPTIONS=1 (tests/cli_options.c): cli_opt prints every
+ * option name it is asked about on stderr, and main.c runs the command a
+ * second time with --help. Given an option it does not know, a command
+ * asks about each of its own before reporting it, and each must be in its
+ * help. */
+int cli_trace_options(void);
 
 /* Strict number parsing: whole string, finite. Return 0 on failure. */
 int cli_parse_int(const char *s, int *out);
@@ -41,7 +62,7 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
 void cli_sampler_help_print(void);
 
 /* Whole-file read/write (write goes to FILE.tmp, then renames, so a failed
- * write leaves no truncated file). */
+ * write leaves no truncated file). On failure (0) errno says why. */
 int cli_read_file(const char *path, void **data, size_t *size);
 int cli_write_file(const char *path, const void *data, size_t size);
 

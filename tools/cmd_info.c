@@ -64,6 +64,7 @@ static int info_image(const char *sub, const tl_source *src, const sample_mip_pa
     sample_io_options_init(&o);
     o.colorspace = src->colorspace;
     if (sample_io_describe(src->image, &o, &fi, &err) != SAMPLE_OK) return cli_runtime_error(sub, "%s", err.message);
+    tl_warn_colorspace(sub, src->image, &fi);
     printf("file      %s\nreader    %s\nsize      %d x %d\npixels    %s\nchannels  %d (", src->image, fi.format,
            fi.width, fi.height, fi.pixel_type, fi.channels);
     for (k = 0; k < fi.channels && k < SAMPLE_IO_NAMED_CHANNELS; ++k)
@@ -79,9 +80,10 @@ static int info_image(const char *sub, const tl_source *src, const sample_mip_pa
     else printf("tiles     none (scanlines)\n");
     printf("wrapmodes %s\ncolorspace %s\ncompression %s\n", or_none(fi.wrapmodes, "(not stated)"),
            or_none(fi.colorspace, "(not stated)"), or_none(fi.compression, "(not stated)"));
-    printf("texture\ncolorspace %s (%s)\n", fi.colorspace_used,
+    printf("texture\ncolorspace %s (%s%s)\n", fi.colorspace_used,
            src->colorspace ? "--colorspace" : fi.colorspace_from_rule ? "the rule: 8/16-bit sRGB, half/float linear"
-                                                                       : "the file's");
+                                                                       : "the file's",
+           fi.colorspace_unknown ? "; the OCIO config does not know the file's" : "");
     levels = fi.texture_file_levels > 1 ? fi.texture_file_levels : levels_built(fi.width, fi.height, mip);
     print_texture(fi.width, fi.height, fi.texture_channels, fi.texture_format, levels,
                   fi.texture_file_levels > 1 ? "from the file"
@@ -112,8 +114,8 @@ int cmd_info(int argc, char **argv)
             continue;
         }
         if (cli_opt(argc, argv, &i, "--mipgen", &v)) {
-            int m = v ? sample_mipgen_parse(v) : -1;
-            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v ? v : "");
+            int m = sample_mipgen_parse(v);
+            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v);
             mip.filter = (sample_mipgen)m;
             continue;
         }
@@ -121,6 +123,7 @@ int cmd_info(int argc, char **argv)
             src.image = argv[i];
             continue;
         }
+        if (argv[i][0] != '-') return cli_usage_error(sub, "unexpected argument '%s' (one texture)", argv[i]);
         return cli_usage_error(sub, "unknown option '%s'", argv[i]);
     }
     if (!tl_source_given(&src)) return cli_usage_error(sub, "a texture is required (--image or --raw)");

@@ -7,7 +7,11 @@
 #include "sample/testing.h"
 #include "commands.h"
 #include "texload.h"
+#ifdef TEXSAMPLE_FRONT
+#include "image_program.h"
+#endif
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,11 +23,16 @@ static const char help[] =
     "Texture:\n"
     "  --raw FILE --w W --h H  little-endian float32 RGBA texels, row 0 (t = 0) first\n"
     "  --image FILE            any image OpenImageIO reads (and .exr/.tx mip files)\n"
+    "  --colorspace NAME       colour space of the --image file (an OCIO name; default:\n"
+    "                          the file's metadata, else 8/16-bit = sRGB, half/float =\n"
+    "                          linear)\n"
     "  --levels PREFIX         explicit mip levels PREFIX.1.raw, PREFIX.2.raw, ... (raw\n"
     "                          float32 RGBA, sizes max(1, W>>k) x max(1, H>>k)); as many\n"
     "                          as exist are used, and no pyramid is generated\n"
     "  --mipgen box|lanczos3|kaiser|none\n"
-    "                          how to build the pyramid otherwise (default box)\n\n"
+    "                          how to build the pyramid otherwise (default box)\n"
+    "  An --image file's stored wrap modes (wrapmodes, as mip writes them) are used\n"
+    "  unless --wrap, --wrap-s or --wrap-t is given.\n\n"
     "Queries:\n"
     "  --queries FILE          float32, 6 per query: s t ds/dx dt/dx ds/dy dt/dy\n"
     "  --corners FILE          float32, 8 per query: the (s,t) images of the pixel's 2x2\n"
@@ -42,7 +51,7 @@ int cmd_lookup(int argc, char **argv)
     sample_sampler smp;
     sample_mip_params mip;
     const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v;
-    int text = 0, want_stats = 0, reference = 0, i, rc = EXIT_RUNTIME;
+    int text = 0, want_stats = 0, reference = 0, wrap_s_given = 0, wrap_t_given = 0, i, r, rc = EXIT_RUNTIME;
     void *qdata = NULL, *cdata = NULL;
     size_t qsize = 0, csize = 0, n;
     sample_texture *tex = NULL;
@@ -55,7 +64,6 @@ int cmd_lookup(int argc, char **argv)
     sample_sampler_init(&smp);
     sample_mip_params_init(&mip);
     for (i = 1; i < argc; ++i) {
-        int r;
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
             cli_sampler_help_print();
@@ -65,6 +73,12 @@ int cmd_lookup(int argc, char **argv)
             reference = 1;
             continue;
         }
+        /* --wrap, --wrap-s, --wrap-t (and their --opt=value forms) override
+         * the wrap modes an image file stores, axis by axis. */
+        if (strncmp(argv[i], "--wrap", 6) == 0) {
+            wrap_s_given |= argv[i][6] != '-' || argv[i][7] == 's';
+            wrap_t_given |= argv[i][6] != '-' || argv[i][7] == 't';
+        }
         if ((r = cli_sampler_flag(sub, argc, argv, &i, &smp)) != 0) {
             if (r < 0) return EXIT_USAGE;
             continue;
@@ -73,17 +87,19 @@ int cmd_lookup(int argc, char **argv)
             if (r < 0) return EXIT_USAGE;
             continue;
         }
-        if (cli_opt(argc, argv, &i, "--queries", &qpath)) { if (!qpath) return cli_usage_error(sub, "--queries needs a file"); continue; }
-        if (cli_opt(argc, argv, &i, "--corners", &cpath)) { if (!cpath) return cli_usage_error(sub, "--corners needs a file"); continue; }
-        if (cli_opt(argc, argv, &i, "--out", &opath)) { if (!opath) return cli_usage_error(sub, "--out needs a file"); continue; }
+        if (cli_opt(argc, argv, &i, "--queries", &qpath)) continue;
+        if (cli_opt(argc, argv, &i, "--corners", &cpath)) continue;
+        if (cli_opt(argc, argv, &i, "--out", &opath)) continue;
         if (cli_opt(argc, argv, &i, "--text", NULL)) { text = 1; continue; }
         if (cli_opt(argc, argv, &i, "--stats", NULL)) { want_stats = 1; continue; }
         if (cli_opt(argc, argv, &i, "--mipgen", &v)) {
-            int m = v ? sample_mipgen_parse(v) : -1;
-            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v ? v : "");
+            int m = sample_mipgen_parse(v);
+            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v);
             mip.filter = (sample_mipgen)m;
             continue;
         }
+        if (argv[i][0] != '-')
+            return cli_usage_error(sub, "unexpected argument '%s' (files are given by options)", argv[i]);
         return cli_usage_error(sub, "unknown option '%s'", argv[i]);
     }
     if (!qpath) return cli_usage_error(sub, "--queries FILE is required");
@@ -91,13 +107,24 @@ int cmd_lookup(int argc, char **argv)
     if (sample_sampler_validate(&smp) != SAMPLE_OK)
         return cli_usage_error(sub, "inconsistent sampler state (min-lod > max-lod, base-level > max-level, or aniso < 1)");
 
-    /* The pyramid's edges follow the sampler's wrap modes. */
+    /* The pyramid's edges follow the sampler's wrap modes: the file's when
+     * it stores them and the command line names none. */
     mip.wrap_s = smp.wrap_s;
     mip.wrap_t = smp.wrap_t;
-    if (tl_load(sub, &src, &mip, &tex) != 0) return EXIT_RUNTIME;
+    src.wrap_from_file = !wrap_s_given && !wrap_t_given;
+    if ((r = tl_load(sub, &src, &mip, &tex)) != 0) {
+#ifdef TEXSAMPLE_FRONT
+        if (r == TL_IMAGE_PROGRAM) return image_program_run(argc, argv);
+#endif
+        return EXIT_RUNTIME;
+    }
+    if (src.has_wrap) {
+        if (!wrap_s_given) smp.wrap_s = src.wrap_s;
+        if (!wrap_t_given) smp.wrap_t = src.wrap_t;
+    }
 
     if (!cli_read_file(qpath, &qdata, &qsize)) {
-        cli_runtime_error(sub, "cannot read query file '%s'", qpath);
+        cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, strerror(errno));
         goto done;
     }
     if (qsize % (6 * sizeof(float)) != 0) {
@@ -107,7 +134,7 @@ int cmd_lookup(int argc, char **argv)
     n = qsize / (6 * sizeof(float));
     if (cpath) {
         if (!cli_read_file(cpath, &cdata, &csize)) {
-            cli_runtime_error(sub, "cannot read corner file '%s'", cpath);
+            cli_runtime_error(sub, "cannot read corner file '%s': %s", cpath, strerror(errno));
             goto done;
         }
         if (csize != n * 8 * sizeof(float)) {
@@ -133,7 +160,7 @@ int cmd_lookup(int argc, char **argv)
         goto done;
     }
     if (opath && !cli_write_file(opath, out, n * 4 * sizeof(float))) {
-        cli_runtime_error(sub, "cannot write '%s'", opath);
+        cli_runtime_error(sub, "cannot write '%s': %s", opath, strerror(errno));
         goto done;
     }
     if (text) {

@@ -45,8 +45,8 @@ static void progress(void *user, size_t done, size_t total)
 
 static int parse_wrap(const char *sub, const char *opt, const char *v, sample_wrap *out)
 {
-    int w = v ? sample_wrap_parse(v) : -1;
-    if (w < 0) return cli_usage_error(sub, "%s: unknown wrap mode '%s'", opt, v ? v : ""), -1;
+    int w = sample_wrap_parse(v);
+    if (w < 0) return cli_usage_error(sub, "%s: unknown wrap mode '%s'", opt, v), -1;
     *out = (sample_wrap)w;
     return 0;
 }
@@ -59,7 +59,7 @@ static int parse_format(const char *v, sample_io_type *t)
     } names[] = {{"half", SAMPLE_IO_TYPE_HALF}, {"float", SAMPLE_IO_TYPE_FLOAT}, {"u8", SAMPLE_IO_TYPE_U8},
                  {"uint8", SAMPLE_IO_TYPE_U8}, {"u16", SAMPLE_IO_TYPE_U16}, {"uint16", SAMPLE_IO_TYPE_U16}};
     size_t k;
-    for (k = 0; v && k < sizeof names / sizeof names[0]; ++k)
+    for (k = 0; k < sizeof names / sizeof names[0]; ++k)
         if (strcmp(v, names[k].name) == 0) {
             *t = names[k].type;
             return 1;
@@ -91,9 +91,9 @@ int cmd_mip(int argc, char **argv)
             return EXIT_OK;
         }
         if (cli_opt(argc, argv, &i, "--filter", &v)) {
-            int m = v ? sample_mipgen_parse(v) : -1;
+            int m = sample_mipgen_parse(v);
             if (m < 0 || m == SAMPLE_MIPGEN_NONE)
-                return cli_usage_error(sub, "--filter: expected box, lanczos3 or kaiser, not '%s'", v ? v : "");
+                return cli_usage_error(sub, "--filter: expected box, lanczos3 or kaiser, not '%s'", v);
             mip.filter = (sample_mipgen)m;
         } else if (cli_opt(argc, argv, &i, "--wrap", &v)) {
             if (parse_wrap(sub, "--wrap", v, &mip.wrap_s) != 0) return EXIT_USAGE;
@@ -103,31 +103,33 @@ int cmd_mip(int argc, char **argv)
         } else if (cli_opt(argc, argv, &i, "--wrap-t", &v)) {
             if (parse_wrap(sub, "--wrap-t", v, &mip.wrap_t) != 0) return EXIT_USAGE;
         } else if (cli_opt(argc, argv, &i, "--colorspace", &v)) {
-            if (!v) return cli_usage_error(sub, "--colorspace needs a name");
             o.colorspace = v;
         } else if (cli_opt(argc, argv, &i, "--ocio", &v)) {
-            if (!v) return cli_usage_error(sub, "--ocio needs a config file");
+            /* The input is decoded into this config's scene_linear space,
+             * and the output names that space. */
             o.ocio_config = x.ocio_config = v;
         } else if (cli_opt(argc, argv, &i, "--tile", &v)) {
             int n;
-            if (!v || !cli_parse_int(v, &n) || n < 1 || n > 4096)
-                return cli_usage_error(sub, "--tile needs a size from 1 to 4096, not '%s'", v ? v : "");
+            if (!cli_parse_int(v, &n) || n < 1 || n > 4096)
+                return cli_usage_error(sub, "--tile needs a size from 1 to 4096, not '%s'", v);
             x.tile_w = x.tile_h = n;
         } else if (cli_opt(argc, argv, &i, "--format", &v)) {
             if (!parse_format(v, &x.type))
-                return cli_usage_error(sub, "--format: expected half, float, u8 or u16, not '%s'", v ? v : "");
-        } else if (strcmp(argv[i], "--half") == 0) {
+                return cli_usage_error(sub, "--format: expected half, float, u8 or u16, not '%s'", v);
+        } else if (cli_opt(argc, argv, &i, "--half", NULL)) {
             x.type = SAMPLE_IO_TYPE_HALF;
-        } else if (strcmp(argv[i], "--float") == 0) {
+        } else if (cli_opt(argc, argv, &i, "--float", NULL)) {
             x.type = SAMPLE_IO_TYPE_FLOAT;
-        } else if (strcmp(argv[i], "--half-clamp") == 0) {
+        } else if (cli_opt(argc, argv, &i, "--half-clamp", NULL)) {
             x.half_clamp = 1;
         } else if (argv[i][0] != '-' && !in) {
             in = argv[i];
         } else if (argv[i][0] != '-' && !outp) {
             outp = argv[i];
+        } else if (argv[i][0] == '-') {
+            return cli_usage_error(sub, "unknown option '%s'", argv[i]);
         } else {
-            return cli_usage_error(sub, "unexpected argument '%s'", argv[i]);
+            return cli_usage_error(sub, "unexpected argument '%s' (one INPUT, one OUTPUT)", argv[i]);
         }
     }
     if (!in || !outp) return cli_usage_error(sub, "an input image and an output file are required");

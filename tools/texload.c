@@ -2,6 +2,7 @@
 #include "texload.h"
 #include "cli.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,37 +18,20 @@ int tl_source_given(const tl_source *src) { return src->raw || src->image; }
 int tl_source_flag(const char *sub, int argc, char **argv, int *i, tl_source *src)
 {
     const char *v;
-    if (cli_opt(argc, argv, i, "--raw", &v)) {
-        if (!v) { cli_usage_error(sub, "--raw needs a file"); return -1; }
-        src->raw = v;
-        return 1;
+    int *size;
+    if (cli_opt(argc, argv, i, "--raw", &v)) return src->raw = v, 1;
+    if (cli_opt(argc, argv, i, "--image", &v)) return src->image = v, 1;
+    if (cli_opt(argc, argv, i, "--levels", &v)) return src->levels = v, 1;
+    if (cli_opt(argc, argv, i, "--colorspace", &v)) return src->colorspace = v, 1;
+    if (cli_opt(argc, argv, i, "--w", &v)) size = &src->w;
+    else if (cli_opt(argc, argv, i, "--h", &v)) size = &src->h;
+    else return 0;
+    if (!cli_parse_int(v, size) || *size <= 0 || *size > SAMPLE_MAX_SIZE) {
+        cli_usage_error(sub, "%s needs a size from 1 to %d, not '%s'", size == &src->w ? "--w" : "--h",
+                        SAMPLE_MAX_SIZE, v);
+        return -1;
     }
-    if (cli_opt(argc, argv, i, "--image", &v)) {
-        if (!v) { cli_usage_error(sub, "--image needs a file"); return -1; }
-        src->image = v;
-        return 1;
-    }
-    if (cli_opt(argc, argv, i, "--levels", &v)) {
-        if (!v) { cli_usage_error(sub, "--levels needs a prefix"); return -1; }
-        src->levels = v;
-        return 1;
-    }
-    if (cli_opt(argc, argv, i, "--colorspace", &v)) {
-        if (!v) { cli_usage_error(sub, "--colorspace needs a name"); return -1; }
-        src->colorspace = v;
-        return 1;
-    }
-    if (cli_opt(argc, argv, i, "--w", &v) || cli_opt(argc, argv, i, "--h", &v)) {
-        int n, *dst = strcmp(argv[*i - 1], "--w") == 0 ? &src->w : &src->h;
-        if (!cli_parse_int(v, &n) || n <= 0 || n > SAMPLE_MAX_SIZE) {
-            cli_usage_error(sub, "%s needs a size from 1 to %d, not '%s'", argv[*i - 1], SAMPLE_MAX_SIZE,
-                            v ? v : "");
-            return -1;
-        }
-        *dst = n;
-        return 1;
-    }
-    return 0;
+    return 1;
 }
 
 /* Read one raw float32 RGBA level of w × h into *data. */
@@ -55,7 +39,7 @@ static int read_raw(const char *sub, const char *path, int w, int h, void **data
 {
     size_t size, want = (size_t)w * (size_t)h * 4 * sizeof(float);
     if (!cli_read_file(path, data, &size)) {
-        cli_runtime_error(sub, "cannot read '%s'", path);
+        cli_runtime_error(sub, "cannot read '%s': %s", path, strerror(errno));
         return -1;
     }
     if (size != want) {
@@ -112,22 +96,42 @@ done:
     return rc;
 }
 
-int tl_load(const char *sub, const tl_source *src, const sample_mip_params *mip, sample_texture **out)
+#ifdef TEXSAMPLE_HAVE_IO
+void tl_warn_colorspace(const char *sub, const char *path, const sample_io_file_info *file)
+{
+    if (file->colorspace_unknown)
+        fprintf(stderr, "texsample %s: warning: '%s' names colour space '%s', which the OCIO config does not "
+                "know; decoded as '%s' (name its space with --colorspace)\n",
+                sub, path, file->colorspace, file->colorspace_used);
+}
+#endif
+
+int tl_load(const char *sub, tl_source *src, const sample_mip_params *mip, sample_texture **out)
 {
     *out = NULL;
     if (src->raw) return load_raw(sub, src, mip, out);
 #ifdef TEXSAMPLE_HAVE_IO
     {
         sample_io_options opt;
+        sample_io_file_info file;
         sample_error err;
         sample_io_options_init(&opt);
         opt.colorspace = src->colorspace;
+        opt.file_info = &file;
+        opt.mip_wrap_from_file = src->wrap_from_file;
         if (sample_io_read_texture(src->image, &opt, mip, out, &err) != SAMPLE_OK) {
             cli_runtime_error(sub, "%s", err.message);
             return -1;
         }
+        tl_warn_colorspace(sub, src->image, &file);
+        src->has_wrap = file.has_wrap;
+        src->wrap_s = file.wrap_s;
+        src->wrap_t = file.wrap_t;
         return 0;
     }
+#elif defined(TEXSAMPLE_FRONT)
+    (void)mip;
+    return TL_IMAGE_PROGRAM;
 #else
     return cli_runtime_error(sub, "this build has no image support (libsample_io); use --raw"), -1;
 #endif

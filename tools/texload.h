@@ -3,6 +3,9 @@
 #define TEXSAMPLE_TEXLOAD_H
 
 #include "sample/sample.h"
+#ifdef TEXSAMPLE_HAVE_IO
+#include "sample/sample_io.h"
+#endif
 
 typedef struct tl_source {
     const char *raw;        /* --raw FILE: float32 RGBA */
@@ -10,6 +13,12 @@ typedef struct tl_source {
     const char *levels;     /* --levels PREFIX: PREFIX.k.raw for k ≥ 1 */
     const char *image;      /* --image FILE (libsample_io) */
     const char *colorspace; /* --colorspace NAME for --image */
+    /* In: a pyramid built for an image file takes its edges from the
+     * file's wrap modes where it stores them. */
+    int wrap_from_file;
+    /* Out (tl_load of an image file): the wrap modes the file stores. */
+    int has_wrap;
+    sample_wrap wrap_s, wrap_t;
 } tl_source;
 
 void tl_source_init(tl_source *src);
@@ -17,7 +26,20 @@ void tl_source_init(tl_source *src);
  * consumed, 0 if not ours, −1 on a bad value (reported). */
 int tl_source_flag(const char *sub, int argc, char **argv, int *i, tl_source *src);
 int tl_source_given(const tl_source *src);
-/* Loads the texture; errors are reported on stderr. Returns 0 on success. */
-int tl_load(const char *sub, const tl_source *src, const sample_mip_params *mip, sample_texture **out);
+/* Loads the texture; errors are reported on stderr, and so is a file that
+ * names a colour space the OCIO config does not know (a warning: which
+ * name, and the space used instead). Returns 0 on success,
+ * −1 after reporting an error, and in the front program (which reads no
+ * image files: tools/CMakeLists.txt) TL_IMAGE_PROGRAM for an image file:
+ * the command is then run again in the image program (image_program.h). */
+enum { TL_IMAGE_PROGRAM = 1 };
+int tl_load(const char *sub, tl_source *src, const sample_mip_params *mip, sample_texture **out);
+
+#ifdef TEXSAMPLE_HAVE_IO
+/* The warning tl_load gives for an image file naming a colour space the
+ * OCIO config does not know (which name, and the space used instead), for
+ * commands that read files otherwise (info). */
+void tl_warn_colorspace(const char *sub, const char *path, const sample_io_file_info *file);
+#endif
 
 #endif

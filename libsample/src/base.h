@@ -36,6 +36,13 @@
  * planning) out of a hot loop, whose registers and code size they would
  * otherwise cost on every iteration. */
 
+/* A branch that is almost always taken (a resident texture's texels). */
+#if defined(__GNUC__)
+#define SAMPLE_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define SAMPLE_LIKELY(x) (x)
+#endif
+
 /* Prefetch hint; never dereferences, but callers keep the address inside
  * the level anyway so that no invalid pointer is ever formed. A function
  * whose only effect is prefetching looks side-effect free to GCC, which

@@ -38,7 +38,7 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
     /* Every wrap mode maps an in-range index to itself (ls_wrap_index's own
      * first test); checking here saves two calls on most reads. */
     if (i >= 0.0 && i < (double)L->w && j >= 0.0 && j < (double)L->h) {
-        tex_decode(c->tex, L, (int)i, (int)j, out);
+        tex_read(c->tex, lv, (int)i, (int)j, out);
         return;
     }
     x = ls_wrap_index(c->smp->wrap_s, i, L->w, linear);
@@ -48,7 +48,7 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
         out[2] = c->border[2]; out[3] = c->border[3];
         return;
     }
-    tex_decode(c->tex, L, x, y, out);
+    tex_read(c->tex, lv, x, y, out);
 }
 
 /* Whether the n floats stored at p are all finite. A float is ±inf or NaN
@@ -90,7 +90,8 @@ static inline int batch_query_finite(const sample_batch_args *a, size_t k)
 }
 
 /* Prefetch the 2 × 2 block a bilinear read at texel coordinates (u, v)
- * (after the −½) on level L needs. Wrapping is ignored (a hint), but the
+ * (after the −½) on level L of a resident texture needs (nothing for
+ * another source). Wrapping is ignored (a hint), but the
  * address is kept inside the level so that no invalid pointer is ever
  * formed. The pair's first and last byte (they may straddle a line) are
  * asked for without testing whether they share one: that test mispredicts
@@ -100,8 +101,10 @@ SAMPLE_FORCE_INLINE void ctx_prefetch_block(const sample_ctx *c, const struct sa
     int i = u > 0.0f ? (u < (float)(L->w - 1) ? (int)u : L->w - 1) : 0;
     int j = v > 0.0f ? (v < (float)(L->h - 1) ? (int)v : L->h - 1) : 0;
     size_t tb = c->tex->texel_bytes;
-    const unsigned char *p = L->data + (size_t)j * L->stride + (size_t)i * tb;
+    const unsigned char *p;
     size_t e = i + 1 < L->w ? 2 * tb - 1 : tb - 1;
+    if (!tex_resident(c->tex)) return;
+    p = L->data + (size_t)j * L->stride + (size_t)i * tb;
     SAMPLE_PREFETCH(p);
     SAMPLE_PREFETCH(p + e);
     if (j + 1 < L->h) {

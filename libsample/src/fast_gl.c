@@ -178,11 +178,8 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
         j0 = floorf(v);
         tp->fu = tp->fv = 0.0f;
     } else {
-        float a = u - 0.5f, b = v - 0.5f;
-        i0 = floorf(a);
-        j0 = floorf(b);
-        tp->fu = a - i0;
-        tp->fv = b - j0;
+        i0 = recon_linear_origin(u, &tp->fu);
+        j0 = recon_linear_origin(v, &tp->fv);
     }
     tp->inside = axis_index(c->smp->wrap_s, i0, L->w, n, first, kind != SAMPLE_NEAREST, tp->col);
     if (axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y)) {

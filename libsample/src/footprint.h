@@ -176,7 +176,7 @@ typedef struct fp_level_rows {
     int lv, nrows, tr;
     int in_place; /* float RGBA: texels inside the level are read where they are */
     double jlo, u0, v0, wlim, hlim;
-    const unsigned char *data; /* the level's texel (0, 0) */
+    const unsigned char *data; /* the level's texel (0, 0); NULL unless resident */
     const isa_kernels *k;      /* the batch's kernels (sample_ctx.isa) */
     size_t pitch, lstride;
 } fp_level_rows;
@@ -213,7 +213,7 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     lr->v0 = vw;
     lr->wlim = (double)(tr ? L->h : L->w);
     lr->hlim = (double)(tr ? L->w : L->h);
-    lr->data = L->data;
+    lr->data = tex_resident(c->tex) ? L->data : NULL;
     lr->k = c->isa;
     lr->pitch = tr ? L->stride : tb;
     lr->lstride = tr ? tb : L->stride;
@@ -249,7 +249,7 @@ SAMPLE_FORCE_INLINE void fp_prefetch_texels(const fp_level_rows *lr, const unsig
 SAMPLE_FORCE_INLINE void fp_prefetch_span(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
     double lo = ilo < 0.0 ? 0.0 : ilo, hi = ilo + ncol - 1.0;
-    if (!(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
+    if (!lr->data || !(j >= 0.0 && j < lr->hlim) || !(ncol > 0.0)) return;
     if (hi > lr->wlim - 1.0) hi = lr->wlim - 1.0;
     if (!(lo <= hi)) return;
     fp_prefetch_texels(lr, fp_texel_at(lr, j, lo), hi - lo + 1.0);
@@ -268,11 +268,11 @@ typedef struct fp_spans {
 } fp_spans;
 
 /* The address of texels ilo … ilo + ncol − 1 of walk row j when they all
- * lie inside the level (then every wrap mode reads them there, ctx_texel's
- * own shortcut), NULL otherwise. */
+ * lie inside a resident level (then every wrap mode reads them there,
+ * ctx_texel's own shortcut), NULL otherwise (read through ctx_texel). */
 SAMPLE_FORCE_INLINE const unsigned char *fp_span_at(const fp_level_rows *lr, double j, double ilo, double ncol)
 {
-    if (j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim) return fp_texel_at(lr, j, ilo);
+    if (lr->data && j >= 0.0 && j < lr->hlim && ilo >= 0.0 && ilo + ncol <= lr->wlim) return fp_texel_at(lr, j, ilo);
     return NULL;
 }
 
@@ -410,6 +410,45 @@ SAMPLE_FORCE_INLINE void fp_pass_add(fp_pass *ps, double w, double dwdu, double 
     if (ps->tr) fp_accum_add(ps->acc, w, dwdv, dwdu, T);
     else fp_accum_add(ps->acc, w, dwdu, dwdv, T);
     ps->total += 1.0;
+}
+
+/* The weights alone over a level (no derivatives), by the batch's row
+ * kernel `level` (fp_row_kernels: bn_level, ewa_level) with the filter's
+ * parameters par: sums kept in registers for the whole level, then folded
+ * into acc. Returns the texels added. */
+SAMPLE_FORCE_INLINE double fp_level_sums(fp_accum *acc, const fp_level_rows *lr,
+                                         void (*level)(struct fp_sums *, const struct fp_level_rows *, const double *),
+                                         const double *par)
+{
+    fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
+    level(&sm, lr, par);
+    fp_accum_fold(acc, &sm);
+    return sm.n;
+}
+
+/* A filter's weight at texel offset (du, dv) from the centre, in the walk
+ * frame, and its gradient (wu, wv) = ∂w/∂(du, dv); 0 where the texel
+ * adds nothing (outside the footprint). `pass` is the filter's pass state,
+ * whose first member is the fp_pass. */
+typedef int (*fp_weight_fn)(const void *pass, double du, double dv, double *w, double *wu, double *wv);
+
+/* One row of a derivative pass (fp_pass_run's row, for every filter):
+ * each texel's weight and gradient from weight(), added with the centre's
+ * motion — du = c − u0, so ∂w/∂u0 = −wu, times ku (and likewise v). Texel
+ * positions du = (ilo + k) − u0 are the other passes' to the bit. Generic
+ * over weight(), inlined with it (zstd style). */
+SAMPLE_FORCE_INLINE void fp_pass_row(void *pass, fp_weight_fn weight, const unsigned char *p, size_t pitch, int n,
+                                     double ilo, double dv)
+{
+    fp_pass *ps = (fp_pass *)pass;
+    int k;
+    for (k = 0; k < n; ++k) {
+        double w, wu, wv;
+        float t4[4];
+        if (!weight(pass, (ilo + k) - ps->u0, dv, &w, &wu, &wv)) continue;
+        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
+        fp_pass_add(ps, w, -wu * ps->ku, -wv * ps->kv, t4);
+    }
 }
 
 /* One level of a footprint filter: when `count_only`, returns (as a double,

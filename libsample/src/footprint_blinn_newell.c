@@ -150,21 +150,21 @@ typedef struct bn_affine_deriv {
     double M[2][2];
 } bn_affine_deriv;
 
+static int bn_affine_weight(const void *dp, double du, double dv, double *w, double *wu, double *wv)
+{
+    const double(*M)[2] = ((const bn_affine_deriv *)dp)->M;
+    double gx = 0.0, gy = 0.0;
+    *w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
+    if (*w <= 0.0) return 0;
+    /* ∂w/∂(du, dv) = ∇pyr · M (the chain rule through x = M·(du, dv)). */
+    *wu = gx * M[0][0] + gy * M[1][0];
+    *wv = gx * M[0][1] + gy * M[1][1];
+    return 1;
+}
+
 static void bn_affine_deriv_row(void *dp, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
-    bn_affine_deriv *d = (bn_affine_deriv *)dp;
-    double(*M)[2] = d->M;
-    int k;
-    for (k = 0; k < n; ++k) {
-        double du = (ilo + k) - d->ps.u0, gx = 0.0, gy = 0.0, w;
-        float t4[4];
-        w = pyramid(M[0][0] * du + M[0][1] * dv, M[1][0] * du + M[1][1] * dv, &gx, &gy);
-        if (w <= 0.0) continue;
-        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
-        /* w depends on c − u0: ∂w/∂u0 = −(gx·M₀₀ + gy·M₁₀). */
-        fp_pass_add(&d->ps, w, -(gx * M[0][0] + gy * M[1][0]) * d->ps.ku, -(gx * M[0][1] + gy * M[1][1]) * d->ps.kv,
-                    t4);
-    }
+    fp_pass_row(dp, bn_affine_weight, p, pitch, n, ilo, dv);
 }
 
 static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc,
@@ -182,16 +182,10 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
         if (bn_affine_sliced(e)) return e->lr.k->rows->bn_count(&e->lr, &e->spans, e->P);
         return fp_count_rows(&e->lr, &e->spans, cap);
     }
-    if (!acc->deriv) {
-        /* The pyramid alone, the level at once (footprint_rows.c), sums in
-         * registers. With |x|, |y| < 1 both factors are at least 2^−53, so
-         * w > 0 there (M and du are finite, ls_fp_shape_reshape: det J′ =
-         * ±t0·t1, t ≥ 1). */
-        fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-        e->lr.k->rows->bn_level(&sm, &e->lr, (const double(*)[2])e->M);
-        fp_accum_fold(acc, &sm);
-        return sm.n;
-    }
+    /* The pyramid alone, the level at once (footprint_rows.c). With |x|,
+     * |y| < 1 both factors are at least 2^−53, so w > 0 there (M and du
+     * are finite, ls_fp_shape_reshape: det J′ = ±t0·t1, t ≥ 1). */
+    if (!acc->deriv) return fp_level_sums(acc, &e->lr, e->lr.k->rows->bn_level, &e->M[0][0]);
     memcpy(d.M, e->M, sizeof d.M);
     return fp_pass_run(&d.ps, &e->lr, T, acc, e->ku, e->kv, bn_affine_deriv_row);
 }
@@ -323,49 +317,50 @@ typedef struct bn_quad_pass {
     int area;
 } bn_quad_pass;
 
+static int bn_quad_weight(const void *dp, double du, double dv, double *wp, double *wup, double *wvp)
+{
+    const bn_quad_pass *d = (const bn_quad_pass *)dp;
+    const double(*G)[3] = d->G;
+    double gx = 0.0, gy = 0.0, w, W, iw, x, y, wu, wv;
+    /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
+     * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
+     * quad, where the pyramid is 0 anyway. */
+    W = G[2][0] * du + G[2][1] * dv + G[2][2];
+    if (!(W > 0.0)) return 0;
+    iw = 1.0 / W;
+    x = (G[0][0] * du + G[0][1] * dv + G[0][2]) * iw;
+    y = (G[1][0] * du + G[1][1] * dv + G[1][2]) * iw;
+    w = pyramid(x, y, &gx, &gy);
+    if (w <= 0.0) return 0;
+    /* ∂w/∂(x, y) = ∇pyr; ∂x/∂u = (G₀₀ − x·G₂₀)/W etc. (quotient rule on
+     * X/W). */
+    wu = (gx * (G[0][0] - x * G[2][0]) + gy * (G[1][0] - y * G[2][0])) * iw;
+    wv = (gx * (G[0][1] - x * G[2][1]) + gy * (G[1][1] - y * G[2][1])) * iw;
+    if (d->area) {
+        /* w ← w·m, m = w_h³ (w_h = 1/W clamped): ∇m = 3w_h²·∇w_h,
+         * ∇w_h = −(G₂₀, G₂₁)·w_h², 0 where the clamp holds. */
+        double wh = iw, m, mu = 0.0, mv = 0.0;
+        if (wh < d->wlo) wh = d->wlo;
+        else if (wh > d->whi) wh = d->whi;
+        else {
+            double k4 = -3.0 * wh * wh * wh * wh;
+            mu = k4 * G[2][0];
+            mv = k4 * G[2][1];
+        }
+        m = wh * wh * wh;
+        wu = m * wu + w * mu;
+        wv = m * wv + w * mv;
+        w *= m;
+    }
+    *wp = w;
+    *wup = wu;
+    *wvp = wv;
+    return 1;
+}
+
 static void bn_quad_row(void *dp, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
-    bn_quad_pass *d = (bn_quad_pass *)dp;
-    double(*G)[3] = d->G;
-    int k;
-    for (k = 0; k < n; ++k) {
-        double du = ilo + k - d->ps.u0, gx = 0.0, gy = 0.0, w, W, iw, x, y, ax, ay, wu, wv;
-        float t4[4];
-        /* Preimage of the pulled-back point: (X, Y, W) = G·(du, dv, 1)
-         * = (x, y, 1)/w. W ≤ 0 (beyond the horizon) only outside the
-         * quad, where the pyramid is 0 anyway. */
-        W = G[2][0] * du + G[2][1] * dv + G[2][2];
-        if (!(W > 0.0)) continue;
-        iw = 1.0 / W;
-        x = (G[0][0] * du + G[0][1] * dv + G[0][2]) * iw;
-        y = (G[1][0] * du + G[1][1] * dv + G[1][2]) * iw;
-        w = pyramid(x, y, &gx, &gy);
-        if (w <= 0.0) continue;
-        /* ∂w/∂(x, y) = ∇pyr; ∂x/∂u = (G₀₀ − x·G₂₀)/W etc. (quotient
-         * rule on X/W); the centre moves opposite to (du, dv). */
-        ax = gx;
-        ay = gy;
-        wu = (ax * (G[0][0] - x * G[2][0]) + ay * (G[1][0] - y * G[2][0])) * iw;
-        wv = (ax * (G[0][1] - x * G[2][1]) + ay * (G[1][1] - y * G[2][1])) * iw;
-        if (d->area) {
-            /* w ← w·m, m = w_h³ (w_h = 1/W clamped): ∇m = 3w_h²·∇w_h,
-             * ∇w_h = −(G₂₀, G₂₁)·w_h², 0 where the clamp holds. */
-            double wh = iw, m, mu = 0.0, mv = 0.0;
-            if (wh < d->wlo) wh = d->wlo;
-            else if (wh > d->whi) wh = d->whi;
-            else {
-                double k4 = -3.0 * wh * wh * wh * wh;
-                mu = k4 * G[2][0];
-                mv = k4 * G[2][1];
-            }
-            m = wh * wh * wh;
-            wu = m * wu + w * mu;
-            wv = m * wv + w * mv;
-            w *= m;
-        }
-        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
-        fp_pass_add(&d->ps, w, -wu * d->ps.ku, -wv * d->ps.kv, t4);
-    }
+    fp_pass_row(dp, bn_quad_weight, p, pitch, n, ilo, dv);
 }
 
 static double bn_quad_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)

@@ -125,22 +125,23 @@ typedef struct ewa_deriv {
     double A, B, C;
 } ewa_deriv;
 
+static int ewa_deriv_weight(const void *dp, double du, double dv, double *w, double *wu, double *wv)
+{
+    const ewa_deriv *d = (const ewa_deriv *)dp;
+    const double A = d->A, B = d->B, C = d->C, r2 = A * du * du + B * du * dv + C * dv * dv;
+    double dw;
+    if (!(r2 < 1.0)) return 0;
+    *w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, &dw);
+    if (*w <= 0.0) return 0;
+    /* ∂w/∂(du, dv) = w′(r²)·∇r², ∇r² = (2A·du + B·dv, B·du + 2C·dv). */
+    *wu = dw * (2.0 * A * du + B * dv);
+    *wv = dw * (B * du + 2.0 * C * dv);
+    return 1;
+}
+
 static void ewa_deriv_row(void *dp, const unsigned char *p, size_t pitch, int n, double ilo, double dv)
 {
-    ewa_deriv *d = (ewa_deriv *)dp;
-    const double A = d->A, B = d->B, C = d->C;
-    int k;
-    for (k = 0; k < n; ++k) {
-        double du = (ilo + k) - d->ps.u0, r2, w, dw;
-        float t4[4];
-        r2 = A * du * du + B * du * dv + C * dv * dv;
-        if (!(r2 < 1.0)) continue;
-        w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, &dw);
-        if (w <= 0.0) continue;
-        memcpy(t4, p + pitch * (size_t)k, sizeof t4);
-        /* r² depends on c − u0: ∂r²/∂u0 = −(2A·du + B·dv). */
-        fp_pass_add(&d->ps, w, -dw * (2.0 * A * du + B * dv) * d->ps.ku, -dw * (B * du + 2.0 * C * dv) * d->ps.kv, t4);
-    }
+    fp_pass_row(dp, ewa_deriv_weight, p, pitch, n, ilo, dv);
 }
 
 static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
@@ -154,14 +155,8 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
     if (m->lv != lv) ewa_level_setup(c, g, lv, m);
     if (!(m->nrows <= cap)) return INFINITY;
     if (count_only) return m->lr.k->rows->ewa_count(&m->lr, &m->spans, m->abc);
-    if (!acc->deriv) {
-        /* The weight alone, the level at once (footprint_rows.c), sums in
-         * registers. */
-        fp_sums sm = {0.0, {0.0, 0.0, 0.0, 0.0}, 0};
-        m->lr.k->rows->ewa_level(&sm, &m->lr, m->abc);
-        fp_accum_fold(acc, &sm);
-        return sm.n;
-    }
+    /* The weight alone, the level at once (footprint_rows.c). */
+    if (!acc->deriv) return fp_level_sums(acc, &m->lr, m->lr.k->rows->ewa_level, m->abc);
     d.A = m->abc[0];
     d.B = m->abc[1];
     d.C = m->abc[2];

@@ -260,7 +260,7 @@ SAMPLE_FORCE_INLINE double count_level(const fp_level_rows *lr, fp_spans *sp, co
         LANES_MASK in = lanes_lt(lanes_set1(0.0), ncol) & lanes_le(ncol, lanes_set1(cap)) & lanes_le(lanes_set1(0.0), j) &
                         lanes_lt(j, lanes_set1(h)) & lanes_le(lanes_set1(0.0), ilo) & lanes_le(ilo + ncol, lanes_set1(w));
         for (k = 0; k < LANES && r + k < lr->nrows; ++k) {
-            const unsigned char *at = LANE(in, k) ? fp_texel_at(lr, LANE(j, k), LANE(ilo, k)) : NULL;
+            const unsigned char *at = LANE(in, k) && lr->data ? fp_texel_at(lr, LANE(j, k), LANE(ilo, k)) : NULL;
             fp_span_keep(lr, sp, r + k, LANE(j, k), LANE(ilo, k), LANE(ncol, k), at);
             total += LANE(ncol, k);
         }
@@ -334,10 +334,10 @@ SAMPLE_FORCE_INLINE void walk_level(fp_sums *s, const fp_level_rows *lr, const d
 }
 
 /* m = M (the parallelogram's J′⁻¹, row-major). */
-static void bn_level(fp_sums *s, const fp_level_rows *lr, const double M[2][2]) { walk_level(s, lr, &M[0][0], bn_row); }
+static void bn_level(fp_sums *s, const fp_level_rows *lr, const double *M) { walk_level(s, lr, M, bn_row); }
 
 /* abc = A, B, C of the normalized ellipse. */
-static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double abc[3]) { walk_level(s, lr, abc, ewa_row); }
+static void ewa_level(fp_sums *s, const fp_level_rows *lr, const double *abc) { walk_level(s, lr, abc, ewa_row); }
 
 /* ---- This build's level kernels (isa.c) --------------------------------- */
 

@@ -49,14 +49,14 @@ typedef enum sample_isa {
 
 /* The footprint filters' levels without derivatives (footprint_rows.c, the
  * same build per instruction set): every row of one level of Blinn–Newell's
- * parallelogram (M = J′⁻¹) or of EWA (abc = A, B, C), each texel's weight
+ * parallelogram (M = J′⁻¹, row-major) or of EWA (abc = A, B, C), each texel's weight
  * and the weighted texels added to *s (fp_level_rows says which rows). */
 struct fp_sums;
 struct fp_spans;
 struct fp_level_rows;
 typedef struct fp_row_kernels {
-    void (*bn_level)(struct fp_sums *s, const struct fp_level_rows *lr, const double M[2][2]);
-    void (*ewa_level)(struct fp_sums *s, const struct fp_level_rows *lr, const double abc[3]);
+    void (*bn_level)(struct fp_sums *s, const struct fp_level_rows *lr, const double *M);
+    void (*ewa_level)(struct fp_sums *s, const struct fp_level_rows *lr, const double *abc);
     /* The counting pass (fp_count_rows) over the level's rows, spans of
      * several rows at once: Blinn–Newell's with P = |M₀₀|, ±M₀₁, |M₁₀|,
      * ±M₁₁ (both |M·₀| > 0), EWA's with P = abc. */

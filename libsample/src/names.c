@@ -75,6 +75,11 @@ static const char *const format_names[] = {
 };
 _Static_assert(COUNT_OF(format_names) == SAMPLE_FORMAT_COUNT, "format_names");
 
+static const char *const kind_names[] = {
+    [SAMPLE_TEXTURE_2D] = "2d",
+};
+_Static_assert(COUNT_OF(kind_names) == SAMPLE_TEXTURE_KIND_COUNT, "kind_names");
+
 static const char *name_of(const char *const *names, size_t n, int v)
 {
     return (v >= 0 && (size_t)v < n) ? names[v] : "unknown";
@@ -96,6 +101,7 @@ const char *sample_cubic_name(sample_cubic v) { return name_of(cubic_names, COUN
 const char *sample_footprint_name(sample_footprint v) { return name_of(footprint_names, COUNT_OF(footprint_names), (int)v); }
 const char *sample_mipgen_name(sample_mipgen v) { return name_of(mipgen_names, COUNT_OF(mipgen_names), (int)v); }
 const char *sample_format_name(sample_format v) { return name_of(format_names, COUNT_OF(format_names), (int)v); }
+const char *sample_texture_kind_name(sample_texture_kind v) { return name_of(kind_names, COUNT_OF(kind_names), (int)v); }
 
 int sample_wrap_parse(const char *s)
 {

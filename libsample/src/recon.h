@@ -49,6 +49,21 @@ static inline float recon_texel_coord(sample_wrap mode, float s, int n)
     return u > FLT_MAX ? FLT_MAX : (u < -FLT_MAX ? -FLT_MAX : u);
 }
 
+/* The block a LINEAR or CUBIC read at texel coordinate u starts from (GL
+ * 4.6 §8.14.2, eq. 8.13): returns i0 = ⌊u − ½⌋ and sets *alpha = frac(u −
+ * ½), in float as the specification's reference implementations compute
+ * them. The one copy of this addressing: the reference reconstruction and
+ * the fast path's planner (plan_level) both call it; the anisotropic fast
+ * path's probes, which it addresses only when every block lies inside the
+ * level (u − ½ ≥ 0), take the same floor as a truncation in vector lanes
+ * (fast_gl.c, aniso_address). */
+SAMPLE_FORCE_INLINE float recon_linear_origin(float u, float *alpha)
+{
+    const float a = u - 0.5f, i0 = floorf(a);
+    *alpha = a - i0;
+    return i0;
+}
+
 /* The Mitchell–Netravali combination of a 4 × 4 block T[y][x] (taps −1 … 2
  * around (i0, j0)) with weights wx, wy and their derivatives, accumulated
  * in double (16 float products would lose the exact reproduction of

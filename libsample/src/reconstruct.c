@@ -68,10 +68,7 @@ static uint32_t recon_nearest(const sample_ctx *c, int lv, float u, float v, flo
 static uint32_t recon_linear(const sample_ctx *c, int lv, float u, float v, float out[4],
                              float ddu[4], float ddv[4])
 {
-    /* i0 = ⌊u − ½⌋, α = frac(u − ½) (GL 4.6 §8.14.2, eq. 8.13). Computed in
-     * float, as the specification's reference implementations do. */
-    float a = u - 0.5f, b = v - 0.5f;
-    float i0 = floorf(a), j0 = floorf(b);
+    float al, be, i0 = recon_linear_origin(u, &al), j0 = recon_linear_origin(v, &be);
     float T[4][4];
     v4f V[4];
     int k;
@@ -80,7 +77,7 @@ static uint32_t recon_linear(const sample_ctx *c, int lv, float u, float v, floa
     ctx_texel(c, lv, i0, (double)j0 + 1.0, 1, T[2]);
     ctx_texel(c, lv, (double)i0 + 1.0, (double)j0 + 1.0, 1, T[3]);
     for (k = 0; k < 4; ++k) V[k] = v4_load(T[k]);
-    recon_bilerp(V, a - i0, b - j0, out, ddu, ddv);
+    recon_bilerp(V, al, be, out, ddu, ddv);
     return 4;
 }
 
@@ -134,13 +131,12 @@ void ls_recon_cubic_combine(float tx[16][4], const double wx[4], const double wy
 static uint32_t recon_cubic(const sample_ctx *c, int lv, float u, float v, float out[4],
                             float ddu[4], float ddv[4])
 {
-    float a = u - 0.5f, b = v - 0.5f;
-    float i0 = floorf(a), j0 = floorf(b);
+    float al, be, i0 = recon_linear_origin(u, &al), j0 = recon_linear_origin(v, &be);
     double wx[4], wy[4], dwx[4], dwy[4];
     float T[16][4];
     int x, y;
-    ls_cubic_weights(c->smp->cubic, a - i0, wx, dwx);
-    ls_cubic_weights(c->smp->cubic, b - j0, wy, dwy);
+    ls_cubic_weights(c->smp->cubic, al, wx, dwx);
+    ls_cubic_weights(c->smp->cubic, be, wy, dwy);
     for (y = 0; y < 4; ++y)
         for (x = 0; x < 4; ++x)
             ctx_texel(c, lv, (double)i0 + (x - 1), (double)j0 + (y - 1), 1, T[4 * y + x]);

@@ -86,6 +86,9 @@ static sample_status batch_check(const sample_texture *tex, const sample_sampler
     sample_status st;
     *run = 0;
     if (!tex || !a) return SAMPLE_E_INVALID_ARGUMENT;
+    /* sample_query is a 2D query (s, t and a 2 × 2 Jacobian): for 2D
+     * textures; other kinds have their own entry points. */
+    if (tex->kind != SAMPLE_TEXTURE_2D) return SAMPLE_E_INVALID_ARGUMENT;
     if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
     if (a->count == 0) return SAMPLE_OK;
     if (!a->queries || !a->rgba) return SAMPLE_E_INVALID_ARGUMENT;
@@ -107,8 +110,11 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
     int run;
     sample_status st = batch_check(tex, smp, a, &run);
     if (!run) return st;
-    /* The instruction set is chosen here, once per batch. */
-    ls_ctx_init(&c, tex, smp, ls_isa_kernels_active());
+    /* The instruction set is chosen here, once per batch. The fast path
+     * forms texel addresses from resident levels; a texture with another
+     * texel source runs the reference loop, whose results are the fast
+     * path's bit for bit (texel.h, struct ls_texel_source). */
+    ls_ctx_init(&c, tex, smp, tex_resident(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
     if (fast)
         fast(&c, a);

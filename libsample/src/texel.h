@@ -9,19 +9,44 @@
 
 #include "base.h"
 
+/* Where a texture's texels are: its texel source. A resident texture
+ * (source NULL) holds each level as one array, row after row, and readers
+ * form addresses from data and stride; that is what the fast paths need
+ * and what every texture made by sample_texture_create is. Any other
+ * source — tiles held apart (tiled.c), a tile cache — hands out one texel
+ * at a time through texel(): a pointer to texel (i, j) of level lv (both
+ * in range), valid until the batch ends, or NULL when the source cannot
+ * supply it (a tile that failed to load), which reads as `fill`. The
+ * filters do not change with the source: every texel read goes through
+ * tex_texel (below), and the only readers that form addresses themselves
+ * (the fast path's planners, the footprint filters' in-level spans, the
+ * prefetches) do so for resident textures alone; sample_batch runs any
+ * other texture through the reference loop, whose answers are the fast
+ * path's bit for bit. */
+struct ls_texel_source {
+    const unsigned char *(*texel)(const struct ls_texel_source *src, int lv, int i, int j);
+    void (*destroy)(struct ls_texel_source *src); /* with the texture */
+    float fill[4];
+};
+
 struct sample_level {
     int w, h;
-    size_t stride;       /* bytes per row */
-    unsigned char *data; /* owned */
+    size_t stride;       /* bytes per row (resident) */
+    unsigned char *data; /* owned (resident), else NULL */
 };
 
 struct sample_texture {
+    sample_texture_kind kind;
     int width, height, channels, nlevels;
     sample_format format;
     size_t texel_bytes; /* channels × format bytes */
     size_t bytes;       /* all levels */
     struct sample_level level[SAMPLE_MAX_LEVELS];
+    struct ls_texel_source *source; /* NULL: resident levels */
 };
+
+/* Whether the texture's levels are resident arrays (data, stride). */
+static inline int tex_resident(const sample_texture *tex) { return tex->source == NULL; }
 
 /* The exact sRGB EOTF for each 8-bit code ([0]) and c / 255 ([1]), one
  * array (color.c). */
@@ -80,17 +105,48 @@ SAMPLE_FORCE_INLINE v4f tex_decode_v4(sample_format format, int nc, const unsign
     }
 }
 
-/* Decode texel (i, j) (both in range) of a level. */
-static inline void tex_decode(const sample_texture *tex, const struct sample_level *lv,
-                              int i, int j, float out[4])
+/* Texel (i, j) of a resident level. */
+static inline const unsigned char *tex_level_addr(const sample_texture *tex, const struct sample_level *L, int i, int j)
 {
-    const unsigned char *p = lv->data + (size_t)j * lv->stride + (size_t)i * tex->texel_bytes;
+    return L->data + (size_t)j * L->stride + (size_t)i * tex->texel_bytes;
+}
+
+/* The addressing of every texel read: texel (i, j) (both in range) of
+ * level lv, from the texture's source; NULL when the source cannot supply
+ * it. */
+static inline const unsigned char *tex_texel(const sample_texture *tex, int lv, int i, int j)
+{
+    if (SAMPLE_LIKELY(tex_resident(tex))) return tex_level_addr(tex, &tex->level[lv], i, j);
+    return tex->source->texel(tex->source, lv, i, j);
+}
+
+/* Decode texel (i, j) (both in range) of a resident level: the pyramid
+ * builder's reads, of the levels it is making. */
+static inline void tex_decode(const sample_texture *tex, const struct sample_level *L, int i, int j,
+                              float out[4])
+{
+    v4_store(out, tex_decode_v4(tex->format, tex->channels, tex_level_addr(tex, L, i, j)));
+}
+
+/* Decode texel (i, j) (both in range) of level lv, from whatever source;
+ * the source's fill colour where it has none. */
+static inline void tex_read(const sample_texture *tex, int lv, int i, int j, float out[4])
+{
+    const unsigned char *p = tex_texel(tex, lv, i, j);
+    if (!p) {
+        memcpy(out, tex->source->fill, sizeof tex->source->fill);
+        return;
+    }
     v4_store(out, tex_decode_v4(tex->format, tex->channels, p));
 }
 
 /* Encode linear RGBA (first `channels` values) into one texel of the
  * texture's format; used by the pyramid builder. */
 void ls_tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst);
+
+/* A texture with no levels yet (no source: resident), its texel size set;
+ * NULL if out of memory. */
+sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int channels, sample_format format);
 
 /* Allocate level k's storage (size from the level rule); tex->bytes updated. */
 sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err);

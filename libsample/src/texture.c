@@ -97,16 +97,22 @@ static void copy_image(struct sample_level *L, size_t texel_bytes, const sample_
         memcpy(L->data + (size_t)j * L->stride, (const unsigned char *)im->data + (size_t)j * src_stride, row);
 }
 
-static sample_texture *tex_new(const sample_image *base)
+sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int channels, sample_format format)
 {
     sample_texture *tex = (sample_texture *)calloc(1, sizeof *tex);
     if (!tex) return NULL;
-    tex->width = base->width;
-    tex->height = base->height;
-    tex->channels = base->channels;
-    tex->format = base->format;
-    tex->texel_bytes = (size_t)base->channels * format_bytes[base->format];
+    tex->kind = kind;
+    tex->width = width;
+    tex->height = height;
+    tex->channels = channels;
+    tex->format = format;
+    tex->texel_bytes = (size_t)channels * format_bytes[format];
     return tex;
+}
+
+static sample_texture *tex_new(const sample_image *base)
+{
+    return ls_tex_new(SAMPLE_TEXTURE_2D, base->width, base->height, base->channels, base->format);
 }
 
 sample_status sample_texture_create(const sample_image *image, const sample_mip_params *mip,
@@ -194,6 +200,7 @@ void sample_texture_destroy(sample_texture *tex)
     int k;
     if (!tex) return;
     for (k = 0; k < SAMPLE_MAX_LEVELS; ++k) free(tex->level[k].data);
+    if (tex->source) tex->source->destroy(tex->source);
     free(tex);
 }
 
@@ -208,6 +215,7 @@ void sample_texture_info_get(const sample_texture *tex, sample_texture_info *inf
     info->levels = tex->nlevels;
     info->format = tex->format;
     info->bytes = tex->bytes;
+    info->kind = tex->kind;
 }
 
 int sample_texture_level_size(const sample_texture *tex, int level, int *w, int *h)
@@ -225,7 +233,7 @@ void sample_texture_texel(const sample_texture *tex, int level, int i, int j, fl
         rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
         return;
     }
-    tex_decode(tex, &tex->level[level], i, j, rgba);
+    tex_read(tex, level, i, j, rgba);
 }
 
 static unsigned char to_u8(float v)

@@ -16,8 +16,9 @@ static const char render_help[] =
     "Render a scene with exact (s, t) and Jacobians (Blinn & Newell 1976).\n"
     "\n"
     "  --scene NAME|FILE  built-in scene (teapot, plane, zoneplate, cylinder,\n"
-    "                     sphere, teapot-image, photo-plane) or a JSON scene\n"
-    "                     file (image files relative to it); default teapot\n"
+    "                     sphere, teapot-image, photo-plane) or else a JSON\n"
+    "                     scene file (a regular file of at most 64 MiB; image\n"
+    "                     files relative to it); default teapot\n"
     "  --width N, --height N  image size (default: the scene's, 512 x 512)\n"
     "  --threads N        worker threads (default: all online CPUs)\n"
     "  --out FILE         image: .exr (linear float RGBA) or .png (sRGB 8-bit)\n"
@@ -30,10 +31,12 @@ static const char render_help[] =
     "\n"
     "Sampler flags (override the scene's sampler when given):\n";
 
-static int ends_with(const char *s, const char *suffix)
+static int is_builtin(const char *name)
 {
-    size_t a = strlen(s), b = strlen(suffix);
-    return a >= b && strcmp(s + a - b, suffix) == 0;
+    int k;
+    for (k = 0; render_builtin_names[k]; ++k)
+        if (strcmp(name, render_builtin_names[k]) == 0) return 1;
+    return 0;
 }
 
 int cmd_render(int argc, char **argv)
@@ -44,7 +47,7 @@ int cmd_render(int argc, char **argv)
     render_options o;
     render_scene *sc = NULL;
     render_image img;
-    char err[256];
+    char err[1024];
     render_options_init(&o);
     o.threads = ncpu > 0 && ncpu < 1024 ? (int)ncpu : 1;
     o.progress = cli_progress;
@@ -96,8 +99,10 @@ int cmd_render(int argc, char **argv)
     o.use_scene_sampler = !sampler_given;
     if (buffers) o.buffers = RENDER_BUF_ST | RENDER_BUF_JACOBIAN | RENDER_BUF_LOD |
                              RENDER_BUF_TEXELS | RENDER_BUF_DEPTH | RENDER_BUF_NORMAL | RENDER_BUF_ID;
-    if ((ends_with(scene, ".json") ? render_scene_load(scene, width, height, &sc, err, sizeof err)
-                                   : render_scene_builtin(scene, width, height, &sc, err, sizeof err)) != 0)
+    /* A built-in name, else a file (whatever its name: /dev/zero or a FIFO
+     * is refused by the loader as not a regular file). */
+    if ((is_builtin(scene) ? render_scene_builtin(scene, width, height, &sc, err, sizeof err)
+                           : render_scene_load(scene, width, height, &sc, err, sizeof err)) != 0)
         return cli_runtime_error("render", "%s", err);
     if (render_image_run(sc, &o, &img, err, sizeof err) != 0) {
         render_scene_destroy(sc);

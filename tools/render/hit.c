@@ -42,30 +42,86 @@ static void hit_clear(render_hit *h)
     h->depth = HUGE_VAL;
 }
 
+/* Newton from (u, v) on patch prim to screen point (x, y): 1 with the root
+ * and its depth in *s if it converges inside the patch. *spill gets how far
+ * outside the domain a converged root lies (0 inside, HUGE_VAL if none). */
+static int patch_root(const render_scene *sc, const rn_object *o, int prim, double x, double y,
+                      double u, double v, rn_seed *s, double *spill)
+{
+    rn_surf S;
+    double xy[2], z;
+    *spill = HUGE_VAL;
+    if (!newton_screen(&sc->cam, o, prim, x, y, &u, &v)) return 0;
+    *spill = fmax(fmax(-u, u - 1.0), fmax(-v, v - 1.0));
+    if (*spill < 0.0) *spill = 0.0;
+    patch_eval(&o->patches[prim], u, v, &S);
+    z = cam_project(&sc->cam, S.P, xy, NULL);
+    s->prim = prim;
+    s->u = u;
+    s->v = v;
+    s->depth = z;
+    return z > RN_NEAR && obj_in_domain(o, prim, u, v, RN_DOMAIN_EPS);
+}
+
+/* A root just outside its patch belongs to a neighbour: the flat
+ * tessellation crosses a seam at a different place than the curved
+ * surface does, so near a seam the ray can hit only the wrong side's
+ * triangles (the seed), and Newton then leaves that patch by a fraction of
+ * a cell. Hand the point over: Newton again on every other patch whose
+ * tessellation passes within a cell of the extended point, from its
+ * nearest grid point; the nearest in-domain root wins. */
+static int patch_handoff(const render_scene *sc, const rn_object *o, const rn_seed *out,
+                         double x, double y, rn_seed *best)
+{
+    rn_surf S;
+    double reach2, du = 1.0 / RN_TESS;
+    int pi, found = 0;
+    patch_eval(&o->patches[out->prim], out->u, out->v, &S);
+    /* A cell's extent around the point, squared. */
+    reach2 = (v3_dot(S.Pu, S.Pu) + v3_dot(S.Pv, S.Pv)) * du * du;
+    for (pi = 0; pi < o->count; ++pi) {
+        double u, v, d2, spill;
+        rn_seed s;
+        if (pi == out->prim) continue;
+        patch_nearest_grid(&o->patches[pi], S.P, &u, &v, &d2);
+        if (d2 > reach2) continue;
+        /* Start half a cell inside: a boundary row may be a collapsed pole
+         * (the lid's top), where Newton's matrix is singular. */
+        u = fmin(fmax(u, 0.5 * du), 1.0 - 0.5 * du);
+        v = fmin(fmax(v, 0.5 * du), 1.0 - 0.5 * du);
+        if (!patch_root(sc, o, pi, x, y, u, v, &s, &spill)) continue;
+        if (!found || s.depth < best->depth) *best = s;
+        found = 1;
+    }
+    return found;
+}
+
 /* Nearest exact intersection of one patch object; 1 if found. */
 static int patches_nearest(const render_scene *sc, const rn_object *o, double x, double y,
                            const double dir[3], rn_seed *best, int *converged)
 {
-    rn_seed seeds[RN_MAX_SEEDS];
+    rn_seed seeds[RN_MAX_SEEDS], spilled = {0, 0.0, 0.0, HUGE_VAL};
     int n = patch_seeds(o, sc->cam.eye, dir, seeds, RN_MAX_SEEDS), k, found = 0, failed = -1;
+    int have_spill = 0;
     for (k = 0; k < n; ++k) {
-        double u = seeds[k].u, v = seeds[k].v, xy[2];
-        rn_surf S;
-        if (!newton_screen(&sc->cam, o, seeds[k].prim, x, y, &u, &v)) {
+        rn_seed s;
+        double spill;
+        if (patch_root(sc, o, seeds[k].prim, x, y, seeds[k].u, seeds[k].v, &s, &spill)) {
+            if (!found || s.depth < best->depth) *best = s;
+            found = 1;
+        } else if (spill == HUGE_VAL) {
             if (failed < 0) failed = k;
-            continue;
+        } else if (spill > RN_DOMAIN_EPS && spill < 1.0 / RN_TESS && s.depth > RN_NEAR &&
+                   (!have_spill || s.depth < spilled.depth)) {
+            spilled = s;
+            have_spill = 1;
         }
-        if (!obj_in_domain(o, seeds[k].prim, u, v, RN_DOMAIN_EPS)) continue;
-        patch_eval(&o->patches[seeds[k].prim], u, v, &S);
-        {
-            double z = cam_project(&sc->cam, S.P, xy, NULL);
-            if (z > RN_NEAR && (!found || z < best->depth)) {
-                best->prim = seeds[k].prim;
-                best->u = u;
-                best->v = v;
-                best->depth = z;
-                found = 1;
-            }
+    }
+    if (have_spill && (!found || spilled.depth < best->depth)) {
+        rn_seed h;
+        if (patch_handoff(sc, o, &spilled, x, y, &h) && (!found || h.depth < best->depth)) {
+            *best = h;
+            found = 1;
         }
     }
     *converged = found;

@@ -4,10 +4,13 @@
  * the texture's wrap modes. Without libsample_io in the build, a scene that
  * names an image is refused with a message instead.
  */
+#define _POSIX_C_SOURCE 200809L
 #include "rn_internal.h"
 
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
 
 #ifdef TEXSAMPLE_HAVE_IO
 #include "sample/sample_io.h"
@@ -21,28 +24,81 @@ static int resolve(const char *base_dir, const char *file, char *out, size_t out
     return n >= 0 && (size_t)n < outlen;
 }
 
+/* A grey (1-channel) or grey + alpha (2-channel) texture rebuilt as float
+ * (Y, Y, Y) or (Y, Y, Y, A), every level as the file gave it. libsample
+ * reads channels as OpenGL's R and RG formats do, (r, 0, 0, 1) and
+ * (r, g, 0, 1), which is right for data but shows a grey picture red.
+ * Float keeps the decoded values exactly; the texel budget already counts
+ * every texture as float RGBA. */
+static int broadcast_grey(rn_texture *t, char *err, size_t errlen)
+{
+    sample_texture_info info;
+    sample_image lv[32];
+    sample_texture *out = NULL;
+    sample_error e;
+    int k, ok = 1, ch;
+    sample_texture_info_get(t->tex, &info);
+    if (info.channels > 2) return 1;
+    ch = info.channels == 1 ? 3 : 4;
+    memset(lv, 0, sizeof lv);
+    for (k = 0; k < info.levels && k < 32 && ok; ++k) {
+        int w, h, i, j;
+        float *px;
+        sample_texture_level_size(t->tex, k, &w, &h);
+        px = malloc(sizeof *px * (size_t)ch * (size_t)w * (size_t)h);
+        if (!(ok = px != NULL)) break;
+        for (j = 0; j < h; ++j)
+            for (i = 0; i < w; ++i) {
+                float c[4], *o = px + ((size_t)j * (size_t)w + (size_t)i) * (size_t)ch;
+                sample_texture_texel(t->tex, k, i, j, c);
+                o[0] = o[1] = o[2] = c[0];
+                if (ch == 4) o[3] = c[1];
+            }
+        lv[k].width = w;
+        lv[k].height = h;
+        lv[k].channels = ch;
+        lv[k].format = SAMPLE_FORMAT_F32;
+        lv[k].data = px;
+    }
+    if (ok && sample_texture_create_levels(lv, k, &out, &e) != SAMPLE_OK) {
+        rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
+        out = NULL;
+        ok = -1;
+    }
+    for (k = 0; k < 32; ++k) free((void *)lv[k].data);
+    if (!out) {
+        if (ok == 0) rn_seterr(err, errlen, "image texture '%s': out of memory", t->path);
+        return 0;
+    }
+    sample_texture_destroy(t->tex);
+    t->tex = out;
+    return 1;
+}
+
 int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
                size_t errlen)
 {
-    char path[4096];
+    char path[4096], what[600];
     sample_io_options o;
     sample_mip_params mip;
     sample_texture_info info;
     sample_error e;
-    FILE *f;
+    size_t size;
+    int fd;
     if (!resolve(base_dir, t->path, path, sizeof path)) {
         rn_seterr(err, errlen, "image texture '%s': path too long", t->path);
         return 0;
     }
     /* Checked here so that a missing file (e.g. a built-in scene whose
-     * testimages/ file is absent) says so plainly, not as a decoder error. */
-    if (!(f = fopen(path, "rb"))) {
-        rn_seterr(err, errlen, "image texture '%s' not found (looked for '%s')", t->path, path);
-        return 0;
-    }
-    fclose(f);
+     * testimages/ file is absent) says so plainly, not as a decoder error,
+     * and so that no decoder ever opens a FIFO or a device. */
+    snprintf(what, sizeof what, "image texture '%s' at", t->path);
+    if ((fd = rn_open_regular(path, what, SIZE_MAX, &size, err, errlen)) < 0) return 0;
+    close(fd);
     sample_io_options_init(&o);
-    o.colorspace = t->colorspace[0] ? t->colorspace : NULL;
+    /* Data maps (bump, normal) hold numbers, not colours: raw unless the
+     * scene names a space (the OCIO role "data" exists in every config). */
+    o.colorspace = t->colorspace[0] ? t->colorspace : t->use == RN_USE_DATA ? "data" : NULL;
     /* The scene's texel budget, as float RGBA bytes (sample_io's measure):
      * a file claiming more is refused before its pixels are decoded. */
     o.max_bytes = max_texels * 16.0 >= (double)SIZE_MAX ? SIZE_MAX
@@ -56,6 +112,7 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
         rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
         return 0;
     }
+    if ((t->use & RN_USE_COLOUR) && !broadcast_grey(t, err, errlen)) return 0;
     sample_texture_info_get(t->tex, &info);
     *texels = (double)info.width * (double)info.height;
     return 1;

@@ -208,6 +208,24 @@ int patch_seeds(const rn_object *o, const double eye[3], const double dir[3], rn
     return count;
 }
 
+void patch_nearest_grid(const rn_patch *p, const double P[3], double *u, double *v, double *d2)
+{
+    const int n = RN_TESS;
+    int i, j;
+    *d2 = HUGE_VAL;
+    for (j = 0; j <= n; ++j)
+        for (i = 0; i <= n; ++i) {
+            double d[3], e;
+            v3_sub(d, p->grid[j * (n + 1) + i], P);
+            e = v3_dot(d, d);
+            if (e < *d2) {
+                *d2 = e;
+                *u = (double)i / n;
+                *v = (double)j / n;
+            }
+        }
+}
+
 /* Newton's method on f(u, v) = proj(P(u, v)) − (x, y): its Jacobian is
  * d(x, y)/d(u, v), whose inverse at the solution is the exact
  * d(u, v)/d(x, y) the texture lookup needs — the same matrix serves both.

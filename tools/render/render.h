@@ -56,7 +56,9 @@ int render_scene_builtin(const char *name, int width, int height, render_scene *
                          char *err, size_t errlen);
 /* Load a scene file (JSON, doc/renderer.md §Scene files). width/height > 0
  * override the file's image size. Image files are relative to the scene
- * file's folder. */
+ * file's folder. Only a regular file of at most RENDER_MAX_SCENE_BYTES is
+ * read (a FIFO or device is refused without blocking). Messages start
+ * with the path, then "line L, column C:" where the text is at fault. */
 int render_scene_load(const char *path, int width, int height, render_scene **out,
                       char *err, size_t errlen);
 /* Same from a JSON text in memory (tests, fuzzing); image files relative to
@@ -76,10 +78,16 @@ typedef struct render_parse_options {
     /* Base-level texels of all textures and maps together (image textures
      * included). Default RENDER_MAX_TEXELS. */
     double max_texels;
+    /* JSON values (numbers, strings, arrays, ...) in the text, 16 bytes
+     * each while parsing. Default and maximum RENDER_MAX_JSON_VALUES. */
+    unsigned max_values;
 } render_parse_options;
 
 #define RENDER_MAX_BAKE_WORK 268435456.0 /* 2^28: 16 × a 4096² bake at 1 sample */
 #define RENDER_MAX_TEXELS 67108864.0     /* 2^26: one 8192² texture, 1 GiB as float RGBA */
+/* 2^22 values (64 MiB of parse nodes): a 65536-quad polygon object is ~2^21. */
+#define RENDER_MAX_JSON_VALUES 4194304u
+#define RENDER_MAX_SCENE_BYTES ((size_t)64 << 20) /* scene files: 64 MiB */
 
 void render_parse_options_init(render_parse_options *po);
 /* render_scene_parse with options (po NULL: defaults). */

@@ -14,7 +14,9 @@
  *   envmap.c        lat-long and cube environment maps, reflection lookup
  *   shade.c         Blinn–Newell shading, bump and normal mapping
  *   scene.c         scene objects, built-in scenes, destruction
- *   scene_json.c    scene files (cJSON)
+ *   json.c          strict JSON into compact nodes (rn_json.h)
+ *   scene_json.c    scene files: schema, keys, names
+ *   file.c          opening regular files only, without blocking
  *   parallel.c      rows over pthreads, progress
  *   image.c         threaded rendering into float buffers
  *   output.c        pictures and buffers to files (libsample_io)
@@ -122,6 +124,9 @@ typedef struct rn_seed {
 int patch_seeds(const rn_object *o, const double eye[3], const double dir[3], rn_seed *seeds,
                 int max);
 
+/* The tessellation grid point of p nearest P: its (u, v) and squared distance. */
+void patch_nearest_grid(const rn_patch *p, const double P[3], double *u, double *v, double *d2);
+
 /* Teapot data (teapot_data.c): 1-based indices as published. */
 #define TEAPOT_PATCHES 32
 #define TEAPOT_POINTS 306
@@ -206,7 +211,13 @@ typedef struct rn_texture {
     sample_texture *tex; /* baked or loaded; owned */
     char path[512];      /* image textures: "file" as written in the scene */
     char colorspace[64]; /* image textures: OCIO name, "" = by file and rule */
+    unsigned use;        /* RN_USE_*: what the materials use it for */
 } rn_texture;
+
+/* How materials use a texture: colour (an image's grey broadcast to RGB,
+ * its file decoded by metadata and rule) or data (bump, normal map: an
+ * image read raw unless its "colorspace" says otherwise). */
+enum { RN_USE_COLOUR = 1u, RN_USE_DATA = 2u };
 
 /* Defaults for a kind (colours black/white, freq 8, ...). */
 void proc_defaults(rn_texture *t, rn_tex_kind kind);
@@ -216,7 +227,9 @@ void proc_eval(const rn_texture *t, double s, double t_, const double P[3], floa
 int proc_bake(rn_texture *t, char *err, size_t errlen);
 /* Read an image texture into t->tex (imagetex.c): t->path relative to
  * base_dir (NULL: as given), refused if it holds more than max_texels
- * (base level); *texels gets its base-level texel count. */
+ * (base level); *texels gets its base-level texel count. By t->use: data
+ * only is read raw unless t->colorspace names a space; colour gets one or
+ * two channels (grey, grey + alpha) as (Y, Y, Y, 1) and (Y, Y, Y, A). */
 int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
                size_t errlen);
 
@@ -293,6 +306,7 @@ struct render_scene {
     rn_light light[RN_MAX_LIGHTS];
     int nlight;
     rn_env env;
+    rn_texture env_image; /* a lat-long environment "file" until read into env.map */
     float background[4];
     sample_sampler sampler;
 };
@@ -318,6 +332,13 @@ int hit_finish(const render_scene *sc, int object, int prim, double u, double v,
 /* Shading of one visible point (shade.c). */
 void shade_hit(const render_scene *sc, const render_options *o, const render_hit *h,
                const sample_quad *quad, float out[4], sample_stats *stats);
+
+/* Open path for reading if it is a regular file of at most max_bytes
+ * (file.c): O_NONBLOCK, so that a FIFO cannot block the open, then fstat.
+ * Returns the descriptor (size in *size), or −1 with a message in err
+ * naming `what` and the path. */
+int rn_open_regular(const char *path, const char *what, size_t max_bytes, size_t *size, char *err,
+                    size_t errlen);
 
 void rn_seterr(char *err, size_t errlen, const char *fmt, ...)
 #if defined(__GNUC__)

@@ -3,11 +3,14 @@
  * scene-file parser is the only builder), finishing (baking, tessellation),
  * accessors of the public API, destruction.
  */
+#define _POSIX_C_SOURCE 200809L
 #include "rn_internal.h"
 
+#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 void rn_seterr(char *err, size_t errlen, const char *fmt, ...)
 {
@@ -228,6 +231,17 @@ int scene_finish(render_scene *sc, const char *base_dir, double texels_left, cha
         if (!image_load(t, base_dir, texels_left, &n, err, errlen)) return 0;
         texels_left -= n;
     }
+    if (sc->env_image.path[0]) {
+        double n = 0.0;
+        char inner[400];
+        if (!image_load(&sc->env_image, base_dir, texels_left, &n, err, errlen)) {
+            snprintf(inner, sizeof inner, "%s", err ? err : "");
+            rn_seterr(err, errlen, "environment: %s", inner);
+            return 0;
+        }
+        sc->env.map = sc->env_image.tex;
+        sc->env_image.tex = NULL;
+    }
     for (k = 0; k < sc->nobj; ++k)
         if (sc->obj[k].material < 0 || sc->obj[k].material >= sc->nmat) sc->obj[k].material = 0;
     return 1;
@@ -244,6 +258,7 @@ void render_scene_destroy(render_scene *sc)
         free(sc->obj[k].polys);
     }
     for (k = 0; k < sc->ntex; ++k) sample_texture_destroy(sc->tex[k].tex);
+    sample_texture_destroy(sc->env_image.tex);
     env_release(&sc->env);
     free(sc->obj);
     free(sc->mat);
@@ -254,33 +269,32 @@ void render_scene_destroy(render_scene *sc)
 int render_scene_load(const char *path, int width, int height, render_scene **out, char *err,
                       size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
     const char *slash = strrchr(path, '/');
-    char dir[4096];
+    char dir[4096], inner[512];
     render_parse_options po;
     char *buf;
-    long n;
-    int r;
+    size_t n, got = 0;
+    int r, fd;
     *out = NULL;
-    if (!f) {
-        rn_seterr(err, errlen, "cannot open scene file '%s'", path);
+    if ((fd = rn_open_regular(path, "scene file", RENDER_MAX_SCENE_BYTES, &n, err, errlen)) < 0)
         return -1;
+    /* One byte more than fstat said, to notice a file that grew since. */
+    buf = malloc(n + 1);
+    while (buf && got <= n) {
+        ssize_t k = read(fd, buf + got, n + 1 - got);
+        if (k <= 0) {
+            if (k < 0 && errno == EINTR) continue;
+            break;
+        }
+        got += (size_t)k;
     }
-    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || n > (64L << 20) ||
-        fseek(f, 0, SEEK_SET) != 0) {
-        fclose(f);
-        rn_seterr(err, errlen, "cannot read scene file '%s' (or larger than 64 MiB)", path);
-        return -1;
-    }
-    buf = malloc((size_t)n + 1);
-    if (!buf || fread(buf, 1, (size_t)n, f) != (size_t)n) {
+    close(fd);
+    if (!buf || got != n) {
         free(buf);
-        fclose(f);
-        rn_seterr(err, errlen, "cannot read scene file '%s'", path);
+        rn_seterr(err, errlen, "scene file '%s': %s", path,
+                  !buf ? "out of memory" : "changed or unreadable while being read");
         return -1;
     }
-    fclose(f);
-    buf[n] = '\0';
     /* Image files are relative to the scene file's folder (as a scene
      * written next to its textures expects), not to the working directory. */
     render_parse_options_init(&po);
@@ -290,8 +304,12 @@ int render_scene_load(const char *path, int width, int height, render_scene **ou
         dir[len] = '\0';
         po.base_dir = dir;
     }
-    r = render_scene_parse_ex(buf, (size_t)n, width, height, &po, out, err, errlen);
+    r = render_scene_parse_ex(buf, n, width, height, &po, out, err, errlen);
     free(buf);
+    if (r != 0 && err && errlen) {
+        snprintf(inner, sizeof inner, "%s", err);
+        rn_seterr(err, errlen, "scene file '%s': %s", path, inner);
+    }
     return r;
 }
 

@@ -185,6 +185,17 @@ typedef struct sample_mip_params {
 
 SAMPLE_API void sample_mip_params_init(sample_mip_params *params);
 
+/* What a texture is, as OpenGL's texture targets say it (GL 4.6 §8.1):
+ * the shape of its levels and the coordinates a query gives. Every
+ * texture today is 2D (GL_TEXTURE_2D: levels of w × h texels, queries
+ * (s, t) with a 2 × 2 Jacobian, sample_batch). Further kinds (cube maps,
+ * 3D) will each have their own query type and batch entry point; the
+ * filters and the texel addressing below them are shared. */
+typedef enum sample_texture_kind {
+    SAMPLE_TEXTURE_2D = 0,
+    SAMPLE_TEXTURE_KIND_COUNT
+} sample_texture_kind;
+
 typedef struct sample_texture sample_texture;
 
 /* Copy `image` into a new texture and, unless mip is NULL or mip->filter is
@@ -205,6 +216,7 @@ typedef struct sample_texture_info {
     int width, height, channels, levels;
     sample_format format;
     size_t bytes; /* texel memory held, all levels */
+    sample_texture_kind kind;
 } sample_texture_info;
 
 SAMPLE_API void sample_texture_info_get(const sample_texture *tex, sample_texture_info *info);
@@ -352,6 +364,7 @@ SAMPLE_API int sample_footprint_parse(const char *name);
 SAMPLE_API const char *sample_mipgen_name(sample_mipgen mipgen);
 SAMPLE_API int sample_mipgen_parse(const char *name);
 SAMPLE_API const char *sample_format_name(sample_format format);
+SAMPLE_API const char *sample_texture_kind_name(sample_texture_kind kind); /* "2d" */
 
 /* ---- Colour helpers ---------------------------------------------------- */
 

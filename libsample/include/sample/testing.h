@@ -38,6 +38,19 @@ sample_status sample_batch_reference(const sample_texture *tex, const sample_sam
  * already running keeps the kernels it started with. */
 int sample_isa_force(const char *name);
 
+/* A copy of a (resident) texture whose levels are held as tiles of
+ * 2^tile_log2 × 2^tile_log2 texels in memory of their own, reached texel by
+ * texel through the texel source interface (libsample/src/texel.h): the
+ * shape a tile cache holds textures in. sample_batch gives it the
+ * original's results bit for bit (tests/test_source.c). */
+sample_status sample_texture_tiled_copy(const sample_texture *tex, int tile_log2, sample_texture **out,
+                                        sample_error *err);
+
+/* Drop tile (tx, ty) of a level of a tiled copy, as if it had failed to
+ * load: its texels read as `fill` (the source's fill colour, one per
+ * texture) from then on. Not while another thread samples the texture. */
+sample_status sample_texture_tile_drop(sample_texture *tex, int level, int tx, int ty, const float fill[4]);
+
 #ifdef __cplusplus
 }
 #endif

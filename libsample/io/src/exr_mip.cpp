@@ -8,6 +8,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTileDescription.h>
 #include <OpenEXR/ImfTiledOutputFile.h>
@@ -17,7 +18,8 @@
 #include <string>
 
 extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
-                                          const sample_io_exr_options *o, size_t *overflows, sample_error *err)
+                                          const sample_io_exr_options *o, const io_colour_label *label,
+                                          size_t *overflows, sample_error *err)
 {
     static const char *const rgba[4] = {"R", "G", "B", "A"};
     const char *const *names = o->channel_names ? o->channel_names : rgba;
@@ -39,6 +41,17 @@ extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_tex
         // straight colour says so rather than leaving a reader to guess.
         if (o->alpha_channel >= 0)
             hdr.insert("libsample:alpha", Imf::StringAttribute(o->premultiplied ? "premultiplied" : "straight"));
+        // The working space by its own name (OpenImageIO reads it back as
+        // oiio:ColorSpace) and, where known, OpenEXR's standard
+        // chromaticities (absent, a reader assumes Rec.709).
+        if (label) {
+            hdr.insert("oiio:ColorSpace", Imf::StringAttribute(label->name));
+            if (label->has_chromaticities) {
+                const float *c = label->chromaticities;
+                Imf::addChromaticities(hdr, Imf::Chromaticities(Imath::V2f(c[0], c[1]), Imath::V2f(c[2], c[3]),
+                                                                Imath::V2f(c[4], c[5]), Imath::V2f(c[6], c[7])));
+            }
+        }
         Imf::TiledOutputFile out(tmp_path, hdr);
 
         size_t done = 0, total = 0;

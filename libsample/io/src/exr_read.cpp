@@ -14,6 +14,7 @@
 #include <OpenEXR/ImfMultiPartInputFile.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTileDescription.h>
 #include <OpenEXR/ImfTiledInputPart.h>
 
@@ -65,6 +66,14 @@ struct io_exr_tiled {
 };
 
 static const char *const rgba_names[4] = {"R", "G", "B", "A"};
+
+// OpenImageIO's names for OpenEXR's compression methods (its OpenEXR
+// reader's "compression" attribute), in Imf::Compression's order.
+static const char *compression_name(Imf::Compression c)
+{
+    static const char *const names[] = {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"};
+    return (unsigned)c < sizeof names / sizeof names[0] ? names[c] : "";
+}
 
 // Channels exactly a prefix of R, G, B, A, all of one type (half or float):
 // the sets our writer and maketx write for 1–4 channel textures, read by
@@ -141,9 +150,23 @@ extern "C" sample_status io_exr_tiled_open(const char *path, const void *data, s
         // OpenEXR colour is premultiplied by alpha (the format's rule).
         inf.straight_alpha = 0;
         for (int c = 0; c < x->nchan; ++c) std::snprintf(inf.channel_names[c], sizeof inf.channel_names[c], "%s", rgba_names[c]);
-        // No colour space metadata: OIIO 2.4 reports every OpenEXR file as
-        // linear, so the rule (half/float is linear) decides on both paths
-        // alike; a forced non-linear space goes to OIIO (io_read.c).
+        // What OpenImageIO's OpenEXR reader reports of the same file, so
+        // that sample_io_file_info reads alike on both paths.
+        const Imf::Header &h = x->file->header(0);
+        std::snprintf(inf.format, sizeof inf.format, "openexr");
+        std::snprintf(inf.pixel_type, sizeof inf.pixel_type, "%s", x->type == Imf::HALF ? "half" : "float");
+        std::snprintf(inf.compression, sizeof inf.compression, "%s", compression_name(h.compression()));
+        inf.tile_w = (int)h.tileDescription().xSize;
+        inf.tile_h = (int)h.tileDescription().ySize;
+        // The metadata OIIO's reader reports too: a colour space named in
+        // the file (oiio:ColorSpace, as sample_io_write_mip_exr writes it;
+        // without one OIIO 2.4 says linear, and the rule decides alike)
+        // and the wrap modes. A space that needs converting goes to OIIO
+        // (io_read.c).
+        if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("oiio:ColorSpace"))
+            std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", a->value().c_str());
+        if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("wrapmodes"))
+            std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", a->value().c_str());
         *out = x.release();
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {

@@ -8,14 +8,15 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Copy the file's side of the reader's info. */
-static void file_side(const io_reader_info *inf, sample_io_file_info *info)
+void io_file_info_fill(const io_reader_info *inf, const io_plan *p, sample_io_file_info *info)
 {
     int c;
+    memset(info, 0, sizeof *info);
     snprintf(info->format, sizeof info->format, "%s", inf->format);
     snprintf(info->pixel_type, sizeof info->pixel_type, "%s", inf->pixel_type);
     snprintf(info->compression, sizeof info->compression, "%s", inf->compression);
     snprintf(info->wrapmodes, sizeof info->wrapmodes, "%s", inf->wrapmodes);
+    info->has_wrap = inf->wrapmodes[0] && io_wrapmodes_parse(inf->wrapmodes, &info->wrap_s, &info->wrap_t);
     snprintf(info->colorspace, sizeof info->colorspace, "%s", inf->colorspace);
     for (c = 0; c < SAMPLE_IO_NAMED_CHANNELS; ++c)
         snprintf(info->channel_names[c], sizeof info->channel_names[c], "%s", inf->channel_names[c]);
@@ -27,32 +28,25 @@ static void file_side(const io_reader_info *inf, sample_io_file_info *info)
     info->levels = inf->nlevels;
     info->tile_width = inf->tile_w;
     info->tile_height = inf->tile_h;
+    snprintf(info->colorspace_used, sizeof info->colorspace_used, "%s", p->colorspace);
+    info->colorspace_from_rule = p->colorspace_from_rule;
+    info->colorspace_unknown = p->colorspace_unknown;
+    info->texture_format = p->format;
+    info->texture_channels = p->nchan;
+    info->texture_file_levels = 1;
 }
 
-/* The texture's side: the plan, and how many of the file's levels follow
- * libsample's level rule (the prefix sample_io_read_texture keeps). */
-static sample_status texture_side(const io_reader_info *inf, const sample_io_options *o,
-                                  sample_io_file_info *info, sample_error *err)
+/* How many of the file's levels follow libsample's level rule: the prefix
+ * sample_io_read_texture keeps. */
+static int file_levels_kept(const sample_io_file_info *info, const sample_io_options *o)
 {
-    io_colour *col = NULL;
-    io_plan p;
-    int k;
-    sample_status st = io_colour_open(o->ocio_config, &col, err);
-    if (st == SAMPLE_OK) st = io_read_plan(col, inf, o, &p, err);
-    if (st == SAMPLE_OK) {
-        snprintf(info->colorspace_used, sizeof info->colorspace_used, "%s", p.colorspace);
-        info->colorspace_from_rule = !o->colorspace && !(inf->colorspace[0] && io_colour_known(col, inf->colorspace));
-        info->texture_format = p.format;
-        info->texture_channels = p.nchan;
-        info->texture_file_levels = 1;
-        for (k = 1; o->use_file_levels && k < info->levels; ++k) {
-            int w = inf->width >> k > 0 ? inf->width >> k : 1, h = inf->height >> k > 0 ? inf->height >> k : 1;
-            if (info->level_width[k] != w || info->level_height[k] != h) break;
-            info->texture_file_levels = k + 1;
-        }
+    int k, kept = 1;
+    for (k = 1; o->use_file_levels && k < info->levels; ++k) {
+        int w = info->width >> k > 0 ? info->width >> k : 1, h = info->height >> k > 0 ? info->height >> k : 1;
+        if (info->level_width[k] != w || info->level_height[k] != h) break;
+        kept = k + 1;
     }
-    io_colour_close(col);
-    return st;
+    return kept;
 }
 
 sample_status sample_io_describe(const char *path, const sample_io_options *o, sample_io_file_info *info,
@@ -61,8 +55,10 @@ sample_status sample_io_describe(const char *path, const sample_io_options *o, s
     sample_io_options defaults;
     io_reader *r = NULL;
     io_reader_info inf;
+    io_colour *col = NULL;
+    io_plan p;
+    int level_w[SAMPLE_MAX_LEVELS] = {0}, level_h[SAMPLE_MAX_LEVELS] = {0}, k;
     sample_status st;
-    int k;
     if (!info) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_describe: info is NULL");
     memset(info, 0, sizeof *info);
     if (!o) {
@@ -73,13 +69,19 @@ sample_status sample_io_describe(const char *path, const sample_io_options *o, s
         (st = io_preflight(path, NULL, 0, err)) != SAMPLE_OK || (st = io_reader_open(path, NULL, 0, NULL, &r, err)) != SAMPLE_OK)
         return st;
     io_reader_info_get(r, &inf);
-    file_side(&inf, info);
-    for (k = 0; st == SAMPLE_OK && k < info->levels; ++k)
-        st = io_reader_level_size(r, k, &info->level_width[k], &info->level_height[k], err);
+    for (k = 0; st == SAMPLE_OK && k < inf.nlevels && k < SAMPLE_MAX_LEVELS; ++k)
+        st = io_reader_level_size(r, k, &level_w[k], &level_h[k], err);
     io_reader_close(r);
     if (st == SAMPLE_OK && (inf.width <= 0 || inf.height <= 0 || inf.channels <= 0))
         st = sample_error_set(err, SAMPLE_E_CORRUPT, "image claims %d x %d pixels with %d channels", inf.width,
                               inf.height, inf.channels);
-    if (st == SAMPLE_OK) st = texture_side(&inf, o, info, err);
+    if (st == SAMPLE_OK) st = io_colour_open(o->ocio_config, &col, err);
+    if (st == SAMPLE_OK) st = io_read_plan(col, &inf, o, &p, err);
+    io_colour_close(col);
+    if (st != SAMPLE_OK) return st;
+    io_file_info_fill(&inf, &p, info);
+    memcpy(info->level_width, level_w, sizeof level_w);
+    memcpy(info->level_height, level_h, sizeof level_h);
+    info->texture_file_levels = file_levels_kept(info, o);
     return st;
 }

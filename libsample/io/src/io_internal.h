@@ -40,13 +40,21 @@ typedef struct io_reader_info {
     int alpha_channel;  /* index of alpha, −1 if none */
     io_ptype native;    /* the type the level should be read as */
     char colorspace[64];/* oiio:ColorSpace metadata, "" if none */
+    char wrapmodes[64]; /* "wrapmodes" metadata ("periodic,clamp"), "" if none */
     int straight_alpha; /* 1: colour is not multiplied by alpha (PNG, TGA, some TIFF) */
     /* What the file says, for sample_io_describe (io_describe.c); the
      * direct OpenEXR reader leaves them as its layout implies. */
-    char format[32], pixel_type[16], compression[32], wrapmodes[64];
+    char format[32], pixel_type[16], compression[32];
     int tile_w, tile_h; /* 0: scanlines */
     char channel_names[SAMPLE_IO_NAMED_CHANNELS][32];
 } io_reader_info;
+
+/* io_wrapmodes.c: the words of the "wrapmodes" attribute (maketx, OIIO's
+ * TextureSystem) for libsample's wrap modes, both ways. Modes without a
+ * word of their own are written "clamp". io_wrapmodes_parse reads "S,T"
+ * (or one word for both); 0 if it names no mode libsample has. */
+const char *io_wrap_word(sample_wrap w);
+int io_wrapmodes_parse(const char *s, sample_wrap *wrap_s, sample_wrap *wrap_t);
 
 /* Exactly one of path or (data, size) is given. format_hint may be NULL. */
 sample_status io_reader_open(const char *path, const void *data, size_t size,
@@ -72,10 +80,16 @@ typedef struct io_plan {
     int premultiply;        /* 1: colour × alpha after the conversion */
     int alpha;              /* alpha's index among the kept channels, −1 */
     const char *colorspace; /* resolved source space */
+    int colorspace_from_rule; /* 1: chosen by the rule (no usable name) */
+    int colorspace_unknown;   /* 1: the file names a space the config does
+                                 not know (OIIO's generic names aside) */
 } io_plan;
 
 sample_status io_read_plan(const io_colour *col, const io_reader_info *inf, const sample_io_options *o, io_plan *p,
                            sample_error *err);
+/* io_describe.c: what the file says (inf) and what the plan made of it,
+ * into info; the level sizes are left 0 and texture_file_levels 1. */
+void io_file_info_fill(const io_reader_info *inf, const io_plan *p, sample_io_file_info *info);
 /* The header pre-flights, each a no-op on other formats, on a file (path)
  * or bytes. */
 sample_status io_preflight(const char *path, const void *data, size_t size, sample_error *err);
@@ -108,6 +122,23 @@ sample_status io_colour_open(const char *path, io_colour **out, sample_error *er
 void io_colour_close(io_colour *c); /* accepts NULL */
 /* Does the config know this colour space (name, role or alias)? */
 int io_colour_known(const io_colour *c, const char *name);
+/* SAMPLE_OK if the config knows `name`, else SAMPLE_E_COLOR with a
+ * message naming it and listing the config's colour spaces. */
+sample_status io_colour_require(const io_colour *c, const char *name, sample_error *err);
+/* What a file written in colour space `name` is labelled with: the space's
+ * own name (a role or alias such as scene_linear resolved: "ACEScg" under
+ * an ACES config) and, where the config ties it to ACES2065-1 without a
+ * change of white, its chromaticities (OpenEXR's order: CIE xy of red,
+ * green, blue, white). */
+typedef struct io_colour_label {
+    char name[128];
+    int has_chromaticities;
+    float chromaticities[8];
+} io_colour_label;
+void io_colour_label_get(const io_colour *c, const char *name, io_colour_label *out);
+/* io_read.c: the config's name for sRGB (the first of the names common
+ * configs use that it knows), NULL if it has none. */
+const char *io_colour_srgb_name(const io_colour *col);
 /* Is the space data (no conversion) or the scene_linear space itself? */
 int io_colour_is_linear(const io_colour *c, const char *name);
 /* Does src → scene_linear equal the sRGB EOTF on every 8-bit code? Then
@@ -123,13 +154,16 @@ sample_status io_colour_apply(const io_colour *c, const char *name, int to_linea
 
 /* Write w × h × nchan pixels of `type` to tmp_path in the format of
  * final_path's extension; names may be NULL (R, G, B, A). The spec carries
- * the colour space name as oiio:ColorSpace when non-NULL. */
+ * the label's name as oiio:ColorSpace and its chromaticities, when label is
+ * non-NULL. */
 sample_status io_oiio_write(const char *final_path, const char *tmp_path, const void *px,
                             io_ptype type, int w, int h, int nchan, const char *const *names,
-                            const char *colorspace, sample_error *err);
+                            const io_colour_label *label, sample_error *err);
 
+/* The file carries the label's name (oiio:ColorSpace) and chromaticities. */
 sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
-                               const sample_io_exr_options *o, size_t *overflows, sample_error *err);
+                               const sample_io_exr_options *o, const io_colour_label *label, size_t *overflows,
+                               sample_error *err);
 
 /* A temporary file beside a target (io_tmp.c): unnamed (O_TMPFILE) where
  * the file system allows, else named PATH.tmpPID-N and removed on SIGINT,
@@ -160,16 +194,16 @@ size_t io_quantize(float *buf, size_t n, sample_io_type type, int half_clamp);
  * overflows are added to *overflows. */
 sample_status io_level_pixels(const sample_texture *tex, int k, sample_io_type type, const io_colour *col,
                               const char *cs, int half_clamp, size_t *overflows, void **out, sample_error *err);
-/* oiio_write.cpp: every level of tex as a tiled TIFF (maketx's .tx layout). */
+/* oiio_write.cpp: every level of tex as a tiled TIFF (maketx's .tx layout),
+ * its texels in colour space `cs`, labelled with `label` (oiio:ColorSpace). */
 sample_status io_oiio_write_mip(const char *final_path, const char *tmp_path, const sample_texture *tex,
                                 const sample_io_exr_options *o, sample_io_type type, const io_colour *col,
-                                const char *cs, size_t *overflows, sample_error *err);
+                                const char *cs, const io_colour_label *label, size_t *overflows,
+                                sample_error *err);
 /* Which mip-mapped writer path's extension names (*tiff: 1 TIFF, 0
  * OpenEXR), or SAMPLE_E_INVALID_ARGUMENT where it names a format without
  * levels or one without `type`. */
 sample_status io_mip_target(const char *path, sample_io_type type, int *tiff, sample_error *err);
-/* The "wrapmodes" word for a wrap mode, as maketx spells it. */
-const char *io_wrap_word(sample_wrap w);
 
 /* Lower-case extension of a path without the dot ("" if none), into ext. */
 void io_extension(const char *path, char *ext, size_t ext_size);

@@ -15,18 +15,6 @@ static int full_chain(int w, int h)
     return n;
 }
 
-const char *io_wrap_word(sample_wrap w)
-{
-    /* maketx's and OpenImageIO TextureSystem's words (black, clamp,
-     * periodic, mirror); modes without an equivalent say clamp. */
-    switch (w) {
-    case SAMPLE_WRAP_REPEAT: return "periodic";
-    case SAMPLE_WRAP_MIRRORED_REPEAT: return "mirror";
-    case SAMPLE_WRAP_CLAMP_TO_BORDER: return "black";
-    default: return "clamp";
-    }
-}
-
 sample_status io_level_pixels(const sample_texture *tex, int k, sample_io_type type, const io_colour *col,
                               const char *cs, int half_clamp, size_t *overflows, void **out, sample_error *err)
 {
@@ -100,36 +88,29 @@ sample_status io_mip_target(const char *path, sample_io_type type, int *tiff, sa
     return SAMPLE_OK;
 }
 
-static sample_status write_exr(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
-                               size_t *overflows, sample_error *err)
-{
-    io_tmp tmp;
-    sample_status st;
-    if ((st = io_tmp_create(path, &tmp, err)) != SAMPLE_OK) return st;
-    st = io_exr_write_mip(tmp.write_path, tex, o, overflows, err);
-    return io_tmp_finish(st, &tmp, path, err);
-}
-
-static sample_status write_tiff(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
-                                size_t *overflows, sample_error *err)
+/* The texels are in the config's scene_linear space; U8 and U16 store them
+ * sRGB-encoded. The file is labelled with the space it holds
+ * (io_colour_label_get: its own name, chromaticities where known). */
+static sample_status write_levels(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
+                                  int tiff, size_t *overflows, sample_error *err)
 {
     sample_io_type type = o->type != SAMPLE_IO_TYPE_AUTO ? o->type
                           : o->use_float                 ? SAMPLE_IO_TYPE_FLOAT
                                                          : SAMPLE_IO_TYPE_HALF;
-    static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture"};
     const char *cs = "scene_linear";
     io_colour *col = NULL;
+    io_colour_label label;
     io_tmp tmp;
-    size_t k;
     sample_status st = io_colour_open(o->ocio_config, &col, err);
     if (st != SAMPLE_OK) return st;
     if (type == SAMPLE_IO_TYPE_U8 || type == SAMPLE_IO_TYPE_U16) {
-        for (cs = NULL, k = 0; !cs && k < sizeof srgb_names / sizeof srgb_names[0]; ++k)
-            if (io_colour_known(col, srgb_names[k])) cs = srgb_names[k];
+        cs = io_colour_srgb_name(col);
         if (!cs) st = sample_error_set(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit output");
     }
+    if (st == SAMPLE_OK) io_colour_label_get(col, cs, &label);
     if (st == SAMPLE_OK && (st = io_tmp_create(path, &tmp, err)) == SAMPLE_OK) {
-        st = io_oiio_write_mip(path, tmp.write_path, tex, o, type, col, cs, overflows, err);
+        st = tiff ? io_oiio_write_mip(path, tmp.write_path, tex, o, type, col, cs, &label, overflows, err)
+                  : io_exr_write_mip(tmp.write_path, tex, o, &label, overflows, err);
         st = io_tmp_finish(st, &tmp, path, err);
     }
     io_colour_close(col);
@@ -142,11 +123,11 @@ static sample_status write_mip(const char *path, const sample_texture *tex, cons
     sample_io_exr_options defaults;
     size_t overflows = 0;
     sample_status st;
+    int tiff = 0;
     if (!o) {
         sample_io_exr_options_init(&defaults);
         o = &defaults;
     }
-    int tiff = 0;
     if ((st = check(path, tex, o, err)) != SAMPLE_OK) return st;
     if (!any_format) {
         if (o->type == SAMPLE_IO_TYPE_U8 || o->type == SAMPLE_IO_TYPE_U16)
@@ -154,7 +135,7 @@ static sample_status write_mip(const char *path, const sample_texture *tex, cons
     } else if ((st = io_mip_target(path, o->type, &tiff, err)) != SAMPLE_OK) {
         return st;
     }
-    st = tiff ? write_tiff(path, tex, o, &overflows, err) : write_exr(path, tex, o, &overflows, err);
+    st = write_levels(path, tex, o, tiff, &overflows, err);
     if (o->half_overflows) *o->half_overflows = overflows;
     return st;
 }

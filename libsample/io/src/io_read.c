@@ -31,37 +31,56 @@ static sample_status src_read(io_source *s, int k, io_ptype type, int nchan, voi
                   : io_reader_read(s->oiio, k, type, nchan, dst, err);
 }
 
-/* Names of sRGB spaces in common configs, tried in order when the rule says
- * "sRGB" (our shipped config has the first; ACES configs have the others). */
+/* Names of sRGB spaces in common configs, tried in order where "sRGB" is
+ * meant (our shipped config has the first; ACES configs have the others). */
 static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture",
                                          "Utility - sRGB - Texture"};
 
-static sample_status choose_colorspace(const io_colour *col, const sample_io_options *o,
-                                       const io_reader_info *inf, const char **name, sample_error *err)
+const char *io_colour_srgb_name(const io_colour *col)
 {
     size_t k;
+    for (k = 0; k < sizeof srgb_names / sizeof srgb_names[0]; ++k)
+        if (io_colour_known(col, srgb_names[k])) return srgb_names[k];
+    return NULL;
+}
+
+/* OpenImageIO's own names for what the rule below assumes anyway: "sRGB"
+ * for 8- and 16-bit PNG, JPEG and TIFF, "Linear" (OpenEXR, whether or not
+ * the file names a space) or "linear" (Radiance HDR) for half and float.
+ * A config that spells these spaces otherwise (ACES: "sRGB - Texture")
+ * decodes them the same, so they are not reported as unknown. */
+static int oiio_generic_name(const char *name, io_ptype native)
+{
+    if (native == IO_HALF || native == IO_FLOAT) return strcmp(name, "Linear") == 0 || strcmp(name, "linear") == 0;
+    return strcmp(name, "sRGB") == 0;
+}
+
+/* The source colour space into p->colorspace; p->colorspace_from_rule and
+ * p->colorspace_unknown say how it was found. */
+static sample_status choose_colorspace(const io_colour *col, const sample_io_options *o,
+                                       const io_reader_info *inf, io_plan *p, sample_error *err)
+{
     if (o->colorspace) {
-        if (!io_colour_known(col, o->colorspace))
-            return sample_error_set(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", o->colorspace);
-        *name = o->colorspace;
-        return SAMPLE_OK;
+        p->colorspace = o->colorspace;
+        return io_colour_require(col, o->colorspace, err);
     }
     /* Metadata the config does not know (OIIO writes names like
      * "GammaCorrected1.8") falls through to the rule rather than failing:
-     * files carry all sorts of names. */
-    if (inf->colorspace[0] && io_colour_known(col, inf->colorspace)) {
-        *name = inf->colorspace;
-        return SAMPLE_OK;
-    }
-    if (inf->native == IO_HALF || inf->native == IO_FLOAT) {
-        *name = "scene_linear";
-        return SAMPLE_OK;
-    }
-    for (k = 0; k < sizeof srgb_names / sizeof srgb_names[0]; ++k)
-        if (io_colour_known(col, srgb_names[k])) {
-            *name = srgb_names[k];
+     * files carry all sorts of names. The caller is told (file_info), so
+     * that a program can say which name was not known and what was used. */
+    if (inf->colorspace[0]) {
+        if (io_colour_known(col, inf->colorspace)) {
+            p->colorspace = inf->colorspace;
             return SAMPLE_OK;
         }
+        p->colorspace_unknown = !oiio_generic_name(inf->colorspace, inf->native);
+    }
+    p->colorspace_from_rule = 1;
+    if (inf->native == IO_HALF || inf->native == IO_FLOAT) {
+        p->colorspace = "scene_linear";
+        return SAMPLE_OK;
+    }
+    if ((p->colorspace = io_colour_srgb_name(col)) != NULL) return SAMPLE_OK;
     return sample_error_set(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit data; "
                                         "name the file's colour space explicitly");
 }
@@ -110,7 +129,7 @@ sample_status io_read_plan(const io_colour *col, const io_reader_info *inf, cons
     sample_status st;
     memset(p, 0, sizeof *p);
     p->nchan = inf->channels < 4 ? inf->channels : 4;
-    st = choose_colorspace(col, o, inf, &p->colorspace, err);
+    st = choose_colorspace(col, o, inf, p, err);
     if (st == SAMPLE_OK) plan_storage(col, inf, o, p);
     return st;
 }
@@ -210,6 +229,18 @@ static sample_status read_level(io_source *r, const io_colour *col, const io_pla
     return SAMPLE_OK;
 }
 
+/* What the file says and what the plan made of it (sample_io.h). */
+static sample_status file_info(io_source *r, const io_reader_info *inf, const io_plan *p, sample_io_file_info *info,
+                               sample_error *err)
+{
+    int k;
+    sample_status st = SAMPLE_OK;
+    io_file_info_fill(inf, p, info);
+    for (k = 0; st == SAMPLE_OK && k < info->levels && k < SAMPLE_MAX_LEVELS; ++k)
+        st = src_level_size(r, k, &info->level_width[k], &info->level_height[k], err);
+    return st;
+}
+
 /* *fallback is set (and nothing read) when the direct reader was given a
  * file whose colour space needs an OCIO conversion: OIIO's path does that. */
 static sample_status read_texture(io_source *r, const sample_io_options *o, const sample_mip_params *mip,
@@ -221,7 +252,9 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
     io_plan p;
     sample_image lv[SAMPLE_MAX_LEVELS];
     void *data[SAMPLE_MAX_LEVELS] = {0};
-    int count = 0, k;
+    sample_mip_params file_mip;
+    sample_wrap ws = SAMPLE_WRAP_REPEAT, wt = SAMPLE_WRAP_REPEAT;
+    int count = 0, k, has_wrap;
     sample_status st;
     if (!o) {
         sample_io_options_init(&defaults);
@@ -235,8 +268,16 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
     if (inf.width <= 0 || inf.height <= 0 || inf.channels <= 0)
         return sample_error_set(err, SAMPLE_E_CORRUPT, "image claims %d x %d pixels with %d channels", inf.width,
                        inf.height, inf.channels);
+    has_wrap = inf.wrapmodes[0] && io_wrapmodes_parse(inf.wrapmodes, &ws, &wt);
     st = io_colour_open(o->ocio_config, &col, err);
     if (st == SAMPLE_OK) st = io_read_plan(col, &inf, o, &p, err);
+    if (st == SAMPLE_OK && o->file_info) st = file_info(r, &inf, &p, o->file_info, err);
+    if (has_wrap && o->mip_wrap_from_file && mip) {
+        file_mip = *mip;
+        file_mip.wrap_s = ws;
+        file_mip.wrap_t = wt;
+        mip = &file_mip;
+    }
     /* The direct reader reads the file's type as it is: conversions go
      * through OpenImageIO's path. */
     if (st == SAMPLE_OK && r->exr && (p.convert || p.read_as != inf.native)) {
@@ -247,6 +288,7 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
     if (st == SAMPLE_OK) {
         st = count_levels(r, &inf, &p, o->use_file_levels ? inf.nlevels : 1, built_levels(inf.width, inf.height, mip),
                           o->max_bytes ? o->max_bytes : SAMPLE_IO_DEFAULT_MAX_BYTES, &count, err);
+        if (st == SAMPLE_OK && o->file_info) o->file_info->texture_file_levels = count;
     }
     memset(lv, 0, sizeof lv);
     for (k = 0; st == SAMPLE_OK && k < count; ++k) {

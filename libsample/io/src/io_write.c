@@ -62,11 +62,11 @@ size_t io_quantize(float *buf, size_t n, sample_io_type type, int half_clamp)
 sample_status sample_io_write_image_ex(const char *path, const float *rgba, int w, int h, int channels_to_write,
                                        const sample_io_write_options *o, sample_error *err)
 {
-    static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture"};
     sample_io_write_options defaults;
     sample_io_type type;
     const char *cs;
     io_colour *col = NULL;
+    io_colour_label label;
     float *buf = NULL;
     size_t n, i;
     io_tmp tmp;
@@ -87,12 +87,11 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     if (st != SAMPLE_OK) return st;
     cs = o->colorspace;
     if (!cs && (type == SAMPLE_IO_TYPE_HALF || type == SAMPLE_IO_TYPE_FLOAT)) cs = "scene_linear";
-    for (i = 0; !cs && i < sizeof srgb_names / sizeof srgb_names[0]; ++i)
-        if (io_colour_known(col, srgb_names[i])) cs = srgb_names[i];
-    if (!cs || !io_colour_known(col, cs)) {
-        st = sample_error_set(err, SAMPLE_E_COLOR, "unknown colour space '%s' (not in the OCIO config)", cs ? cs : "sRGB");
-        goto done;
-    }
+    if (!cs) cs = io_colour_srgb_name(col);
+    st = cs ? io_colour_require(col, cs, err)
+            : sample_error_set(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit files");
+    if (st != SAMPLE_OK) goto done;
+    io_colour_label_get(col, cs, &label);
     n = (size_t)w * (size_t)h;
     if (!(buf = malloc(n * (size_t)channels_to_write * sizeof(float)))) {
         st = sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a %d x %d image", w, h);
@@ -106,7 +105,7 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     st = io_tmp_create(path, &tmp, err);
     if (st != SAMPLE_OK) goto done;
     /* sample_io_type U8 … FLOAT are io_ptype IO_U8 … IO_FLOAT plus one. */
-    st = io_oiio_write(path, tmp.write_path, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, cs, err);
+    st = io_oiio_write(path, tmp.write_path, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, &label, err);
     st = io_tmp_finish(st, &tmp, path, err);
 done:
     free(buf);

@@ -12,7 +12,7 @@
 using namespace OIIO;
 
 extern "C" sample_status io_oiio_write(const char *final_path, const char *tmp_path, const void *px, io_ptype type,
-                                       int w, int h, int nchan, const char *const *names, const char *colorspace,
+                                       int w, int h, int nchan, const char *const *names, const io_colour_label *label,
                                        sample_error *err)
 {
     static const TypeDesc types[] = {TypeDesc::UINT8, TypeDesc::UINT16, TypeDesc::HALF, TypeDesc::FLOAT};
@@ -34,7 +34,14 @@ extern "C" sample_status io_oiio_write(const char *final_path, const char *tmp_p
         }
         // Store the values as given: no premultiplied/straight conversion.
         spec.attribute("oiio:UnassociatedAlpha", 1);
-        if (colorspace) spec.attribute("oiio:ColorSpace", colorspace);
+        if (label) {
+            spec.attribute("oiio:ColorSpace", label->name);
+            // OpenEXR's standard chromaticities attribute (OIIO passes a
+            // float[8] "chromaticities" through). OIIO 2.4's OpenEXR writer
+            // drops oiio:ColorSpace; later versions keep it.
+            if (label->has_chromaticities)
+                spec.attribute("chromaticities", TypeDesc(TypeDesc::FLOAT, 8), label->chromaticities);
+        }
         if (!out->open(tmp_path, spec) || !out->write_image(types[type], px) || !out->close()) {
             std::string msg = out->geterror();
             return sample_error_set(err, SAMPLE_E_IO, "cannot write '%s': %s", final_path, msg.c_str());
@@ -52,8 +59,8 @@ extern "C" sample_status io_oiio_write(const char *final_path, const char *tmp_p
 // .tx files; the pixels come from io_level_pixels.
 extern "C" sample_status io_oiio_write_mip(const char *final_path, const char *tmp_path, const sample_texture *tex,
                                            const sample_io_exr_options *o, sample_io_type type,
-                                           const io_colour *col, const char *cs, size_t *overflows,
-                                           sample_error *err)
+                                           const io_colour *col, const char *cs, const io_colour_label *label,
+                                           size_t *overflows, sample_error *err)
 {
     static const TypeDesc types[] = {TypeDesc::UINT8, TypeDesc::UINT16, TypeDesc::HALF, TypeDesc::FLOAT};
     static const char *const rgba[4] = {"R", "G", "B", "A"};
@@ -85,7 +92,7 @@ extern "C" sample_status io_oiio_write_mip(const char *final_path, const char *t
             spec.attribute("compression", "zip");
             spec.attribute("textureformat", "Plain Texture");
             spec.attribute("wrapmodes", std::string(io_wrap_word(o->wrap_s)) + "," + io_wrap_word(o->wrap_t));
-            if (type == SAMPLE_IO_TYPE_U8 || type == SAMPLE_IO_TYPE_U16) spec.attribute("oiio:ColorSpace", cs);
+            spec.attribute("oiio:ColorSpace", label->name);
             // TIFF's ExtraSamples tag says associated (premultiplied) or
             // unassociated alpha; OIIO writes the former unless told.
             if (o->alpha_channel >= 0 && !o->premultiplied) spec.attribute("oiio:UnassociatedAlpha", 1);

@@ -72,6 +72,10 @@ extern "C" {
 
 /* ---- Reading ------------------------------------------------------------ */
 
+/* What a file holds and what the reader makes of it (below, "Describing a
+ * file"). */
+typedef struct sample_io_file_info sample_io_file_info;
+
 typedef struct sample_io_options {
     /* Source colour space (an OCIO name, role or alias). NULL: from the file
      * metadata, else the rule in section 2. */
@@ -100,6 +104,14 @@ typedef struct sample_io_options {
      * from transparent texels). The texture is then half or float. 0
      * (default): alpha as stored, never applied. */
     int premultiply;
+    /* NULL, or filled by sample_io_read_texture / _memory with what the
+     * file says and what was made of it, as sample_io_describe fills it
+     * (below), level_width and level_height aside. */
+    sample_io_file_info *file_info;
+    /* 1: a pyramid built here (the file holds no levels) takes its edges
+     * from the file's wrap modes where it stores them, rather than from
+     * `mip`; 0 (default): from `mip`. */
+    int mip_wrap_from_file;
 } sample_io_options;
 
 #define SAMPLE_IO_DEFAULT_MAX_BYTES ((size_t)1 << 32) /* 4 GiB */
@@ -134,7 +146,7 @@ SAMPLE_IO_API sample_status sample_io_check_regular_file(const char *path, const
 /* Channel names sample_io_file_info keeps (a file may have more channels). */
 #define SAMPLE_IO_NAMED_CHANNELS 16
 
-typedef struct sample_io_file_info {
+struct sample_io_file_info {
     /* What the file holds (subimage 0), as OpenImageIO reports it; strings
      * are "" where the file says nothing. */
     char format[32];     /* reader: "png", "openexr", "tiff", ... */
@@ -148,16 +160,24 @@ typedef struct sample_io_file_info {
     int level_width[SAMPLE_MAX_LEVELS], level_height[SAMPLE_MAX_LEVELS];
     int tile_width, tile_height; /* 0: scanlines */
     char compression[32];
-    char wrapmodes[64];  /* maketx's "wrapmodes" attribute */
+    /* The "wrapmodes" attribute as stored (maketx, OIIO's TextureSystem and
+     * sample_io_write_mip write it: black, clamp, periodic, mirror), and
+     * has_wrap = 1 where it names modes libsample has, in wrap_s, wrap_t. */
+    char wrapmodes[64];
+    int has_wrap;
+    sample_wrap wrap_s, wrap_t;
     char colorspace[64]; /* the file's oiio:ColorSpace */
     /* What sample_io_read_texture makes of it with the same options. */
-    char colorspace_used[64]; /* the space decoded from */
+    char colorspace_used[64]; /* the space decoded from (an OCIO name or role) */
     int colorspace_from_rule; /* 1: no usable name (none, or one the config
                                  does not know): section 2's rule chose */
+    int colorspace_unknown;   /* 1: the file names a space the config does
+                                 not know (OpenImageIO's generic "sRGB",
+                                 "Linear", which the rule reads alike, aside) */
     sample_format texture_format;
     int texture_channels;
     int texture_file_levels;  /* levels taken from the file (1: built) */
-} sample_io_file_info;
+};
 
 /* Describe an image file from its headers, without reading its pixels:
  * the memory used is that of the headers (doc/io-and-colour.md,
@@ -236,7 +256,11 @@ typedef struct sample_io_exr_options {
      * values were that large, so a caller can say so. */
     int half_clamp;
     size_t *half_overflows;
-    const char *ocio_config;    /* for U8 / U16's sRGB encoding; as in sample_io_options */
+    /* The OCIO config whose scene_linear space the texels are in: named in
+     * the file (oiio:ColorSpace, chromaticities where known), and the
+     * source of U8 / U16's sRGB encoding. NULL: $OCIO if set, else the
+     * shipped config (as in sample_io_options). */
+    const char *ocio_config;
 } sample_io_exr_options;
 
 SAMPLE_IO_API void sample_io_exr_options_init(sample_io_exr_options *o);
