@@ -256,6 +256,73 @@ static void test_half_overflow(void)
     }
 }
 
+/* What a read reports through options.file_info is what sample_io_describe
+ * says, on the direct OpenEXR path and on OpenImageIO's alike; the written
+ * OpenEXR file names the colour space it holds, and both formats store the
+ * wrap modes, which both parse. want_colorspace "": the rule decides. */
+static void same_file_info(const char *path, int direct, const char *want_format, const char *want_colorspace)
+{
+    sample_io_options o;
+    sample_io_file_info described, read;
+    sample_texture *t = NULL;
+    sample_error e;
+    unsigned long before = io_exr_direct_reads();
+    CHECK(sample_io_describe(path, NULL, &described, &e) == SAMPLE_OK, "describe %s: %s", path, e.message);
+    sample_io_options_init(&o);
+    o.file_info = &read;
+    memset(&read, 0xff, sizeof read);
+    CHECK(sample_io_read_texture(path, &o, NULL, &t, &e) == SAMPLE_OK, "read %s: %s", path, e.message);
+    sample_texture_destroy(t);
+    CHECK(io_exr_direct_reads() - before == (unsigned long)direct, "%s: direct reader used %lu times", path,
+          io_exr_direct_reads() - before);
+    CHECK(memcmp(&described, &read, sizeof read) == 0,
+          "%s: read says %s %s %s tiles %d, levels %d/%d, '%s'; describe %s %s %s tiles %d, levels %d/%d, '%s'", path,
+          read.format, read.pixel_type, read.compression, read.tile_width, read.levels, read.texture_file_levels,
+          read.colorspace, described.format, described.pixel_type, described.compression, described.tile_width,
+          described.levels, described.texture_file_levels, described.colorspace);
+    CHECK(strcmp(read.format, want_format) == 0 && read.levels == 5 && read.texture_file_levels == 5,
+          "%s: %s, %d levels, %d kept", path, read.format, read.levels, read.texture_file_levels);
+    CHECK(strcmp(read.wrapmodes, "periodic,mirror") == 0 && read.has_wrap && read.wrap_s == SAMPLE_WRAP_REPEAT &&
+              read.wrap_t == SAMPLE_WRAP_MIRRORED_REPEAT,
+          "%s: wrapmodes '%s' (%d: %d, %d)", path, read.wrapmodes, read.has_wrap, (int)read.wrap_s,
+          (int)read.wrap_t);
+    CHECK(strcmp(read.colorspace, want_colorspace) == 0 && !read.colorspace_unknown &&
+              read.colorspace_from_rule == !want_colorspace[0],
+          "%s: colour space '%s' (unknown %d, rule %d)", path, read.colorspace, read.colorspace_unknown,
+          read.colorspace_from_rule);
+}
+
+static void test_file_info(void)
+{
+    char in[1024], out[1024];
+    sample_io_exr_options wo;
+    sample_mip_params mip;
+    sample_error e;
+    sample_io_exr_options_init(&wo);
+    sample_mip_params_init(&mip);
+    mip.wrap_s = SAMPLE_WRAP_REPEAT;
+    mip.wrap_t = SAMPLE_WRAP_MIRRORED_REPEAT;
+    io_path(in, sizeof in, io_images, "rgb8.png");
+    make_err.message[0] = '\0';
+    CHECK(sample_io_make_mip(in, io_path(out, sizeof out, io_scratch, "info.exr"), NULL, &mip, NULL, &e) == SAMPLE_OK,
+          "info.exr: %s", e.message);
+    /* The shipped config's scene_linear space by its own name. */
+    same_file_info(out, 1, "openexr", "lin_rec709");
+    wo.type = SAMPLE_IO_TYPE_U8;
+    wo.tile_w = wo.tile_h = 16;
+    CHECK(sample_io_make_mip(in, io_path(out, sizeof out, io_scratch, "info.tx"), NULL, &mip, &wo, &e) == SAMPLE_OK,
+          "info.tx: %s", e.message);
+    same_file_info(out, 0, "tiff", "sRGB");
+    wo.type = SAMPLE_IO_TYPE_HALF;
+    CHECK(sample_io_make_mip(in, io_path(out, sizeof out, io_scratch, "info_half.tx"), NULL, &mip, &wo, &e) ==
+              SAMPLE_OK,
+          "info_half.tx: %s", e.message);
+    /* OpenImageIO 2.4's TIFF writer does not store oiio:ColorSpace: its
+     * reader says sRGB for 8-bit TIFF and nothing for half, and the rule
+     * reads both as they were written. */
+    same_file_info(out, 0, "tiff", "");
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3) return fprintf(stderr, "usage: io_make_mip TESTIMAGES SCRATCH [MAKETX]\n"), 2;
@@ -267,5 +334,6 @@ int main(int argc, char **argv)
     RUN(test_channels);
     RUN(test_formats);
     RUN(test_half_overflow);
+    RUN(test_file_info);
     return check_finish();
 }
