@@ -2,7 +2,6 @@
 #include "texload.h"
 #include "cli.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,8 +37,9 @@ int tl_source_flag(const char *sub, int argc, char **argv, int *i, tl_source *sr
 static int read_raw(const char *sub, const char *path, int w, int h, void **data)
 {
     size_t size, want = (size_t)w * (size_t)h * 4 * sizeof(float);
-    if (!cli_read_file(path, data, &size)) {
-        cli_runtime_error(sub, "cannot read '%s': %s", path, strerror(errno));
+    const char *why;
+    if (!cli_read_file(path, data, &size, &why)) {
+        cli_runtime_error(sub, "cannot read '%s': %s", path, why);
         return -1;
     }
     if (size != want) {
