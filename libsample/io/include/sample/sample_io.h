@@ -106,7 +106,7 @@ typedef struct sample_io_options {
     int premultiply;
     /* NULL, or filled by sample_io_read_texture / _memory with what the
      * file says and what was made of it, as sample_io_describe fills it
-     * (below), level_width and level_height aside. */
+     * (below). */
     sample_io_file_info *file_info;
     /* 1: a pyramid built here (the file holds no levels) takes its edges
      * from the file's wrap modes where it stores them, rather than from
