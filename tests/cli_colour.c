@@ -194,12 +194,13 @@ static void colour_and_wrap(void)
     const char *args1[3] = {mip_args, mip_args + 512,
                             "render --scene plane --width 8 --height 8 --out render.exr"};
     /* Read under a config that does not know ACEScg. */
-    const char *env2[5] = {"OCIO=odd.ocio", "OCIO=odd.ocio", "OCIO=odd.ocio", "OCIO=aces.ocio", "OCIO=aces.ocio"};
-    const char *args2[5] = {"lookup --image aces.exr --queries left.raw --text --mag nearest",
+    const char *env2[6] = {"OCIO=odd.ocio",  "OCIO=odd.ocio",  "OCIO=odd.ocio",
+                           "OCIO=aces.ocio", "OCIO=aces.ocio", "OCIO=odd.ocio"};
+    const char *args2[6] = {"lookup --image aces.exr --queries left.raw --text --mag nearest",
                             "lookup --image aces.exr --queries left.raw --text --mag nearest --wrap=mirrored_repeat",
                             "lookup --image aces.exr --queries left.raw --text --mag nearest --wrap-s clamp_to_edge",
-                            bad_args, png_args};
-    int rc[5];
+                            bad_args, png_args, "info aces.exr"};
+    int rc[6];
     FILE *f;
     write_config("aces.ocio", "ACEScg");
     write_config("odd.ocio", "ACEScg (test)");
@@ -218,7 +219,7 @@ static void colour_and_wrap(void)
     /* OIIO 2.4's OpenEXR writer drops the name; the chromaticities stay. */
     check_label("render.exr", NULL, 1);
 
-    run_all(5, env2, args2, rc);
+    run_all(6, env2, args2, rc);
     CHECK(rc[0] == 0 && rc[1] == 0 && rc[2] == 0, "lookups: %d %d %d", rc[0], rc[1], rc[2]);
     CHECK(cli_holds(dir, "err.0",
                     "warning: 'aces.exr' names colour space 'ACEScg', which the OCIO config does not know; "
@@ -236,6 +237,17 @@ static void colour_and_wrap(void)
         CHECK(rc[4] == 0 && err && !*err, "OpenImageIO's generic names are not reported: '%s'", err ? err : "");
         free(err);
     }
+    /* info says it too, and which space it would decode from. */
+    CHECK(rc[5] == 0 &&
+              cli_holds(dir, "err.5",
+                        "texsample info: warning: 'aces.exr' names colour space 'ACEScg', which the OCIO config "
+                        "does not know; decoded as 'scene_linear'") &&
+              cli_holds(dir, "out.5", "colorspace ACEScg\n") &&
+              cli_holds(dir, "out.5", "wrapmodes mirror,mirror\n") &&
+              cli_holds(dir, "out.5",
+                        "colorspace scene_linear (the rule: 8/16-bit sRGB, half/float linear; the OCIO config does "
+                        "not know the file's)"),
+          "info reports the unknown colour space (exit %d)", rc[5]);
 }
 
 int main(int argc, char **argv)

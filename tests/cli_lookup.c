@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -49,7 +50,7 @@ static int run(const char *args)
 {
     char cmd[2048];
     int st;
-    snprintf(cmd, sizeof cmd, "cd %s && %s %s >out.txt 2>err.txt", dir, exe, args);
+    snprintf(cmd, sizeof cmd, "cd %s && timeout 10 %s %s >out.txt 2>err.txt", dir, exe, args);
     st = system(cmd);
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
@@ -151,6 +152,16 @@ static void syntax(void)
     CHECK(run("lookup --raw . --w 2 --h 2 --queries q.raw") == 1 &&
               cli_holds(dir, "err.txt", "cannot read '.': Is a directory"),
           "a directory as texture says why");
+    /* A FIFO would block open(2) until a writer came, and /dev/zero never
+     * ends: both refused at once (timeout: a hang fails, not waits). */
+    snprintf(args, sizeof args, "%s/pipe.raw", dir);
+    CHECK(mkfifo(args, 0600) == 0, "mkfifo");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries pipe.raw") == 1 &&
+              cli_holds(dir, "err.txt", "cannot read query file 'pipe.raw': not a regular file"),
+          "a FIFO as query file is refused");
+    CHECK(run("lookup --raw /dev/zero --w 2 --h 2 --queries q.raw") == 1 &&
+              cli_holds(dir, "err.txt", "cannot read '/dev/zero': not a regular file"),
+          "a device as texture is refused");
     CHECK(run("lookup --raw tex.raw --w 2 --h 2 --queries q.raw --out nodir/r.raw") == 1 &&
               cli_holds(dir, "err.txt", "cannot write 'nodir/r.raw': No such file or directory"),
           "an unwritable output says why");

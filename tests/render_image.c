@@ -248,7 +248,7 @@ static void test_environment_file(void)
         fclose(f);
     }
     CHECK(render_scene_load(path, 0, 0, &sc, err, sizeof err) != 0 && strstr(err, "environment") &&
-              strstr(err, "no-sky.png") && strstr(err, "not found"),
+              strstr(err, "no-sky.png") && strstr(err, "No such file or directory"),
           "'%s'", err);
     render_scene_destroy(sc);
 }

@@ -296,7 +296,7 @@ static void test_limits(void)
     parse_fails_with("{\"textures\":[{\"type\":\"image\",\"file\":\"no-such-file.png\"}],"
                      "\"objects\":[{\"type\":\"plane\"}]}",
 #ifdef TEXSAMPLE_HAVE_IO
-                     "not found"
+                     "No such file or directory"
 #else
                      "no image support"
 #endif

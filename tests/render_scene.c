@@ -227,11 +227,11 @@ static void test_files(void)
     int fd;
     signal(SIGALRM, on_alarm);
     alarm(20);
-    load_fails("/dev/zero", "not a regular file");
+    load_fails("/dev/zero", "is a character device; only regular files are read");
     snprintf(fifo, sizeof fifo, "%s/pipe.json", dir);
     CHECK(mkfifo(fifo, 0600) == 0, "mkfifo");
-    load_fails(fifo, "not a regular file");
-    load_fails(dir, "not a regular file");
+    load_fails(fifo, "is a FIFO; only regular files are read");
+    load_fails(dir, "is a directory; only regular files are read");
     /* 64 MiB + 1 byte, sparse: refused by its size before a byte is read. */
     snprintf(big, sizeof big, "%s/big.json", dir);
     fd = open(big, O_WRONLY | O_CREAT | O_TRUNC, 0600);
@@ -250,7 +250,7 @@ static void test_files(void)
         }
     }
 #ifdef TEXSAMPLE_HAVE_IO
-    load_fails(scene, "not a regular file");
+    load_fails(scene, "is a FIFO; only regular files are read");
 #endif
     /* The command line: any --scene that is not a built-in name is a file. */
     if (texsample) {
@@ -261,7 +261,7 @@ static void test_files(void)
         {
             char *rc = check_slurp_in(dir, "rc.txt"), *msg = check_slurp_in(dir, "err.txt");
             CHECK(rc && atoi(rc) == 1, "exit %s", rc ? rc : "?");
-            CHECK(msg && strstr(msg, "'/dev/zero': not a regular file"), "message '%s'",
+            CHECK(msg && strstr(msg, "'/dev/zero' is a character device"), "message '%s'",
                   msg ? msg : "");
             free(rc);
             free(msg);

@@ -5,6 +5,10 @@
  */
 #include "check.h"
 #include "internal.h"
+#include "mip.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -413,8 +417,49 @@ static void test_kernel_impulse_response(void)
     sample_texture_destroy(tex);
 }
 
+/* Scratch memory grows with the width, not the area (doc/mip-and-lod.md,
+ * "Memory"). A tall 1-channel 8-bit texture, 512 × 8192 (4 MiB), is built
+ * in a child process whose peak resident size is read before and after:
+ * the texture's copy and levels add 5.3 MiB, a whole-level scratch buffer
+ * of floats ((w/2)·h RGBA) would add 32 MiB more. */
+static void test_scratch_bounded(void)
+{
+    const int w = 512, h = 8192;
+    int status = 0;
+    pid_t pid;
+    CHECK(ls_mip_scratch_bytes(65536, SAMPLE_MIPGEN_KAISER) < ((size_t)32 << 20), "Kaiser scratch for 65536 wide: %zu",
+          ls_mip_scratch_bytes(65536, SAMPLE_MIPGEN_KAISER));
+    CHECK(ls_mip_scratch_bytes(w, SAMPLE_MIPGEN_BOX) < ((size_t)1 << 20), "box scratch for 512 wide: %zu",
+          ls_mip_scratch_bytes(w, SAMPLE_MIPGEN_BOX));
+    fflush(NULL);
+    pid = fork();
+    if (pid == 0) {
+        struct rusage before, after;
+        unsigned char *d = (unsigned char *)malloc((size_t)w * h);
+        sample_image im = {w, h, 1, SAMPLE_FORMAT_UNORM8, d, 0};
+        sample_mip_params mp;
+        sample_texture *tex = NULL;
+        sample_error err;
+        long grew_kib;
+        size_t i;
+        if (!d) _exit(2);
+        for (i = 0; i < (size_t)w * h; ++i) d[i] = (unsigned char)(i * 2654435761u >> 24);
+        sample_mip_params_init(&mp);
+        getrusage(RUSAGE_SELF, &before);
+        if (sample_texture_create(&im, &mp, &tex, &err) != SAMPLE_OK) _exit(3);
+        getrusage(RUSAGE_SELF, &after);
+        grew_kib = after.ru_maxrss - before.ru_maxrss;
+        fprintf(stderr, "  peak grew by %ld KiB\n", grew_kib);
+        _exit(grew_kib < 16 * 1024 ? 0 : 4);
+    }
+    CHECK(pid > 0 && waitpid(pid, &status, 0) == pid, "fork/wait failed");
+    CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0, "child: exit %d (4: peak memory over 16 MiB)",
+          WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+}
+
 int main(void)
 {
+    RUN(test_scratch_bounded);
     RUN(test_level_sizes);
     RUN(test_max_levels);
     RUN(test_polyphase_5x1);

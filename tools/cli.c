@@ -9,6 +9,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <stdint.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -297,46 +299,46 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     return 0;
 }
 
-int cli_read_file(const char *path, void **data, size_t *size)
+int cli_read_file(const char *path, void **data, size_t *size, const char **why)
 {
-    FILE *f = fopen(path, "rb");
+    /* O_NONBLOCK: open(2) of a FIFO would wait for a writer (POSIX); it
+     * does nothing to a regular file's reads. Then fstat(2) on that
+     * descriptor refuses all but a regular file (/dev/zero never ends).
+     * The front program links libsample alone, so this is its check, not
+     * libsample_io's sample_io_check_regular_file. */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat st;
-    long n;
+    size_t n;
     void *buf;
-    int e;
+    FILE *f;
     *data = NULL;
     *size = 0;
-    if (!f) return 0;
-    /* A directory opens and even seeks on Linux; reading it fails with
-     * EISDIR, which says more than a size it does not have. */
-    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
-        fclose(f);
-        errno = EISDIR;
+    *why = NULL;
+    if (fd < 0) return *why = strerror(errno), 0;
+    if (fstat(fd, &st) != 0) *why = strerror(errno);
+    else if (S_ISDIR(st.st_mode)) *why = strerror(EISDIR);
+    else if (!S_ISREG(st.st_mode)) *why = "not a regular file (a FIFO or a device); only regular files are read";
+    else if ((uintmax_t)st.st_size > (uintmax_t)(SIZE_MAX - 1)) *why = strerror(EFBIG);
+    if (*why || !(f = fdopen(fd, "rb"))) {
+        if (!*why) *why = strerror(errno);
+        close(fd);
         return 0;
     }
-    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
-        e = errno;
+    n = (size_t)st.st_size;
+    if (!(buf = malloc(n > 0 ? n : 1))) {
         fclose(f);
-        errno = e;
-        return 0;
+        return *why = strerror(ENOMEM), 0;
     }
-    buf = malloc(n > 0 ? (size_t)n : 1);
-    if (!buf) {
-        fclose(f);
-        errno = ENOMEM;
-        return 0;
-    }
-    if (fread(buf, 1, (size_t)n, f) != (size_t)n) {
+    if (fread(buf, 1, n, f) != n) {
         /* A short read without an error: the file shrank while read. */
-        e = ferror(f) ? errno : EIO;
+        *why = ferror(f) ? strerror(errno) : "the file changed while it was read";
         free(buf);
         fclose(f);
-        errno = e;
         return 0;
     }
     fclose(f);
     *data = buf;
-    *size = (size_t)n;
+    *size = n;
     return 1;
 }
 

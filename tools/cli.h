@@ -61,9 +61,12 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
  * generated). */
 void cli_sampler_help_print(void);
 
-/* Whole-file read/write (write goes to FILE.tmp, then renames, so a failed
- * write leaves no truncated file). On failure (0) errno says why. */
-int cli_read_file(const char *path, void **data, size_t *size);
+/* Whole-file read: only a regular file is read (a FIFO or a device is
+ * refused at once, never waited on). On failure (0) *why says why
+ * ("Is a directory", "No such file or directory", ...). Whole-file write
+ * goes to FILE.tmp, then renames, so a failed write leaves no truncated
+ * file; on failure (0) errno says why. */
+int cli_read_file(const char *path, void **data, size_t *size, const char **why);
 int cli_write_file(const char *path, const void *data, size_t size);
 
 /* Progress on stderr for long work ("render 42%"); silent unless stderr is a

@@ -50,7 +50,7 @@ int cmd_lookup(int argc, char **argv)
     tl_source src;
     sample_sampler smp;
     sample_mip_params mip;
-    const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v;
+    const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v, *why;
     int text = 0, want_stats = 0, reference = 0, wrap_s_given = 0, wrap_t_given = 0, i, r, rc = EXIT_RUNTIME;
     void *qdata = NULL, *cdata = NULL;
     size_t qsize = 0, csize = 0, n;
@@ -123,8 +123,8 @@ int cmd_lookup(int argc, char **argv)
         if (!wrap_t_given) smp.wrap_t = src.wrap_t;
     }
 
-    if (!cli_read_file(qpath, &qdata, &qsize)) {
-        cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, strerror(errno));
+    if (!cli_read_file(qpath, &qdata, &qsize, &why)) {
+        cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, why);
         goto done;
     }
     if (qsize % (6 * sizeof(float)) != 0) {
@@ -133,8 +133,8 @@ int cmd_lookup(int argc, char **argv)
     }
     n = qsize / (6 * sizeof(float));
     if (cpath) {
-        if (!cli_read_file(cpath, &cdata, &csize)) {
-            cli_runtime_error(sub, "cannot read corner file '%s': %s", cpath, strerror(errno));
+        if (!cli_read_file(cpath, &cdata, &csize, &why)) {
+            cli_runtime_error(sub, "cannot read corner file '%s': %s", cpath, why);
             goto done;
         }
         if (csize != n * 8 * sizeof(float)) {

@@ -1,4 +1,4 @@
-/* texsample mip: image in, tiled mip-mapped OpenEXR out (like maketx). */
+/* texsample mip: image in, tiled mip-mapped OpenEXR or TIFF out (like maketx). */
 #include "cli.h"
 #include "commands.h"
 
@@ -10,10 +10,14 @@
 #endif
 
 static const char help[] =
-    "usage: texsample mip INPUT OUTPUT.exr [options]\n\n"
+    "usage: texsample mip INPUT OUTPUT.exr|.tx|.tif [options]\n\n"
     "Reads any image OpenImageIO reads, converts it to the scene-linear working\n"
-    "space, builds the full mip pyramid (levels max(1, w/2^k) x max(1, h/2^k))\n"
-    "and writes a tiled, mip-mapped OpenEXR file (ROUND_DOWN level sizes).\n\n"
+    "space in float, multiplies straight alpha into the colour (OpenEXR's\n"
+    "premultiplied colour, so transparent texels do not bleed), builds the full\n"
+    "mip pyramid in float (levels max(1, w/2^k) x max(1, h/2^k)) and writes a\n"
+    "tiled, mip-mapped file with the input's channel names (at most 4 channels):\n"
+    "OpenEXR for .exr (ROUND_DOWN level sizes), TIFF for .tx/.tif/.tiff (maketx's\n"
+    ".tx layout). Other extensions are refused: their formats hold no levels.\n\n"
     "Options:\n"
     "  --filter box|lanczos3|kaiser  down-sampling kernel (default box)\n"
     "  --wrap MODE                   both axes: what the kernel reads past the edges,\n"
@@ -24,7 +28,11 @@ static const char help[] =
     "                                8/16-bit = sRGB, half/float = linear)\n"
     "  --ocio CONFIG                 OpenColorIO config (default: $OCIO, else libsample's)\n"
     "  --tile N                      tile size N x N (default 64)\n"
-    "  --half | --float              pixel type of OUTPUT (default --half)\n\n"
+    "  --format half|float|u8|u16    pixel type of OUTPUT (default half); u8 and u16 are\n"
+    "                                sRGB-encoded, as maketx -d uint8, and need .tx/.tif\n"
+    "  --half | --float              the same as --format half | --format float\n"
+    "  --half-clamp                  half: values beyond +-65504 become +-65504, not +-inf\n"
+    "                                (without it, a warning counts them)\n\n"
     "Progress goes to stderr when it is a terminal (or TEXSAMPLE_PROGRESS is set).\n"
     "Exit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
@@ -37,11 +45,28 @@ static void progress(void *user, size_t done, size_t total)
 
 static int parse_wrap(const char *sub, const char *opt, const char *v, sample_wrap *out)
 {
-    int w = v ? sample_wrap_parse(v) : -1;
-    if (w < 0) return cli_usage_error(sub, "%s: unknown wrap mode '%s'", opt, v ? v : ""), -1;
+    int w = sample_wrap_parse(v);
+    if (w < 0) return cli_usage_error(sub, "%s: unknown wrap mode '%s'", opt, v), -1;
     *out = (sample_wrap)w;
     return 0;
 }
+
+static int parse_format(const char *v, sample_io_type *t)
+{
+    static const struct {
+        const char *name;
+        sample_io_type type;
+    } names[] = {{"half", SAMPLE_IO_TYPE_HALF}, {"float", SAMPLE_IO_TYPE_FLOAT}, {"u8", SAMPLE_IO_TYPE_U8},
+                 {"uint8", SAMPLE_IO_TYPE_U8}, {"u16", SAMPLE_IO_TYPE_U16}, {"uint16", SAMPLE_IO_TYPE_U16}};
+    size_t k;
+    for (k = 0; k < sizeof names / sizeof names[0]; ++k)
+        if (strcmp(v, names[k].name) == 0) {
+            *t = names[k].type;
+            return 1;
+        }
+    return 0;
+}
+
 #endif
 
 int cmd_mip(int argc, char **argv)
@@ -52,23 +77,23 @@ int cmd_mip(int argc, char **argv)
     sample_io_options o;
     sample_io_exr_options x;
     sample_mip_params mip;
-    sample_texture *tex;
     sample_error err;
+    size_t overflows = 0;
+    sample_status st;
     int i;
     sample_io_options_init(&o);
     sample_io_exr_options_init(&x);
     sample_mip_params_init(&mip);
-    /* The pyramid is always rebuilt with the kernel asked for. */
-    o.use_file_levels = 0;
+    x.type = SAMPLE_IO_TYPE_HALF;
     for (i = 1; i < argc; ++i) {
         if (cli_is_help(argv[i])) {
             printf("%s", help);
             return EXIT_OK;
         }
         if (cli_opt(argc, argv, &i, "--filter", &v)) {
-            int m = v ? sample_mipgen_parse(v) : -1;
+            int m = sample_mipgen_parse(v);
             if (m < 0 || m == SAMPLE_MIPGEN_NONE)
-                return cli_usage_error(sub, "--filter: expected box, lanczos3 or kaiser, not '%s'", v ? v : "");
+                return cli_usage_error(sub, "--filter: expected box, lanczos3 or kaiser, not '%s'", v);
             mip.filter = (sample_mipgen)m;
         } else if (cli_opt(argc, argv, &i, "--wrap", &v)) {
             if (parse_wrap(sub, "--wrap", v, &mip.wrap_s) != 0) return EXIT_USAGE;
@@ -78,40 +103,46 @@ int cmd_mip(int argc, char **argv)
         } else if (cli_opt(argc, argv, &i, "--wrap-t", &v)) {
             if (parse_wrap(sub, "--wrap-t", v, &mip.wrap_t) != 0) return EXIT_USAGE;
         } else if (cli_opt(argc, argv, &i, "--colorspace", &v)) {
-            if (!v) return cli_usage_error(sub, "--colorspace needs a name");
             o.colorspace = v;
         } else if (cli_opt(argc, argv, &i, "--ocio", &v)) {
-            if (!v) return cli_usage_error(sub, "--ocio needs a config file");
-            o.ocio_config = v;
+            /* The input is decoded into this config's scene_linear space,
+             * and the output names that space. */
+            o.ocio_config = x.ocio_config = v;
         } else if (cli_opt(argc, argv, &i, "--tile", &v)) {
             int n;
-            if (!v || !cli_parse_int(v, &n) || n < 1 || n > 4096)
-                return cli_usage_error(sub, "--tile needs a size from 1 to 4096, not '%s'", v ? v : "");
+            if (!cli_parse_int(v, &n) || n < 1 || n > 4096)
+                return cli_usage_error(sub, "--tile needs a size from 1 to 4096, not '%s'", v);
             x.tile_w = x.tile_h = n;
-        } else if (strcmp(argv[i], "--half") == 0) {
-            x.use_float = 0;
-        } else if (strcmp(argv[i], "--float") == 0) {
-            x.use_float = 1;
+        } else if (cli_opt(argc, argv, &i, "--format", &v)) {
+            if (!parse_format(v, &x.type))
+                return cli_usage_error(sub, "--format: expected half, float, u8 or u16, not '%s'", v);
+        } else if (cli_opt(argc, argv, &i, "--half", NULL)) {
+            x.type = SAMPLE_IO_TYPE_HALF;
+        } else if (cli_opt(argc, argv, &i, "--float", NULL)) {
+            x.type = SAMPLE_IO_TYPE_FLOAT;
+        } else if (cli_opt(argc, argv, &i, "--half-clamp", NULL)) {
+            x.half_clamp = 1;
         } else if (argv[i][0] != '-' && !in) {
             in = argv[i];
         } else if (argv[i][0] != '-' && !outp) {
             outp = argv[i];
+        } else if (argv[i][0] == '-') {
+            return cli_usage_error(sub, "unknown option '%s'", argv[i]);
         } else {
-            return cli_usage_error(sub, "unexpected argument '%s'", argv[i]);
+            return cli_usage_error(sub, "unexpected argument '%s' (one INPUT, one OUTPUT)", argv[i]);
         }
     }
     if (!in || !outp) return cli_usage_error(sub, "an input image and an output file are required");
-    x.wrap_s = mip.wrap_s;
-    x.ocio_config = o.ocio_config;
-    x.wrap_t = mip.wrap_t;
     x.progress = progress;
-    if (sample_io_read_texture(in, &o, &mip, &tex, &err) != SAMPLE_OK)
-        return cli_runtime_error(sub, "%s", err.message);
-    if (sample_io_write_mip_exr(outp, tex, &x, &err) != SAMPLE_OK) {
-        sample_texture_destroy(tex);
-        return cli_runtime_error(sub, "%s", err.message);
-    }
-    sample_texture_destroy(tex);
+    x.half_overflows = &overflows;
+    /* A wrong output name or type is the command line's fault: exit 2. */
+    if ((st = sample_io_make_mip(in, outp, &o, &mip, &x, &err)) != SAMPLE_OK)
+        return st == SAMPLE_E_INVALID_ARGUMENT ? cli_usage_error(sub, "%s", err.message)
+                                               : cli_runtime_error(sub, "%s", err.message);
+    if (overflows)
+        fprintf(stderr, "texsample mip: warning: %zu value%s beyond +-65504 became %s in half%s\n", overflows,
+                overflows == 1 ? "" : "s", x.half_clamp ? "+-65504" : "+-inf",
+                x.half_clamp ? "" : " (--float keeps them, --half-clamp clamps them)");
     return EXIT_OK;
 #else
     if (argc > 1 && cli_is_help(argv[1])) {

@@ -23,7 +23,7 @@ static const struct {
 } commands[] = {
     {"lookup", cmd_lookup, "evaluate a query file against a texture (raw or image file)"},
     {"info", IMAGE_COMMAND(cmd_info), "describe a texture file and its pyramid"},
-    {"mip", IMAGE_COMMAND(cmd_mip), "build a tiled, mip-mapped OpenEXR file (like maketx)"},
+    {"mip", IMAGE_COMMAND(cmd_mip), "build a tiled, mip-mapped OpenEXR or TIFF file (like maketx)"},
     {"render", IMAGE_COMMAND(cmd_render), "reference renderer: teapot, plane, sphere, ... with exact Jacobians"},
     {"compare", IMAGE_COMMAND(cmd_compare), "aliasing comparison of every filter against the ground truth"},
     {"freq", IMAGE_COMMAND(cmd_freq), "frequency tests: pass-band and aliasing of each filter"},

@@ -2,7 +2,6 @@
 #include "texload.h"
 #include "cli.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,8 +37,9 @@ int tl_source_flag(const char *sub, int argc, char **argv, int *i, tl_source *sr
 static int read_raw(const char *sub, const char *path, int w, int h, void **data)
 {
     size_t size, want = (size_t)w * (size_t)h * 4 * sizeof(float);
-    if (!cli_read_file(path, data, &size)) {
-        cli_runtime_error(sub, "cannot read '%s': %s", path, strerror(errno));
+    const char *why;
+    if (!cli_read_file(path, data, &size, &why)) {
+        cli_runtime_error(sub, "cannot read '%s': %s", path, why);
         return -1;
     }
     if (size != want) {
@@ -96,6 +96,16 @@ done:
     return rc;
 }
 
+#ifdef TEXSAMPLE_HAVE_IO
+void tl_warn_colorspace(const char *sub, const char *path, const sample_io_file_info *file)
+{
+    if (file->colorspace_unknown)
+        fprintf(stderr, "texsample %s: warning: '%s' names colour space '%s', which the OCIO config does not "
+                "know; decoded as '%s' (name its space with --colorspace)\n",
+                sub, path, file->colorspace, file->colorspace_used);
+}
+#endif
+
 int tl_load(const char *sub, tl_source *src, const sample_mip_params *mip, sample_texture **out)
 {
     *out = NULL;
@@ -113,10 +123,7 @@ int tl_load(const char *sub, tl_source *src, const sample_mip_params *mip, sampl
             cli_runtime_error(sub, "%s", err.message);
             return -1;
         }
-        if (file.colorspace_unknown)
-            fprintf(stderr, "texsample %s: warning: '%s' names colour space '%s', which the OCIO config does not "
-                    "know; decoded as '%s' (name its space with --colorspace)\n",
-                    sub, src->image, file.colorspace, file.colorspace_used);
+        tl_warn_colorspace(sub, src->image, &file);
         src->has_wrap = file.has_wrap;
         src->wrap_s = file.wrap_s;
         src->wrap_t = file.wrap_t;

@@ -3,6 +3,9 @@
 #define TEXSAMPLE_TEXLOAD_H
 
 #include "sample/sample.h"
+#ifdef TEXSAMPLE_HAVE_IO
+#include "sample/sample_io.h"
+#endif
 
 typedef struct tl_source {
     const char *raw;        /* --raw FILE: float32 RGBA */
@@ -31,5 +34,12 @@ int tl_source_given(const tl_source *src);
  * the command is then run again in the image program (image_program.h). */
 enum { TL_IMAGE_PROGRAM = 1 };
 int tl_load(const char *sub, tl_source *src, const sample_mip_params *mip, sample_texture **out);
+
+#ifdef TEXSAMPLE_HAVE_IO
+/* The warning tl_load gives for an image file naming a colour space the
+ * OCIO config does not know (which name, and the space used instead), for
+ * commands that read files otherwise (info). */
+void tl_warn_colorspace(const char *sub, const char *path, const sample_io_file_info *file);
+#endif
 
 #endif

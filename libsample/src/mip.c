@@ -3,8 +3,8 @@
  *
  * Every level is made from the stored level above it by a separable
  * resampler: one tap table per axis (source indices and weights for each
- * output texel), a horizontal pass into a float buffer, a vertical pass that
- * encodes into the level. The box, the odd-axis polyphase box and the
+ * output texel), a horizontal pass into a small cache of float rows, a
+ * vertical pass that encodes into the level. The box, the odd-axis polyphase box and the
  * windowed-sinc kernels differ only in how the tap table is filled, so the
  * resampling loop exists once.
  *
@@ -194,36 +194,102 @@ static int axis_make(mip_axis *ax, int n_src, int n_dst, sample_mipgen f, sample
 
 /* ---- Resampling ---------------------------------------------------------- */
 
-/* Level k from level k − 1 through the two tap tables. `row` holds one
- * decoded source row (n_src(x) RGBA floats), `tmp` the horizontally filtered
- * image (n_dst(x) × n_src(y) RGBA floats). Sums run in double and round once,
- * so each pass adds one float rounding per value. */
-static void resample(sample_texture *tex, int k, const mip_axis *ax, const mip_axis *ay,
-                     float *row, float *tmp)
+/* Scratch memory is bounded by the width, not the area (doc/mip-and-lod.md,
+ * "Memory"): the horizontal pass is kept only for the source rows the
+ * vertical taps of nearby output rows read, in a direct-mapped cache of
+ * MIP_ROW_SLOTS(taps) rows, where source row y lives in slot y mod slots.
+ * The vertical taps of one output row are consecutive rows (a window of at
+ * most `taps`) except where a wrap mode folds them at an edge, so with
+ * twice that many slots the window never evicts itself; a folded tap that
+ * collides is recomputed, which costs time, never correctness, because each
+ * tap is added to the output row's sums as soon as its row is ready. */
+#define MIP_ROW_SLOTS(taps) (2 * (taps))
+
+typedef struct mip_scratch {
+    float *row;    /* one decoded source row: n_src(x) RGBA floats */
+    float *rows;   /* slots × n_dst(x) RGBA floats, horizontally filtered */
+    int *tag;      /* source row held by each slot, −1 for none */
+    double *acc;   /* n_dst(x) RGBA sums of the output row being built */
+    int slots;
+} mip_scratch;
+
+/* Bytes of scratch a pyramid build of a w × h texture holds at most: sized
+ * for level 1, the widest destination (every later level is narrower). */
+size_t ls_mip_scratch_bytes(int w, sample_mipgen f)
+{
+    size_t dst = (size_t)(w > 1 ? w / 2 : 1), slots = MIP_ROW_SLOTS(f == SAMPLE_MIPGEN_BOX ? 3 : MIP_MAX_TAPS);
+    return (size_t)w * 4 * sizeof(float) + slots * (dst * 4 * sizeof(float) + sizeof(int)) +
+           dst * 4 * sizeof(double);
+}
+
+static void scratch_free(mip_scratch *s)
+{
+    free(s->row);
+    free(s->rows);
+    free(s->tag);
+    free(s->acc);
+    memset(s, 0, sizeof *s);
+}
+
+static int scratch_make(mip_scratch *s, int w, sample_mipgen f)
+{
+    size_t dst = (size_t)(w > 1 ? w / 2 : 1);
+    memset(s, 0, sizeof *s);
+    s->slots = MIP_ROW_SLOTS(f == SAMPLE_MIPGEN_BOX ? 3 : MIP_MAX_TAPS);
+    s->row = (float *)malloc((size_t)w * 4 * sizeof(float));
+    s->rows = (float *)malloc((size_t)s->slots * dst * 4 * sizeof(float));
+    s->tag = (int *)malloc((size_t)s->slots * sizeof(int));
+    s->acc = (double *)malloc(dst * 4 * sizeof(double));
+    if (!s->row || !s->rows || !s->tag || !s->acc) {
+        scratch_free(s);
+        return 0;
+    }
+    return 1;
+}
+
+/* Source row y of level k − 1, filtered horizontally, from the cache. Sums
+ * run in double and round once to float. */
+static const float *filtered_row(sample_texture *tex, int k, const mip_axis *ax, mip_scratch *s, int y)
 {
     const struct sample_level *S = &tex->level[k - 1];
+    int slot = y % s->slots, i, t, c;
+    float *out = s->rows + (size_t)slot * (size_t)ax->n_dst * 4;
+    if (s->tag[slot] == y) return out;
+    for (i = 0; i < S->w; ++i) tex_decode(tex, S, i, y, s->row + 4 * (size_t)i);
+    for (i = 0; i < ax->n_dst; ++i) {
+        const int *ix = ax->idx + (size_t)i * ax->taps;
+        const float *w = ax->w + (size_t)i * ax->taps;
+        double acc[4] = {0, 0, 0, 0};
+        for (t = 0; t < ax->taps; ++t)
+            for (c = 0; c < 4; ++c) acc[c] += (double)w[t] * s->row[4 * (size_t)ix[t] + c];
+        for (c = 0; c < 4; ++c) out[4 * (size_t)i + c] = (float)acc[c];
+    }
+    s->tag[slot] = y;
+    return out;
+}
+
+/* Level k from level k − 1 through the two tap tables, one output row at a
+ * time: horizontal pass (filtered_row), then the vertical taps summed in
+ * double in tap order and rounded once, so each pass adds one float
+ * rounding per value. */
+static void resample(sample_texture *tex, int k, const mip_axis *ax, const mip_axis *ay, mip_scratch *s)
+{
     struct sample_level *D = &tex->level[k];
     int i, j, t, c;
-    for (j = 0; j < S->h; ++j) {
-        for (i = 0; i < S->w; ++i) tex_decode(tex, S, i, j, row + 4 * (size_t)i);
-        for (i = 0; i < ax->n_dst; ++i) {
-            const int *ix = ax->idx + (size_t)i * ax->taps;
-            const float *w = ax->w + (size_t)i * ax->taps;
-            double acc[4] = {0, 0, 0, 0};
-            for (t = 0; t < ax->taps; ++t)
-                for (c = 0; c < 4; ++c) acc[c] += (double)w[t] * row[4 * (size_t)ix[t] + c];
-            for (c = 0; c < 4; ++c) tmp[4 * ((size_t)j * ax->n_dst + i) + c] = (float)acc[c];
-        }
-    }
+    for (t = 0; t < s->slots; ++t) s->tag[t] = -1;
     for (j = 0; j < ay->n_dst; ++j) {
         const int *iy = ay->idx + (size_t)j * ay->taps;
         const float *w = ay->w + (size_t)j * ay->taps;
+        for (i = 0; i < 4 * ax->n_dst; ++i) s->acc[i] = 0.0;
+        for (t = 0; t < ay->taps; ++t) {
+            const float *r;
+            if (w[t] == 0.0f) continue; /* unused taps: adding 0·x changes no sum */
+            r = filtered_row(tex, k, ax, s, iy[t]);
+            for (i = 0; i < 4 * ax->n_dst; ++i) s->acc[i] += (double)w[t] * r[i];
+        }
         for (i = 0; i < ax->n_dst; ++i) {
-            double acc[4] = {0, 0, 0, 0};
             float v[4];
-            for (t = 0; t < ay->taps; ++t)
-                for (c = 0; c < 4; ++c) acc[c] += (double)w[t] * tmp[4 * ((size_t)iy[t] * ax->n_dst + i) + c];
-            for (c = 0; c < 4; ++c) v[c] = (float)acc[c];
+            for (c = 0; c < 4; ++c) v[c] = (float)s->acc[4 * (size_t)i + c];
             ls_tex_encode(tex, v, D->data + (size_t)j * D->stride + (size_t)i * tex->texel_bytes);
         }
     }
@@ -243,8 +309,8 @@ static void drop_levels(sample_texture *tex)
 }
 
 /* Allocate and fill level k from level k − 1. */
-static sample_status build_level(sample_texture *tex, int k, const sample_mip_params *p,
-                                 float *row, float *tmp, sample_error *err)
+static sample_status build_level(sample_texture *tex, int k, const sample_mip_params *p, mip_scratch *s,
+                                 sample_error *err)
 {
     const struct sample_level *S = &tex->level[k - 1];
     mip_axis ax, ay;
@@ -259,7 +325,7 @@ static sample_status build_level(sample_texture *tex, int k, const sample_mip_pa
         axis_free(&ay);
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate filter taps for level %d", k);
     }
-    resample(tex, k, &ax, &ay, row, tmp);
+    resample(tex, k, &ax, &ay, s);
     axis_free(&ax);
     axis_free(&ay);
     return SAMPLE_OK;
@@ -269,24 +335,15 @@ sample_status ls_mip_build(sample_texture *tex, const sample_mip_params *p, samp
 {
     int k, full = 1, m = tex->width > tex->height ? tex->width : tex->height;
     sample_status st = SAMPLE_OK;
-    float *row, *tmp;
+    mip_scratch s;
     while (m > 1) { m >>= 1; ++full; }
     if (p->max_levels > 0 && p->max_levels < full) full = p->max_levels;
     if (full < 2) return SAMPLE_OK;
-    /* Scratch sized for the largest pass, the first: one base row, and the
-     * base's height × level 1's width. */
-    row = (float *)malloc((size_t)tex->width * 4 * sizeof(float));
-    tmp = (float *)malloc((size_t)(tex->width > 1 ? tex->width / 2 : 1) * (size_t)tex->height * 4 *
-                          sizeof(float));
-    if (!row || !tmp) {
-        free(row);
-        free(tmp);
+    if (!scratch_make(&s, tex->width, p->filter))
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate mip scratch for a %d x %d texture",
-                           tex->width, tex->height);
-    }
-    for (k = 1; k < full && st == SAMPLE_OK; ++k) st = build_level(tex, k, p, row, tmp, err);
-    free(row);
-    free(tmp);
+                                tex->width, tex->height);
+    for (k = 1; k < full && st == SAMPLE_OK; ++k) st = build_level(tex, k, p, &s, err);
+    scratch_free(&s);
     if (st != SAMPLE_OK) drop_levels(tex);
     return st;
 }

@@ -67,6 +67,14 @@ struct io_exr_tiled {
 
 static const char *const rgba_names[4] = {"R", "G", "B", "A"};
 
+// OpenImageIO's names for OpenEXR's compression methods (its OpenEXR
+// reader's "compression" attribute), in Imf::Compression's order.
+static const char *compression_name(Imf::Compression c)
+{
+    static const char *const names[] = {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"};
+    return (unsigned)c < sizeof names / sizeof names[0] ? names[c] : "";
+}
+
 // Channels exactly a prefix of R, G, B, A, all of one type (half or float):
 // the sets our writer and maketx write for 1–4 channel textures, read by
 // OIIO in the same order. Other sets (layers, Y/RY/BY, extra AOVs) go to
@@ -139,12 +147,22 @@ extern "C" sample_status io_exr_tiled_open(const char *path, const void *data, s
         inf.nlevels = x->part->numLevels();
         inf.alpha_channel = x->nchan == 4 ? 3 : -1;
         inf.native = x->type == Imf::HALF ? IO_HALF : IO_FLOAT;
+        // OpenEXR colour is premultiplied by alpha (the format's rule).
+        inf.straight_alpha = 0;
+        for (int c = 0; c < x->nchan; ++c) std::snprintf(inf.channel_names[c], sizeof inf.channel_names[c], "%s", rgba_names[c]);
+        // What OpenImageIO's OpenEXR reader reports of the same file, so
+        // that sample_io_file_info reads alike on both paths.
+        const Imf::Header &h = x->file->header(0);
+        std::snprintf(inf.format, sizeof inf.format, "openexr");
+        std::snprintf(inf.pixel_type, sizeof inf.pixel_type, "%s", x->type == Imf::HALF ? "half" : "float");
+        std::snprintf(inf.compression, sizeof inf.compression, "%s", compression_name(h.compression()));
+        inf.tile_w = (int)h.tileDescription().xSize;
+        inf.tile_h = (int)h.tileDescription().ySize;
         // The metadata OIIO's reader reports too: a colour space named in
         // the file (oiio:ColorSpace, as sample_io_write_mip_exr writes it;
         // without one OIIO 2.4 says linear, and the rule decides alike)
         // and the wrap modes. A space that needs converting goes to OIIO
         // (io_read.c).
-        const Imf::Header &h = x->file->header(0);
         if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("oiio:ColorSpace"))
             std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", a->value().c_str());
         if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("wrapmodes"))

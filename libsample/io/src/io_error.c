@@ -23,6 +23,8 @@ void sample_io_exr_options_init(sample_io_exr_options *o)
     memset(o, 0, sizeof *o);
     o->tile_w = o->tile_h = 64; /* maketx's default tile size */
     o->wrap_s = o->wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
+    o->type = SAMPLE_IO_TYPE_AUTO;
+    o->alpha_channel = -1;
 }
 
 void io_extension(const char *path, char *ext, size_t ext_size)

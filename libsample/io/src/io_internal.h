@@ -41,6 +41,12 @@ typedef struct io_reader_info {
     io_ptype native;    /* the type the level should be read as */
     char colorspace[64];/* oiio:ColorSpace metadata, "" if none */
     char wrapmodes[64]; /* "wrapmodes" metadata ("periodic,clamp"), "" if none */
+    int straight_alpha; /* 1: colour is not multiplied by alpha (PNG, TGA, some TIFF) */
+    /* What the file says, for sample_io_describe (io_describe.c); the
+     * direct OpenEXR reader leaves them as its layout implies. */
+    char format[32], pixel_type[16], compression[32];
+    int tile_w, tile_h; /* 0: scanlines */
+    char channel_names[SAMPLE_IO_NAMED_CHANNELS][32];
 } io_reader_info;
 
 /* io_wrapmodes.c: the words of the "wrapmodes" attribute (maketx, OIIO's
@@ -60,6 +66,33 @@ sample_status io_reader_level_size(io_reader *r, int k, int *w, int *h, sample_e
 sample_status io_reader_read(io_reader *r, int k, io_ptype type, int nchan, void *dst,
                              sample_error *err);
 void io_reader_close(io_reader *r); /* accepts NULL */
+
+/* ---- The reader's decisions (io_read.c) ---------------------------------- */
+
+typedef struct io_colour io_colour;
+
+/* What the reader decided for one file. */
+typedef struct io_plan {
+    int nchan;              /* channels kept (≤ 4) */
+    io_ptype read_as;       /* type asked of the reader */
+    sample_format format;   /* texture storage */
+    int convert;            /* 1: OCIO conversion to scene_linear */
+    int premultiply;        /* 1: colour × alpha after the conversion */
+    int alpha;              /* alpha's index among the kept channels, −1 */
+    const char *colorspace; /* resolved source space */
+    int colorspace_from_rule; /* 1: chosen by the rule (no usable name) */
+    int colorspace_unknown;   /* 1: the file names a space the config does
+                                 not know (OIIO's generic names aside) */
+} io_plan;
+
+sample_status io_read_plan(const io_colour *col, const io_reader_info *inf, const sample_io_options *o, io_plan *p,
+                           sample_error *err);
+/* io_describe.c: what the file says (inf) and what the plan made of it,
+ * into info; the level sizes are left 0 and texture_file_levels 1. */
+void io_file_info_fill(const io_reader_info *inf, const io_plan *p, sample_io_file_info *info);
+/* The header pre-flights, each a no-op on other formats, on a file (path)
+ * or bytes. */
+sample_status io_preflight(const char *path, const void *data, size_t size, sample_error *err);
 
 /* ---- Direct OpenEXR reader (exr_read.cpp) -------------------------------- */
 
@@ -84,8 +117,6 @@ unsigned long io_exr_direct_reads(void);
 
 /* ---- Colour (ocio.cpp) --------------------------------------------------- */
 
-typedef struct io_colour io_colour;
-
 /* Load the config: `path`, else $OCIO, else the shipped config. */
 sample_status io_colour_open(const char *path, io_colour **out, sample_error *err);
 void io_colour_close(io_colour *c); /* accepts NULL */
@@ -105,6 +136,9 @@ typedef struct io_colour_label {
     float chromaticities[8];
 } io_colour_label;
 void io_colour_label_get(const io_colour *c, const char *name, io_colour_label *out);
+/* io_read.c: the config's name for sRGB (the first of the names common
+ * configs use that it knows), NULL if it has none. */
+const char *io_colour_srgb_name(const io_colour *col);
 /* Is the space data (no conversion) or the scene_linear space itself? */
 int io_colour_is_linear(const io_colour *c, const char *name);
 /* Does src → scene_linear equal the sRGB EOTF on every 8-bit code? Then
@@ -128,14 +162,48 @@ sample_status io_oiio_write(const char *final_path, const char *tmp_path, const 
 
 /* The file carries the label's name (oiio:ColorSpace) and chromaticities. */
 sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
-                               const sample_io_exr_options *o, const io_colour_label *label, sample_error *err);
+                               const sample_io_exr_options *o, const io_colour_label *label, size_t *overflows,
+                               sample_error *err);
 
-/* Make a new, empty, uniquely named file beside `path` (same directory);
- * tmp receives its name. */
-sample_status io_tmp_create(const char *path, char *tmp, size_t tmp_size, sample_error *err);
-/* st == SAMPLE_OK: rename tmp over path; otherwise (or if the rename fails)
- * remove tmp. Returns the final status. */
-sample_status io_tmp_finish(sample_status st, const char *tmp, const char *path, sample_error *err);
+/* A temporary file beside a target (io_tmp.c): unnamed (O_TMPFILE) where
+ * the file system allows, else named PATH.tmpPID-N and removed on SIGINT,
+ * SIGTERM or SIGHUP. Writers write to write_path. */
+#define IO_TMP_NAME_MAX 4096
+typedef struct io_tmp {
+    char write_path[IO_TMP_NAME_MAX]; /* what writers open: /proc/self/fd/N or name */
+    char name[IO_TMP_NAME_MAX];       /* the named temporary, once there is one */
+    int fd;                           /* the O_TMPFILE descriptor, −1 when named */
+    int slot;                         /* its entry in the signal handler's table, −1 */
+} io_tmp;
+sample_status io_tmp_create(const char *path, io_tmp *t, sample_error *err);
+/* st == SAMPLE_OK: name the file and rename it over path; otherwise (or if
+ * that fails) remove it. Returns the final status. */
+sample_status io_tmp_finish(sample_status st, io_tmp *t, const char *path, sample_error *err);
+/* Tests: 0 forces the named protocol (to test the signal handler where
+ * O_TMPFILE works); 1 (the default) allows O_TMPFILE. */
+void io_tmp_set_unnamed(int on);
+
+/* In place: n floats → `type` (U8, U16: clamped to [0, 1], rounded; HALF;
+ * FLOAT unchanged), packed at the start of buf (each output element is no
+ * wider than the float it replaces). Returns how many finite values became
+ * ±inf in half (±65504 instead when half_clamp). */
+size_t io_quantize(float *buf, size_t n, sample_io_type type, int half_clamp);
+
+/* io_mip_write.c: level k of tex as packed pixels of `type`, malloc'ed in
+ * *out: half/float linear, U8/U16 encoded to `cs` through col; half
+ * overflows are added to *overflows. */
+sample_status io_level_pixels(const sample_texture *tex, int k, sample_io_type type, const io_colour *col,
+                              const char *cs, int half_clamp, size_t *overflows, void **out, sample_error *err);
+/* oiio_write.cpp: every level of tex as a tiled TIFF (maketx's .tx layout),
+ * its texels in colour space `cs`, labelled with `label` (oiio:ColorSpace). */
+sample_status io_oiio_write_mip(const char *final_path, const char *tmp_path, const sample_texture *tex,
+                                const sample_io_exr_options *o, sample_io_type type, const io_colour *col,
+                                const char *cs, const io_colour_label *label, size_t *overflows,
+                                sample_error *err);
+/* Which mip-mapped writer path's extension names (*tiff: 1 TIFF, 0
+ * OpenEXR), or SAMPLE_E_INVALID_ARGUMENT where it names a format without
+ * levels or one without `type`. */
+sample_status io_mip_target(const char *path, sample_io_type type, int *tiff, sample_error *err);
 
 /* Lower-case extension of a path without the dot ("" if none), into ext. */
 void io_extension(const char *path, char *ext, size_t ext_size);
@@ -150,6 +218,9 @@ typedef struct io_src {
 int io_src_byte(io_src *s, int *c);
 int io_src_skip(io_src *s, uint64_t n);
 int io_src_file(io_src *s, FILE *f); /* 0 if its size cannot be found */
+int io_src_seek(io_src *s, uint64_t pos); /* 0 past the end */
+/* An unsigned integer of nbytes (1 to 4) bytes; 0 at the end. */
+int io_src_uint(io_src *s, int nbytes, int big_endian, uint32_t *v);
 void io_src_memory(io_src *s, const void *data, size_t size);
 /* A pre-flight over the file at path (or, with path NULL, the buffer):
  * nothing unless its first nmagic bytes are the format's (is_format),
@@ -170,6 +241,19 @@ sample_status io_exr_guard_file(const char *path, sample_error *err);
  * past it); other files pass through untouched. */
 sample_status io_jpeg_guard_memory(const void *data, size_t size, sample_error *err);
 sample_status io_jpeg_guard_file(const char *path, sample_error *err);
+
+/* tiff_guard.c: reject TIFF files whose strip or tile tables are shorter
+ * than the image, point past the end of the file, or (uncompressed) hold
+ * fewer bytes than the image needs: OpenImageIO would allocate the whole
+ * image and fill what is missing with zeros. Other files pass untouched. */
+sample_status io_tiff_guard_memory(const void *data, size_t size, sample_error *err);
+sample_status io_tiff_guard_file(const char *path, sample_error *err);
+
+/* tga_guard.c: reject Targa files whose RLE packets run past the image or
+ * whose colour-map indices lie outside the map: OpenImageIO drops the rest
+ * of the packet, or reads whatever is there, without a word. */
+sample_status io_tga_guard_memory(const void *data, size_t size, sample_error *err);
+sample_status io_tga_guard_file(const char *path, sample_error *err);
 
 #ifdef __cplusplus
 }

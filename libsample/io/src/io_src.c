@@ -1,5 +1,6 @@
 /*
- * The byte source the header pre-flights read (exr_guard.c, jpeg_guard.c):
+ * The byte source the header pre-flights read (exr_guard.c, jpeg_guard.c,
+ * tiff_guard.c, tga_guard.c):
  * a memory buffer or an open file, with its total size, read one byte at a
  * time and never past the end.
  */
@@ -26,6 +27,25 @@ int io_src_skip(io_src *s, uint64_t n)
     return s->mem ? 1 : fseek(s->f, (long)s->pos, SEEK_SET) == 0;
 }
 
+int io_src_seek(io_src *s, uint64_t pos)
+{
+    if (pos > s->size) return 0;
+    s->pos = pos;
+    return s->mem ? 1 : fseek(s->f, (long)pos, SEEK_SET) == 0;
+}
+
+int io_src_uint(io_src *s, int nbytes, int big_endian, uint32_t *v)
+{
+    int k, c;
+    *v = 0;
+    for (k = 0; k < nbytes; ++k) {
+        if (!io_src_byte(s, &c)) return 0;
+        if (big_endian) *v = *v << 8 | (uint32_t)c;
+        else *v |= (uint32_t)c << (8 * k);
+    }
+    return 1;
+}
+
 int io_src_file(io_src *s, FILE *f)
 {
     long end;
@@ -49,7 +69,7 @@ sample_status io_src_preflight(const char *path, const void *data, size_t size, 
                                sample_error *err)
 {
     io_src s;
-    unsigned char magic[16];
+    unsigned char magic[32];
     sample_status st = SAMPLE_OK;
     FILE *f;
     if (!path) {

@@ -33,12 +33,10 @@ static double unorm(float v, double maxcode)
     return floor(x * maxcode + 0.5);
 }
 
-/* In place: n floats → the file's type, packed at the start of buf (each
- * output element is no wider than the float it replaces). */
-static void quantize(float *buf, size_t n, sample_io_type type)
+size_t io_quantize(float *buf, size_t n, sample_io_type type, int half_clamp)
 {
     unsigned char *b = (unsigned char *)buf;
-    size_t i;
+    size_t i, overflows = 0;
     for (i = 0; i < n; ++i) {
         float f;
         memcpy(&f, b + 4 * i, 4);
@@ -49,15 +47,21 @@ static void quantize(float *buf, size_t n, sample_io_type type)
             memcpy(b + 2 * i, &v, 2);
         } else if (type == SAMPLE_IO_TYPE_HALF) {
             uint16_t v = sample_float_to_half(f);
+            /* Rounded to ±inf from a finite value: beyond half's largest,
+             * 65504 (IEEE 754 binary16). */
+            if ((v & 0x7fffu) == 0x7c00u && isfinite(f)) {
+                ++overflows;
+                if (half_clamp) v = (uint16_t)((v & 0x8000u) | 0x7bffu);
+            }
             memcpy(b + 2 * i, &v, 2);
         }
     }
+    return overflows;
 }
 
 sample_status sample_io_write_image_ex(const char *path, const float *rgba, int w, int h, int channels_to_write,
                                        const sample_io_write_options *o, sample_error *err)
 {
-    static const char *const srgb_names[] = {"srgb", "sRGB", "srgb_texture", "sRGB - Texture"};
     sample_io_write_options defaults;
     sample_io_type type;
     const char *cs;
@@ -65,7 +69,7 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     io_colour_label label;
     float *buf = NULL;
     size_t n, i;
-    char tmp[4096];
+    io_tmp tmp;
     sample_status st = check_size(path, w, h, err);
     int c;
     if (st != SAMPLE_OK) return st;
@@ -83,8 +87,7 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
     if (st != SAMPLE_OK) return st;
     cs = o->colorspace;
     if (!cs && (type == SAMPLE_IO_TYPE_HALF || type == SAMPLE_IO_TYPE_FLOAT)) cs = "scene_linear";
-    for (i = 0; !cs && i < sizeof srgb_names / sizeof srgb_names[0]; ++i)
-        if (io_colour_known(col, srgb_names[i])) cs = srgb_names[i];
+    if (!cs) cs = io_colour_srgb_name(col);
     st = cs ? io_colour_require(col, cs, err)
             : sample_error_set(err, SAMPLE_E_COLOR, "the OCIO config has no sRGB colour space for 8/16-bit files");
     if (st != SAMPLE_OK) goto done;
@@ -98,12 +101,12 @@ sample_status sample_io_write_image_ex(const char *path, const float *rgba, int 
         for (c = 0; c < channels_to_write; ++c) buf[i * (size_t)channels_to_write + (size_t)c] = rgba[4 * i + (size_t)c];
     st = io_colour_apply(col, cs, 0, buf, n, channels_to_write, err);
     if (st != SAMPLE_OK) goto done;
-    quantize(buf, n * (size_t)channels_to_write, type);
-    st = io_tmp_create(path, tmp, sizeof tmp, err);
+    io_quantize(buf, n * (size_t)channels_to_write, type, 0);
+    st = io_tmp_create(path, &tmp, err);
     if (st != SAMPLE_OK) goto done;
     /* sample_io_type U8 … FLOAT are io_ptype IO_U8 … IO_FLOAT plus one. */
-    st = io_oiio_write(path, tmp, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, &label, err);
-    st = io_tmp_finish(st, tmp, path, err);
+    st = io_oiio_write(path, tmp.write_path, buf, (io_ptype)(type - 1), w, h, channels_to_write, NULL, &label, err);
+    st = io_tmp_finish(st, &tmp, path, err);
 done:
     free(buf);
     io_colour_close(col);
@@ -122,7 +125,7 @@ sample_status sample_io_write_image(const char *path, const float *rgba, int w, 
 sample_status sample_io_write_channels(const char *path, const float *data, int w, int h, int nchannels,
                                        const char *const *names, sample_error *err)
 {
-    char tmp[4096];
+    io_tmp tmp;
     int a, b;
     sample_status st = check_size(path, w, h, err);
     if (st != SAMPLE_OK) return st;
@@ -137,36 +140,8 @@ sample_status sample_io_write_channels(const char *path, const float *data, int 
             if (strcmp(names[a], names[b]) == 0)
                 return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "channel name '%s' is used twice", names[a]);
     }
-    st = io_tmp_create(path, tmp, sizeof tmp, err);
+    st = io_tmp_create(path, &tmp, err);
     if (st != SAMPLE_OK) return st;
-    st = io_oiio_write(path, tmp, data, IO_FLOAT, w, h, nchannels, names, NULL, err);
-    return io_tmp_finish(st, tmp, path, err);
-}
-
-sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
-                                      sample_error *err)
-{
-    sample_io_exr_options defaults;
-    char tmp[4096];
-    io_colour *col = NULL;
-    io_colour_label label;
-    sample_status st;
-    if (!path || !*path || !tex)
-        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_write_mip_exr: no path or no texture");
-    if (!o) {
-        sample_io_exr_options_init(&defaults);
-        o = &defaults;
-    }
-    if (o->tile_w < 1 || o->tile_h < 1 || o->tile_w > 4096 || o->tile_h > 4096)
-        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "tile size %d x %d: each side must be 1 to 4096", o->tile_w,
-                       o->tile_h);
-    /* The texels are in the config's scene_linear space: say which. */
-    st = io_colour_open(o->ocio_config, &col, err);
-    if (st != SAMPLE_OK) return st;
-    io_colour_label_get(col, "scene_linear", &label);
-    io_colour_close(col);
-    st = io_tmp_create(path, tmp, sizeof tmp, err);
-    if (st != SAMPLE_OK) return st;
-    st = io_exr_write_mip(tmp, tex, o, &label, err);
-    return io_tmp_finish(st, tmp, path, err);
+    st = io_oiio_write(path, tmp.write_path, data, IO_FLOAT, w, h, nchannels, names, NULL, err);
+    return io_tmp_finish(st, &tmp, path, err);
 }

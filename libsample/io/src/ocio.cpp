@@ -89,6 +89,12 @@ extern "C" sample_status io_colour_open(const char *path, io_colour **out, sampl
         const char *env = std::getenv("OCIO");
         p = (env && *env) ? env : shipped_config();
     }
+    // A FIFO or device named as the config would block or never end
+    // (io_regular.c); it is a config problem, so SAMPLE_E_COLOR.
+    if (sample_io_check_regular_file(p.c_str(), "OCIO config", err) != SAMPLE_OK) {
+        if (err) err->status = SAMPLE_E_COLOR;
+        return SAMPLE_E_COLOR;
+    }
     try {
         auto *c = new io_colour;
         try {

@@ -122,8 +122,18 @@ extern "C" sample_status io_reader_open(const char *path, const void *data, size
         inf.native = native_type(spec.format);
         std::string cs = spec.get_string_attribute("oiio:ColorSpace");
         std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", cs.c_str());
-        std::string wrap = spec.get_string_attribute("wrapmodes");
-        std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", wrap.c_str());
+        // With the oiio:UnassociatedAlpha hint (open_input) the readers of
+        // formats that store straight alpha leave it so and say so here.
+        inf.straight_alpha = spec.alpha_channel >= 0 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
+        std::snprintf(inf.format, sizeof inf.format, "%s", r->in->format_name());
+        std::snprintf(inf.pixel_type, sizeof inf.pixel_type, "%s", spec.format.c_str());
+        std::snprintf(inf.compression, sizeof inf.compression, "%s",
+                      spec.get_string_attribute("compression").c_str());
+        std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", spec.get_string_attribute("wrapmodes").c_str());
+        inf.tile_w = spec.tile_width;
+        inf.tile_h = spec.tile_height;
+        for (int c = 0; c < spec.nchannels && c < SAMPLE_IO_NAMED_CHANNELS; ++c)
+            std::snprintf(inf.channel_names[c], sizeof inf.channel_names[c], "%s", spec.channel_name(c).c_str());
         if (spec.depth != 1)
             return sample_error_set(err, SAMPLE_E_UNSUPPORTED, "volume images (depth %d) are not textures", spec.depth);
         // Mip levels of subimage 0, as maketx and `texsample mip` store them.
@@ -158,7 +168,13 @@ extern "C" sample_status io_reader_read(io_reader *r, int k, io_ptype type, int 
                                         sample_error *err)
 {
     try {
-        if (!r->in->read_image(0, k, 0, nchan, oiio_type(type), dst)) {
+        // Only a false return is a failure: OIIO 2.4's TIFF reader leaves
+        // a pending error holding just the file name after reading a valid
+        // maketx .tx, so has_error() after success says nothing. What the
+        // readers make up without failing is caught before they run
+        // (tiff_guard.c, tga_guard.c).
+        bool ok = r->in->read_image(0, k, 0, nchan, oiio_type(type), dst);
+        if (!ok) {
             std::string msg = r->in->geterror();
             return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read pixels of level %d: %s", k,
                            msg.empty() ? "unknown error" : msg.c_str());

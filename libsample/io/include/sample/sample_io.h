@@ -16,8 +16,10 @@
  *   row 0, t = 0 (as OpenImageIO's TextureSystem). Storage keeps the file's
  *   precision: 8-bit stays 8-bit (SRGB8 when the colour space decodes like
  *   sRGB, UNORM8 when it is the working space or data), half stays half,
- *   16-bit integers and float become float. At most 4 channels are kept
- *   (the first four). Files that hold mip levels (maketx .tx/.exr, our
+ *   16-bit integers and float become float (options can ask for float and
+ *   for premultiplied alpha). At most 4 channels are kept (the first four).
+ *   Only regular files are read, and headers claiming more than the file
+ *   holds are refused before pixels are allocated. Files that hold mip levels (maketx .tx/.exr, our
  *   `texsample mip`) give their levels as stored, unless use_file_levels is
  *   0; otherwise `mip` builds the pyramid (NULL: base level only).
  *
@@ -34,11 +36,17 @@
  * 3. WRITING
  *
  *   Every writer writes a temporary file beside the target and renames it
- *   into place, so a failed write leaves no file behind.
+ *   into place, so a failed write leaves no file behind. The temporary has
+ *   no name while it is written where the file system allows (Linux
+ *   O_TMPFILE), so even SIGKILL leaves nothing; elsewhere a handler for
+ *   SIGINT, SIGTERM and SIGHUP, installed on the first write for those of
+ *   the three still at SIG_DFL, removes it before the process dies.
  *
  * 4. THREADS
  *
- *   No global state; every function may be called from several threads.
+ *   Every function may be called from several threads. The only
+ *   process-wide state is that signal handler and its table of named
+ *   temporaries.
  */
 #ifndef SAMPLE_SAMPLE_IO_H
 #define SAMPLE_SAMPLE_IO_H
@@ -64,22 +72,9 @@ extern "C" {
 
 /* ---- Reading ------------------------------------------------------------ */
 
-/* What a file says about itself, and what the reader made of it: filled
- * when sample_io_options.file_info points here. */
-typedef struct sample_io_file_info {
-    /* The file's colour-space metadata (oiio:ColorSpace), "" if none. */
-    char colorspace[64];
-    /* 1: the file names a colour space the OCIO config does not know, and
-     * colorspace_used was chosen by the rule instead (section 2). */
-    int colorspace_unknown;
-    /* The space the texels were converted from (an OCIO name or role). */
-    char colorspace_used[64];
-    /* 1: the file stores wrap modes ("wrapmodes", as maketx, OIIO's
-     * TextureSystem and sample_io_write_mip_exr write them: black, clamp,
-     * periodic, mirror), in wrap_s and wrap_t. */
-    int has_wrap;
-    sample_wrap wrap_s, wrap_t;
-} sample_io_file_info;
+/* What a file holds and what the reader makes of it (below, "Describing a
+ * file"). */
+typedef struct sample_io_file_info sample_io_file_info;
 
 typedef struct sample_io_options {
     /* Source colour space (an OCIO name, role or alias). NULL: from the file
@@ -90,11 +85,28 @@ typedef struct sample_io_options {
     /* 1 (default): take mip levels stored in the file; 0: read the base
      * level only and build the pyramid from `mip`. */
     int use_file_levels;
-    /* Largest decoded size (bytes, all levels, as float) the reader will
-     * allocate; a file claiming more gives SAMPLE_E_TOO_LARGE before any
-     * pixel is read. 0 means the default, SAMPLE_IO_DEFAULT_MAX_BYTES. */
+    /* Largest decoded size (bytes, as float) of every level the texture
+     * will hold: the file's, or the base and the levels `mip` builds from
+     * it. A file claiming more gives SAMPLE_E_TOO_LARGE before any pixel
+     * is read. 0 means the default, SAMPLE_IO_DEFAULT_MAX_BYTES. */
     size_t max_bytes;
-    /* NULL, or filled with what the file says (above). */
+    /* 1: store every level as float (SAMPLE_FORMAT_F32) whatever the
+     * file's precision, so that a pyramid built from it is built in float
+     * (what `texsample mip` does). 0 (default): keep the file's precision
+     * (section 1); a pyramid is then built in the texture's format, as
+     * glGenerateMipmap builds it (an SRGB8 level from the SRGB8 level
+     * above). */
+    int float_storage;
+    /* 1: when the file stores straight alpha (PNG, Targa, TIFF marked
+     * unassociated), multiply colour by alpha once it is linear, so the
+     * texture holds premultiplied colour as OpenEXR defines it and a
+     * pyramid built from it is filtered premultiplied (no colour bleeds
+     * from transparent texels). The texture is then half or float. 0
+     * (default): alpha as stored, never applied. */
+    int premultiply;
+    /* NULL, or filled by sample_io_read_texture / _memory with what the
+     * file says and what was made of it, as sample_io_describe fills it
+     * (below). */
     sample_io_file_info *file_info;
     /* 1: a pyramid built here (the file holds no levels) takes its edges
      * from the file's wrap modes where it stores them, rather than from
@@ -120,6 +132,60 @@ SAMPLE_IO_API sample_status sample_io_read_texture(const char *path, const sampl
 SAMPLE_IO_API sample_status sample_io_read_memory(const void *data, size_t size, const char *format_hint,
                                     const sample_io_options *o, const sample_mip_params *mip,
                                     sample_texture **out, sample_error *err);
+
+/* Is `path` a regular file that can be opened for reading? SAMPLE_OK, or
+ * SAMPLE_E_IO with a message naming `what` ("image", "scene", "OCIO
+ * config"; NULL: "file"), the path and what it is instead (a directory, a
+ * FIFO, a device). It never blocks: a FIFO is opened with O_NONBLOCK and
+ * judged by fstat. Every reader of libsample_io calls it before any library
+ * sees the path; programs call it for the other files they read. */
+SAMPLE_IO_API sample_status sample_io_check_regular_file(const char *path, const char *what, sample_error *err);
+
+/* ---- Describing a file -------------------------------------------------- */
+
+/* Channel names sample_io_file_info keeps (a file may have more channels). */
+#define SAMPLE_IO_NAMED_CHANNELS 16
+
+struct sample_io_file_info {
+    /* What the file holds (subimage 0), as OpenImageIO reports it; strings
+     * are "" where the file says nothing. */
+    char format[32];     /* reader: "png", "openexr", "tiff", ... */
+    char pixel_type[16]; /* "uint8", "uint16", "half", "float", ... */
+    int width, height;   /* level 0, data window */
+    int channels;        /* every channel of the file */
+    char channel_names[SAMPLE_IO_NAMED_CHANNELS][32];
+    int alpha_channel;   /* −1: none */
+    int straight_alpha;  /* 1: colour is not multiplied by alpha */
+    int levels;          /* mip levels stored (1: none) */
+    int level_width[SAMPLE_MAX_LEVELS], level_height[SAMPLE_MAX_LEVELS];
+    int tile_width, tile_height; /* 0: scanlines */
+    char compression[32];
+    /* The "wrapmodes" attribute as stored (maketx, OIIO's TextureSystem and
+     * sample_io_write_mip write it: black, clamp, periodic, mirror), and
+     * has_wrap = 1 where it names modes libsample has, in wrap_s, wrap_t. */
+    char wrapmodes[64];
+    int has_wrap;
+    sample_wrap wrap_s, wrap_t;
+    char colorspace[64]; /* the file's oiio:ColorSpace */
+    /* What sample_io_read_texture makes of it with the same options. */
+    char colorspace_used[64]; /* the space decoded from (an OCIO name or role) */
+    int colorspace_from_rule; /* 1: no usable name (none, or one the config
+                                 does not know): section 2's rule chose */
+    int colorspace_unknown;   /* 1: the file names a space the config does
+                                 not know (OpenImageIO's generic "sRGB",
+                                 "Linear", which the rule reads alike, aside) */
+    sample_format texture_format;
+    int texture_channels;
+    int texture_file_levels;  /* levels taken from the file (1: built) */
+};
+
+/* Describe an image file from its headers, without reading its pixels:
+ * the memory used is that of the headers (doc/io-and-colour.md,
+ * "Describing"). The same checks as sample_io_read_texture run first (a
+ * regular file, the header pre-flights), so a file refused there is
+ * refused here. `o` may be NULL. */
+SAMPLE_IO_API sample_status sample_io_describe(const char *path, const sample_io_options *o,
+                                               sample_io_file_info *info, sample_error *err);
 
 /* ---- Writing pictures --------------------------------------------------- */
 
@@ -159,18 +225,41 @@ SAMPLE_IO_API sample_status sample_io_write_channels(const char *path, const flo
                                        int nchannels, const char *const *names,
                                        sample_error *err);
 
-/* ---- Tiled mip-mapped OpenEXR ------------------------------------------- */
+/* ---- Tiled mip-mapped files -------------------------------------------- */
 
+/* Options of the mip-mapped writers (the name is historical: OpenEXR was
+ * the first). */
 typedef struct sample_io_exr_options {
     int tile_w, tile_h;         /* default 64 × 64 */
-    int use_float;              /* 0 (default): half; 1: float */
+    int use_float;              /* type AUTO: 0 (default) half, 1 float */
     sample_wrap wrap_s, wrap_t; /* stored as the "wrapmodes" attribute; default CLAMP_TO_EDGE */
     /* Called after each tile row is written (may be NULL). */
     void (*progress)(void *user, size_t done, size_t total);
     void *progress_user;
-    /* The OCIO config whose scene_linear space the texels are in, named in
-     * the file (oiio:ColorSpace, chromaticities where known). NULL: $OCIO
-     * if set, else the shipped config. */
+    /* AUTO (default): half or float by use_float. HALF and FLOAT store the
+     * texture's linear values; U8 and U16 (TIFF only: OpenEXR has no such
+     * type) store them sRGB-encoded, as maketx's `-d uint8` does, clamped
+     * to [0, 1] and rounded to nearest. */
+    sample_io_type type;
+    /* Names of the texture's channels (as many as it has); NULL: R, G, B, A.
+     * A grey + alpha texture read from a PNG is Y, A. */
+    const char *const *channel_names;
+    /* Index of the alpha channel, −1 (default) for none. */
+    int alpha_channel;
+    /* 1: the colour channels are premultiplied by alpha (OpenEXR's rule,
+     * and what sample_io_options.premultiply reads). Recorded in the file:
+     * the "libsample:alpha" attribute in OpenEXR, the ExtraSamples tag
+     * (associated / unassociated alpha) in TIFF. */
+    int premultiplied;
+    /* Half output: a finite value beyond ±65504 becomes ±inf (0, default)
+     * or ±65504 (1). Where half_overflows is not NULL it receives how many
+     * values were that large, so a caller can say so. */
+    int half_clamp;
+    size_t *half_overflows;
+    /* The OCIO config whose scene_linear space the texels are in: named in
+     * the file (oiio:ColorSpace, chromaticities where known), and the
+     * source of U8 / U16's sRGB encoding. NULL: $OCIO if set, else the
+     * shipped config (as in sample_io_options). */
     const char *ocio_config;
 } sample_io_exr_options;
 
@@ -179,9 +268,32 @@ SAMPLE_IO_API void sample_io_exr_options_init(sample_io_exr_options *o);
 /* Write every level of `tex` (decoded to linear values) as a tiled OpenEXR:
  * MIPMAP_LEVELS with ROUND_DOWN sizes when the texture has its full chain,
  * ONE_LEVEL when it has only its base; a partial chain is refused.
- * Channels are R, G, B, A (as many as the texture has). `o` may be NULL. */
+ * `o` may be NULL. */
 SAMPLE_IO_API sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex,
                                       const sample_io_exr_options *o, sample_error *err);
+
+/* The same, in the format the path's extension names: .exr as
+ * sample_io_write_mip_exr; .tx, .tif, .tiff a tiled TIFF holding every
+ * level (maketx's .tx layout, read back by OpenImageIO and by this
+ * library). Any other extension, or U8/U16 for OpenEXR, is
+ * SAMPLE_E_INVALID_ARGUMENT: such formats hold no mip levels. */
+SAMPLE_IO_API sample_status sample_io_write_mip(const char *path, const sample_texture *tex,
+                                  const sample_io_exr_options *o, sample_error *err);
+
+/* An image file in, a tiled mip-mapped file out (what maketx does and
+ * `texsample mip` calls): the input is read in float (ro's colour space
+ * and config; its own levels ignored), straight alpha multiplied into the
+ * colour, every level built from the base with `mip`'s kernel and wrap
+ * modes (NULL: box, clamp to edge), and the levels written by
+ * sample_io_write_mip with wo's tiles, type and half overflow handling
+ * (NULL: defaults), the input's channel names, its alpha channel marked
+ * premultiplied, and the wrap modes as `wrapmodes`. An output whose
+ * extension names a format without levels (or without wo's type) is
+ * SAMPLE_E_INVALID_ARGUMENT before the input is read; an input with more
+ * than 4 channels is SAMPLE_E_UNSUPPORTED. Nothing is written then. */
+SAMPLE_IO_API sample_status sample_io_make_mip(const char *in, const char *out, const sample_io_options *ro,
+                                               const sample_mip_params *mip, const sample_io_exr_options *wo,
+                                               sample_error *err);
 
 #ifdef __cplusplus
 }
