@@ -27,6 +27,15 @@ for want in 'fuzzer(-no-link)?' address undefined; do
     fail=1
   fi
 done
+# Leaving out single UBSan checks is allowed (the fast path leaves out the
+# pointer checks, libsample/CMakeLists.txt); turning off a whole sanitizer
+# is not.
+off=$(printf '%s\n' "$cmds" | grep -E -- "-fno-sanitize=([a-z-]+,)*(fuzzer(-no-link)?|address|undefined)(,|[ \"])")
+if [ -n "$off" ]; then
+  echo "fuzz_flags: a sanitizer turned off again:" >&2
+  printf '%s\n' "$off" | sed 's/.* -o \([^ ]*\) .*/  \1/' >&2
+  fail=1
+fi
 missing=$(printf '%s\n' "$cmds" | grep -Fv -- "-fno-sanitize-recover=undefined")
 if [ -n "$missing" ]; then
   echo "fuzz_flags: compiled without -fno-sanitize-recover=undefined:" >&2
