@@ -2,7 +2,8 @@
 # sample_add_fuzzer(NAME SOURCE CORPUS_DIR [LIBS...]) builds tests/fuzz/SOURCE
 # and registers a bounded ctest run (label "fuzz") that starts from the
 # committed corpus and writes new inputs only into the build tree.
-# Longer runs: build-fuzz/tests/NAME -max_total_time=3600 DIR tests/fuzz/CORPUS_DIR
+# Longer runs, and merging what they find into the committed corpus
+# (-merge=1): doc/testing.md, "Longer fuzzing".
 set(SAMPLE_FUZZ_SECONDS 25 CACHE STRING "Seconds each fuzzer runs in ctest")
 if(SAMPLE_FUZZ AND NOT TARGET fuzzers)
   add_custom_target(fuzzers) # `cmake --build B --target fuzzers` builds them all
