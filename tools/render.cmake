@@ -20,8 +20,3 @@ get_target_property(_ts_sources texsample SOURCES)
 list(REMOVE_ITEM _ts_sources ${TEXSAMPLE_RENDER_SOURCES})
 set_property(TARGET texsample PROPERTY SOURCES ${_ts_sources})
 target_link_libraries(texsample PRIVATE texsample_render)
-# Under -DSAMPLE_FUZZ=ON, instrument the renderer for libFuzzer's coverage
-# feedback (tests/fuzz/fuzz_scene.c links the runtime).
-if(SAMPLE_FUZZ)
-  target_compile_options(texsample_render PRIVATE -fsanitize=fuzzer-no-link,address,undefined)
-endif()
