@@ -95,6 +95,12 @@ static void test_types_and_duplicates(void)
     FAILS("{\"materials\":[{\"name\":\"m\"},{\"name\":\"x\"},{\"name\":\"m\"}]," SPHERE "}",
           "materials[2]", "already used by materials[0]");
     FAILS("{\"materials\":[{\"name\":\"\"}]," SPHERE "}", "'name' must not be empty");
+    /* A Fourier texture's bake is charged per term: 2048² texels × 2² samples
+     * × 64 terms = 2^30 evaluations, over the 2^28 budget (at 1 term a
+     * sample it would be 2^24, under it). */
+    FAILS("{\"textures\":[{\"name\":\"f\",\"type\":\"fourier\",\"size\":2048,\"samples\":2,"
+          "\"terms\":64}]," SPHERE "}",
+          "exceed the limits");
 }
 
 static void test_syntax(void)

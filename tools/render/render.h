@@ -72,8 +72,10 @@ int render_scene_parse(const char *json, size_t len, int width, int height,
 typedef struct render_parse_options {
     const char *base_dir; /* image "file"s are relative to it; NULL: working directory */
     int images;           /* 1 (default): load image textures; 0: refuse them */
-    /* Procedural evaluations when baking: Σ size²·samples² over textures,
-     * plus 4 per environment-map texel. Default RENDER_MAX_BAKE_WORK. */
+    /* Procedural evaluations when baking: Σ size²·samples² over textures
+     * (times the terms of a Fourier texture, each a cosine as costly as a
+     * whole sample of the others), plus 4 per environment-map texel.
+     * Default RENDER_MAX_BAKE_WORK. */
     double max_bake_work;
     /* Base-level texels of all textures and maps together (image textures
      * included). Default RENDER_MAX_TEXELS. */

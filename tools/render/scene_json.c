@@ -390,8 +390,10 @@ static int parse_texture(jctx *c, uint32_t o)
         kind == RN_TEX_FOURIER)
         t.freq = floor(t.freq); /* integer periods: seamless tiling */
     {
+        /* A Fourier texture's sample sums `terms` cosines (proc.c). */
         double n2 = (double)t.bake_size * t.bake_size, m2 = (double)t.bake_samples * t.bake_samples;
-        if (!budget(c, o, "texture", n2, n2 * m2)) return 0;
+        double cost = kind == RN_TEX_FOURIER ? (t.nfourier > 0 ? t.nfourier : 24) : 1;
+        if (!budget(c, o, "texture", n2, n2 * m2 * cost)) return 0;
     }
     return scene_add_texture(c->sc, &t) ? 1 : jfail(c, o, "out of memory");
 }
