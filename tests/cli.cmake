@@ -35,7 +35,7 @@ if(TARGET texsample AND TARGET texsample_freq)
   target_link_libraries(filter_registry PRIVATE texsample_freq)
   target_include_directories(filter_registry PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_compile_options(filter_registry PRIVATE ${SAMPLE_WARNINGS})
-  add_test(NAME filter_registry COMMAND filter_registry $<TARGET_FILE:texsample>
+  add_test(NAME filter_registry COMMAND filter_registry $<TARGET_FILE:texsample_cli>
            ${CMAKE_CURRENT_BINARY_DIR}/filter_registry_out)
   # See tests/oiio.cmake: OIIO 2.4's TextureSystem::destroy under ASan.
   set_tests_properties(filter_registry PROPERTIES TIMEOUT 300
