@@ -28,8 +28,8 @@ if grep -q "CONSOLE" "$work/ok.log"; then
 fi
 # The check sees an overlap: the same page with every legend entry moved
 # onto the first one.
-NAME_SED='s|<text class="legend" x="[0-9.]*" y="[0-9.]*"|<text class="legend" x="20" y="400"|g' \
-  html_check "$work/page" index.html overlap
+html_check "$work/page" index.html overlap \
+  's|<text class="legend" x="[0-9.]*" y="[0-9.]*"|<text class="legend" x="20" y="400"|g'
 if ! grep -q "OVERLAPS [1-9]" "$work/overlap.verdict"; then
   echo "FAIL: the check did not notice overlapping legend entries:"; cat "$work/overlap.verdict"; status=1
 fi

@@ -4,11 +4,11 @@
 # Chromium is installed.
 #   html_check_init            find the browser, make a private profile
 #   chrome ARGS...             run it headless
-#   html_check DIR PAGE NAME   copy DIR/PAGE to DIR/NAME.html with the hook
-#                              (after its <head>), load it; NAME_SED, when
-#                              set, is a sed expression applied to the copy;
-#                              the verdict goes to $work/NAME.verdict, the
-#                              browser's log to $work/NAME.log
+#   html_check DIR PAGE NAME [SED]
+#                              copy DIR/PAGE to DIR/NAME.html with the hook
+#                              (after its <head>) and the sed expression SED
+#                              applied, load it; the verdict goes to
+#                              $work/NAME.verdict, the log to $work/NAME.log
 html_check_js=$(dirname "$0")/html_check.js
 
 html_check_init() {
@@ -31,7 +31,7 @@ html_check() {
   awk -v js="$html_check_js" '{print} /<head>/ && !done {
       print "<script>"; while ((getline l < js) > 0) print l; print "</script>"; done = 1 }' \
     "$1/$2" >"$1/$3.html"
-  [ -n "${NAME_SED:-}" ] && sed -i "$NAME_SED" "$1/$3.html"
+  [ $# -ge 4 ] && sed -i "$4" "$1/$3.html"
   chrome --enable-logging=stderr --v=0 --virtual-time-budget=10000 --window-size=1400,2000 \
     --dump-dom "file://$1/$3.html" >"$work/$3.dom" 2>"$work/$3.log"
   sed -n 's|.*<p id="pagecheck">\(IMAGES [^<]* END\)</p>.*|\1|p' "$work/$3.dom" >"$work/$3.verdict"

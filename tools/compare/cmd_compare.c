@@ -268,8 +268,9 @@ static void print_table(const cmp_scene_result *s)
         size_t n = strlen(s->rows[r].cfg->label);
         if (n > (size_t)lw) lw = n > 60 ? 60 : (int)n;
     }
-    printf("%s (%d x %d, truth %d x %d, %zu pixels measured; ns/sample: median of %d runs)\n",
-           s->label, s->w, s->h, s->truth_samples, s->truth_samples, s->measured, s->runs);
+    printf("%s (%d x %d, truth %d x %d, %zu pixels measured; ns/sample: median of %d run%s)\n",
+           s->label, s->w, s->h, s->truth_samples, s->truth_samples, s->measured, s->runs,
+           s->runs == 1 ? "" : "s");
     printf("  %-*s %9s %9s %10s %9s\n", lw, "filter", "RMSE", "PSNR dB", "ns/sample", "texels");
     for (r = 0; r < s->nrows; ++r) {
         const cmp_row *w = &s->rows[r];

@@ -256,9 +256,9 @@ static void html_table(buf *b, const cmp_scene_result *c)
     for (r = 0; r < c->nrows; ++r)
         if (c->rows[r].ok && c->rows[r].m.rmse < best) best = c->rows[r].m.rmse;
     bprintf(b, "<table>\n<tr><th class=\"l\">filter</th><th>RMSE</th><th>PSNR (dB)</th>"
-               "<th>max error</th><th>time (ms),<br>median of %d runs</th><th>ns/sample,<br>median "
-               "of %d runs</th><th>texels/sample</th></tr>\n",
-            c->runs, c->runs);
+               "<th>max error</th><th>time (ms),<br>median of %d run%s</th><th>ns/sample,<br>median "
+               "of %d run%s</th><th>texels/sample</th></tr>\n",
+            c->runs, c->runs == 1 ? "" : "s", c->runs, c->runs == 1 ? "" : "s");
     for (r = 0; r < c->nrows; ++r) {
         const cmp_row *w = &c->rows[r];
         bprintf(b, "<tr%s><td class=\"l\">", w->ok && w->m.rmse == best ? " class=\"best\"" : "");
