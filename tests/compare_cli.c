@@ -10,7 +10,11 @@
  *   - ordering on the plane (64 × 64): nearest without mips has the largest
  *     error, trilinear beats nearest-mipmap-nearest, Blinn–Newell (both
  *     modes) and EWA beat trilinear;
- *   - the outputs exist (PNG signatures, CSV, JSON, HTML) and the exit codes.
+ *   - footprints across an occlusion edge inside one object are left out
+ *     of the metrics;
+ *   - the face-on zone plate ties four mip filters, the oblique one does not;
+ *   - the outputs exist (PNG signatures, CSV, JSON, HTML; pictures linked to
+ *     full size, the median of 3 runs reported) and the exit codes.
  * Usage: compare_cli TEXSAMPLE WORKDIR
  */
 #define _POSIX_C_SOURCE 200809L

@@ -114,7 +114,7 @@ void cmp_fill_untextured(const cmp_view *v, float *rgba);
 typedef struct cmp_truth {
     float *rgba;         /* w × h × 4 linear */
     unsigned char *mask; /* 1: pixel counted by the metrics (whole footprint on the centre's
-                            textured object) */
+                            textured object, on no occlusion edge: truth.c) */
     int samples;         /* n: n × n samples over each 2 × 2-pixel footprint */
     double seconds;
 } cmp_truth;

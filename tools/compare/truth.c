@@ -25,9 +25,8 @@
  * part covers another (the teapot's spout, handle and lid in front of its
  * body): there a sample lands on the part behind, tens of footprints away
  * along the ray, while on a smooth surface the expansion is off by a
- * second-order term, a small fraction of the footprint (about ½ of it at a
- * pixel whose footprint reaches 1.3 pixels from a plane's horizon, much
- * less elsewhere).
+ * second-order term, a small fraction of the footprint (on a plane seen in
+ * perspective about 1/(d − 1) of it at a pixel d pixels from the horizon).
  */
 #include "cmp_internal.h"
 #include "cli.h"
