@@ -10,8 +10,6 @@ exe=$1
 work=$2
 . "$(dirname "$0")/html_check.sh"
 html_check_init
-rm -rf "$work"
-mkdir -p "$work"
 if ! "$exe" freq --quick --theta 0 --r 1,4 --out "$work/page" >"$work/freq.txt" 2>&1; then
   echo "FAIL: texsample freq failed"; cat "$work/freq.txt"; exit 1
 fi
@@ -20,16 +18,11 @@ figures=$(grep -o '<svg ' "$work/page/index.html" | wc -l)
 status=0
 [ "$figures" = 2 ] || { echo "FAIL: $figures inline figures, 2 expected"; status=1; }
 html_check "$work/page" index.html ok
-if ! grep -q "^IMAGES $expected BROKEN 0  UNLINKED 0  OVERLAPS 0  END" "$work/ok.verdict"; then
-  echo "FAIL: page check ($expected images expected):"; cat "$work/ok.verdict"; status=1
-fi
-if grep -q "CONSOLE" "$work/ok.log"; then
-  echo "FAIL: console messages:"; grep "CONSOLE" "$work/ok.log"; status=1
-fi
+html_check_clean ok "$expected" || status=1
 # The check sees an overlap: the same page with every legend entry moved
 # onto the first one.
 html_check "$work/page" index.html overlap \
-  's|<text class="legend" x="[0-9.]*" y="[0-9.]*"|<text class="legend" x="20" y="400"|g'
+  's|<text class="legend" x="[0-9.]*" y="[0-9.]*"|<text class="legend" x="20" y="284"|g'
 if ! grep -q "OVERLAPS [1-9]" "$work/overlap.verdict"; then
   echo "FAIL: the check did not notice overlapping legend entries:"; cat "$work/overlap.verdict"; status=1
 fi
