@@ -6,8 +6,7 @@
  *     still spans most of the width;
  *   - the oblique zone plate asks for anisotropic footprints that vary
  *     over the picture (ratio of the Jacobian's singular values from under
- *     2 to over 8, λ over more than 4 levels), where the face-on one
- *     asks for the same isotropic footprint everywhere.
+ *     2 to over 8, λ over more than 4 levels).
  */
 #include "check.h"
 #include "cmp_internal.h"
@@ -68,8 +67,8 @@ static void teapot_image(void)
 }
 
 /* Over the pixels that see the plane: the smallest and largest anisotropy
- * (ratio of the Jacobian's singular values, in texels) and λ = log2 of the
- * major axis in texels of the 1024-texel base level. */
+ * (ratio of the Jacobian's singular values) and λ = log2 of the major axis
+ * in texels of the base level. */
 static void footprints(const char *name, double *rmin, double *rmax, double *lmin, double *lmax)
 {
     render_scene *sc;
@@ -77,12 +76,13 @@ static void footprints(const char *name, double *rmin, double *rmax, double *lmi
     size_t px, n;
     *rmin = *lmin = HUGE_VAL;
     *rmax = *lmax = -HUGE_VAL;
+    int tw, th;
     if (open_view(name, &sc, &v)) return;
+    sample_texture_level_size(render_scene_texture(sc, 0), 0, &tw, &th);
     n = (size_t)v.w * (size_t)v.h;
     for (px = 0; px < n; ++px) {
         const sample_query *q = &v.q[px];
-        double a = q->dsdx * 1024.0, b = q->dsdy * 1024.0, c = q->dtdx * 1024.0,
-               d = q->dtdy * 1024.0;
+        double a = q->dsdx * tw, b = q->dsdy * tw, c = q->dtdx * th, d = q->dtdy * th;
         double s1 = a * a + b * b + c * c + d * d, det = fabs(a * d - b * c);
         double disc = sqrt(fmax(0.0, s1 * s1 - 4.0 * det * det));
         double major = sqrt(0.5 * (s1 + disc)), minor = sqrt(fmax(0.0, 0.5 * (s1 - disc)));
@@ -97,21 +97,20 @@ static void footprints(const char *name, double *rmin, double *rmax, double *lmi
     render_scene_destroy(sc);
 }
 
-static void zoneplates(void)
+/* (The face-on plate's single footprint shows in its scores: the four
+ * isotropic mip filters tie, tests/compare_cli.c.) */
+static void zoneplate_oblique(void)
 {
     double rmin, rmax, lmin, lmax;
     footprints("zoneplate-oblique", &rmin, &rmax, &lmin, &lmax);
     CHECK(rmin < 2.0 && rmax > 8.0, "oblique: anisotropy %g .. %g", rmin, rmax);
     CHECK(lmax - lmin > 4.0, "oblique: lambda %g .. %g", lmin, lmax);
-    footprints("zoneplate", &rmin, &rmax, &lmin, &lmax);
-    CHECK(rmax < 1.1, "face-on: anisotropy up to %g", rmax);
-    CHECK(lmax - lmin < 0.5, "face-on: lambda %g .. %g", lmin, lmax);
 }
 
 int main(void)
 {
     RUN(teapot);
     RUN(teapot_image);
-    RUN(zoneplates);
+    RUN(zoneplate_oblique);
     return check_finish();
 }
