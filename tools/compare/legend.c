@@ -24,7 +24,7 @@ void cmp_heat_legend(int w, float scale, cmp_legend *lg)
 {
     /* Placement order: the ends carry the range, the middle is a bonus. */
     static const int order[3] = {0, 2, 1};
-    int margin = w >= 4 * BAR_MARGIN ? BAR_MARGIN : w / 4, i, k;
+    int margin = w >= 4 * BAR_MARGIN ? BAR_MARGIN : w / 4, i, k, l;
     memset(lg, 0, sizeof *lg);
     lg->bar_x = margin;
     lg->bar_w = w - 2 * margin;
@@ -49,7 +49,7 @@ void cmp_heat_legend(int w, float scale, cmp_legend *lg)
          * centred on it. */
         c.x = k == 0 ? c.tick_x : k == 2 ? c.tick_x - c.w + 1 : c.tick_x - c.w / 2;
         if (c.x < 0 || c.x + c.w > w) ok = 0;
-        for (k = 0; ok && k < lg->n; ++k) ok = clear_of(&c, &lg->label[k]);
+        for (l = 0; ok && l < lg->n; ++l) ok = clear_of(&c, &lg->label[l]);
         if (ok) lg->label[lg->n++] = c;
     }
 }

@@ -300,9 +300,11 @@ static void html_figure(buf *b, const cmp_scene_result *c, const char *name, con
                         const char *metrics, int heat)
 {
     int dw = c->w < HTML_THUMB ? c->w : HTML_THUMB;
+    char alt[160];
     bprintf(b, "<figure>");
     html_img(b, c, name, "", dw, name);
-    html_img(b, c, name, heat ? "_err" : "_mask", dw, heat ? "error" : "mask");
+    snprintf(alt, sizeof alt, "%s %s", name, heat ? "error" : "mask");
+    html_img(b, c, name, heat ? "_err" : "_mask", dw, alt);
     bprintf(b, "<figcaption><b>");
     bescape(b, label, 0);
     bprintf(b, "</b>%s</figcaption></figure>\n", metrics);
@@ -315,17 +317,19 @@ static void html_crop_strip(buf *b, const cmp_scene_result *c)
     /* Half the magnified crop (still at least 1 image pixel per page
      * pixel); a click gives the crop at full magnification. */
     int zoom = c->crop_zoom > 1 ? (c->crop_zoom + 1) / 2 : 1, dw = c->crop_size * zoom, r;
+    char alt[160];
     bprintf(b, "<p>The crop (red frame in the ground truth), every filter side by side; click "
                "for %d&times; magnification.</p>\n<div class=\"strip\">\n",
             c->crop_zoom);
     bprintf(b, "<figure>");
-    html_img(b, c, "truth", "_crop", dw, "ground truth crop");
+    html_img(b, c, "truth", "_crop", dw, "truth crop");
     bprintf(b, "<figcaption><b>ground truth</b></figcaption></figure>\n");
     for (r = 0; r < c->nrows; ++r) {
         const cmp_row *w = &c->rows[r];
         if (!w->ok) continue;
         bprintf(b, "<figure>");
-        html_img(b, c, w->cfg->name, "_crop", dw, w->cfg->name);
+        snprintf(alt, sizeof alt, "%s crop", w->cfg->name);
+        html_img(b, c, w->cfg->name, "_crop", dw, alt);
         bprintf(b, "<figcaption><b>");
         bescape(b, w->cfg->label, 0);
         bprintf(b, "</b></figcaption></figure>\n");

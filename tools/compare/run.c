@@ -159,9 +159,11 @@ int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stat
             ns[run] = r->queries ? 1e9 * secs / (double)r->queries : 0.0;
             r->texels = !stats ? -1.0 : r->queries ? texels / (double)r->queries : 0.0;
         }
-        r->runs = runs;
-        r->seconds = cmp_median(wall, runs);
-        r->ns_per_sample = cmp_median(ns, runs);
+        if (!failed) {
+            r->runs = runs;
+            r->seconds = cmp_median(wall, runs);
+            r->ns_per_sample = cmp_median(ns, runs);
+        }
     }
     free(jb.row_seconds);
     free(jb.row_texels);
