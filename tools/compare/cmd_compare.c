@@ -41,9 +41,22 @@ static void usage(void)
            "the exact screen-to-texture mapping, DESIGN section 8). Writes PNG pictures,\n"
            "results.csv, results.json and index.html, and prints where they are.\n\n"
            "Options:\n"
-           "  --scene NAME|FILE   scene to compare (repeatable); built-in: ");
-    for (k = 0; cmp_scene_names[k]; ++k) printf("%s%s", k ? ", " : "", cmp_scene_names[k]);
-    printf(",\n                      the renderer's others, 'all' for the comparison set,\n"
+           "  --scene NAME|FILE   scene to compare (repeatable); built-in:\n"
+           "                     ");
+    {
+        /* The names, wrapped at 78 columns. */
+        int col = 21;
+        for (k = 0; cmp_scene_names[k]; ++k) {
+            int len = (int)strlen(cmp_scene_names[k]) + 2;
+            if (col + len > 78) {
+                printf("\n                     ");
+                col = 21;
+            }
+            printf(" %s,", cmp_scene_names[k]);
+            col += len;
+        }
+    }
+    printf("\n                      the renderer's others, 'all' for the comparison set,\n"
            "                      or a scene file (JSON). Default: ");
     for (k = 0; cmp_default_scenes[k]; ++k) printf("%s%s", k ? " and " : "", cmp_default_scenes[k]);
     printf(".\n  --size N            image size N x N (default 256)\n"
