@@ -10,7 +10,11 @@
  *   - ordering on the plane (64 × 64): nearest without mips has the largest
  *     error, trilinear beats nearest-mipmap-nearest, Blinn–Newell (both
  *     modes) and EWA beat trilinear;
- *   - the outputs exist (PNG signatures, CSV, JSON, HTML) and the exit codes.
+ *   - footprints across an occlusion edge inside one object are left out
+ *     of the metrics;
+ *   - the face-on zone plate ties four mip filters, the oblique one does not;
+ *   - the outputs exist (PNG signatures, CSV, JSON, HTML; pictures linked to
+ *     full size, the median of 3 runs reported) and the exit codes.
  * Usage: compare_cli TEXSAMPLE WORKDIR
  */
 #define _POSIX_C_SOURCE 200809L
@@ -23,7 +27,8 @@
 #include <sys/wait.h>
 
 static const char *exe, *dir;
-static const char *const scenes[] = {"plane", "teapot", "teapot-image", "zoneplate", "photo-plane"};
+static const char *const scenes[] = {"plane",     "teapot",            "teapot-image",
+                                     "zoneplate", "zoneplate-oblique", "photo-plane"};
 enum { NSCENES = sizeof scenes / sizeof scenes[0] };
 
 static int run(const char *args)
@@ -50,6 +55,8 @@ static void exit_codes(void)
     CHECK(run("--bogus") == 2, "unknown option exits 2");
     CHECK(run("--truth-samples 33") == 2, "odd sample count exits 2");
     CHECK(run("--size 0") == 2, "size 0 exits 2");
+    CHECK(run("--runs 0") == 2, "--runs 0 exits 2");
+    CHECK(run("--runs") == 2, "--runs without a value exits 2");
     CHECK(run("--configs trilinear,nope") == 2, "unknown configuration exits 2");
     CHECK(run("--scene no-such-scene.json --size 16 --out bad") == 1, "missing scene exits 1");
 }
@@ -101,6 +108,48 @@ static void converges(void)
     }
 }
 
+/* One object, two parallel squares: the near one covers the left half of
+ * the far one, and its right edge (x = 0.5, under the eye) falls on the
+ * line between pixel columns 15 and 16 of 32. The footprints of columns 15
+ * and 16 straddle that occlusion edge, so the metric mask leaves them out
+ * although every sample is on the same object; columns two or more pixels
+ * away from the edge (and from the squares' borders) are measured. */
+static void occlusion_edge(void)
+{
+    static const char scene[] =
+        "{\"camera\":{\"eye\":[0.5,0.5,2],\"look\":[0.5,0.5,0],\"up\":[0,1,0],\"fov\":20},"
+        "\"textures\":[{\"name\":\"c\",\"type\":\"checker\",\"freq\":4}],"
+        "\"materials\":[{\"name\":\"m\",\"texture\":\"c\"}],"
+        "\"objects\":[{\"type\":\"polygons\",\"material\":\"m\",\"polygons\":["
+        "{\"v\":[[-1,-1,0],[2,-1,0],[2,2,0],[-1,2,0]],\"st\":[[0,0],[1,0],[1,1],[0,1]]},"
+        "{\"v\":[[-1,-1,0.3],[0.5,-1,0.3],[0.5,2,0.3],[-1,2,0.3]],\"st\":[[0,0],[1,0],[1,1],[0,1]]}"
+        "]}]}";
+    char path[1024];
+    unsigned char *mask;
+    size_t len;
+    int i, j, edge = 0, off = 0;
+    FILE *f;
+    snprintf(path, sizeof path, "%s/steps.json", dir);
+    f = fopen(path, "w");
+    CHECK(f && fputs(scene, f) >= 0 && fclose(f) == 0, "write %s", path);
+    CHECK(run("--scene steps.json --size 32 --truth-samples 8 --configs trilinear --no-oiio --runs 1 "
+              "--raw --out steps") == 0, "steps run");
+    mask = slurp("steps/steps", "mask.u8", &len);
+    CHECK(mask && len == 32 * 32, "mask.u8 written");
+    if (!mask || len != 32 * 32) {
+        free(mask);
+        return;
+    }
+    for (j = 2; j < 30; ++j) {
+        edge += mask[j * 32 + 15] + mask[j * 32 + 16];
+        for (i = 2; i < 30; ++i)
+            if (i < 14 || i > 17) off += !mask[j * 32 + i];
+    }
+    CHECK(edge == 0, "%d pixels measured across the occlusion edge", edge);
+    CHECK(off == 0, "%d pixels away from the edge left out", off);
+    free(mask);
+}
+
 static void threads_identical(void)
 {
     size_t la, lb;
@@ -133,6 +182,40 @@ static double csv_rmse(const char *csv, const char *scene, const char *config)
     if (*p == '"') p = strchr(p + 1, '"');
     if (!p || !(p = strchr(p, ','))) return NAN;
     return strtod(p + 1, NULL);
+}
+
+/* The face-on zone plate asks every pixel for the same isotropic
+ * footprint at λ = 2 (at 256 x 256; λ = 4 at 64 x 64), so every isotropic
+ * mip filter reads one level alone and the four score the same to the
+ * last digit; on the oblique plate, where λ and the anisotropy vary, no
+ * two of the five filters tie. */
+static void zoneplate_ties(void)
+{
+    static const char *const configs[] = {"nearest_mipmap_nearest", "trilinear", "aniso16",
+                                          "cubic_mipmap_linear", "ewa"};
+    double face[5], oblique[5];
+    size_t len;
+    char *csv;
+    int k, l;
+    CHECK(run("--scene zoneplate --scene zoneplate-oblique --size 64 --truth-samples 16 --runs 1 "
+              "--no-oiio --configs nearest_mipmap_nearest,trilinear,aniso16,cubic_mipmap_linear,ewa "
+              "--out zp") == 0, "zone plates run");
+    csv = slurp("zp", "results.csv", &len);
+    CHECK(csv != NULL, "results.csv written");
+    if (!csv) return;
+    for (k = 0; k < 5; ++k) {
+        face[k] = csv_rmse(csv, "zoneplate", configs[k]);
+        oblique[k] = csv_rmse(csv, "zoneplate-oblique", configs[k]);
+        printf("zone plate 64x64 %-24s RMSE face-on %.5f oblique %.5f\n", configs[k], face[k],
+               oblique[k]);
+        CHECK(oblique[k] > 0.0 && oblique[k] < 1.0, "%s oblique RMSE %g", configs[k], oblique[k]);
+    }
+    for (k = 1; k < 4; ++k) CHECK(face[k] == face[0], "face-on %s %g vs %g", configs[k], face[k], face[0]);
+    for (k = 0; k < 5; ++k)
+        for (l = k + 1; l < 5; ++l)
+            CHECK(fabs(oblique[k] - oblique[l]) > 0.02 * fmin(oblique[k], oblique[l]),
+                  "oblique: %s %g and %s %g tie", configs[k], oblique[k], configs[l], oblique[l]);
+    free(csv);
 }
 
 static void ordering_and_outputs(void)
@@ -170,10 +253,15 @@ static void ordering_and_outputs(void)
     json = slurp("ord", "results.json", &len);
     CHECK(json && strstr(json, "\"config\": \"ewa\"") && strstr(json, "\"error_map\": \"plane/ewa_err.png\""),
           "results.json lists the configurations and pictures");
+    /* The times are medians of 3 runs by default, and the outputs say so. */
+    CHECK(json && strstr(json, "\"runs\": 3,"), "results.json gives the number of runs");
     free(json);
     html = slurp("ord", "index.html", &len);
-    CHECK(html && strstr(html, "<img src=\"plane/blinn-newell-corners_err.png\"") && strstr(html, "</html>"),
-          "index.html links the pictures");
+    CHECK(html && strstr(html, "<a href=\"plane/blinn-newell-corners_err.png\"><img "
+                               "src=\"plane/blinn-newell-corners_err.png\"") &&
+              strstr(html, "</html>"),
+          "index.html shows the pictures, each a link to itself at full size");
+    CHECK(html && strstr(html, "median of 3 runs</th>"), "the table header says how many runs");
     free(html);
     csv = slurp(".", "out.txt", &len);
     CHECK(csv && strstr(csv, "ord/index.html") && strstr(csv, "ord/results.csv"),
@@ -191,7 +279,9 @@ int main(int argc, char **argv)
     dir = argv[2];
     RUN(exit_codes);
     RUN(converges);
+    RUN(occlusion_edge);
     RUN(threads_identical);
+    RUN(zoneplate_ties);
     RUN(ordering_and_outputs);
     return check_finish();
 }

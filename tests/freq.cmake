@@ -19,5 +19,10 @@ if(TARGET texsample_freq)
     target_compile_options(freq_cli PRIVATE ${SAMPLE_WARNINGS})
     add_test(NAME freq_cli COMMAND freq_cli $<TARGET_FILE:texsample> ${CMAKE_CURRENT_BINARY_DIR}/freq_cli_out)
     set_tests_properties(freq_cli PROPERTIES TIMEOUT 300)
+    # The page in headless Chromium (tests/html_check.sh); skipped without it.
+    add_test(NAME freq_html COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/freq_html.sh
+             $<TARGET_FILE:texsample> ${CMAKE_CURRENT_BINARY_DIR}/freq_html.out)
+    set_tests_properties(freq_html PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300
+      ENVIRONMENT "ASAN_OPTIONS=new_delete_type_mismatch=0")
   endif()
 endif()

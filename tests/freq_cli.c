@@ -1,13 +1,15 @@
 /*
  * `texsample freq` end to end (doc/frequency-tests.md §6): exit codes, the
  * quick sweep's files, the ideal low-pass where DESIGN §9 puts it in the
- * SVG and the CSV, nearest's leakage against trilinear's, and an HTML page
- * whose links all resolve in its folder.
+ * SVG and the CSV, the figures' titles, axis names and legend (in the SVG
+ * files and inlined in the page), nearest's leakage against trilinear's, and
+ * an HTML page whose links all resolve in its folder.
  *
  * usage: freq_cli TEXSAMPLE OUTDIR
  */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
+#include "freq.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -99,6 +101,79 @@ static void test_svg_ideal(void)
     for (k = 0, p = svg; (p = strstr(p, "<polyline class=\"curve\" data-filter=\"nearest\"")); ++p) ++k;
     CHECK(k == 3, "nearest curves: %d", k);
     free(svg);
+}
+
+/* Count of `needle` in `hay`. */
+static int count(const char *hay, const char *needle)
+{
+    int n = 0;
+    for (; (hay = strstr(hay, needle)) != NULL; hay += strlen(needle)) ++n;
+    return n;
+}
+
+/* A figure says what it shows: its title, each panel's m, the axis names
+ * with units under and beside every panel, and a legend entry naming
+ * every filter that has a curve in it (the registry's label of the curve's
+ * data-filter name). */
+static void check_figure_labels(const char *svg, const char *what)
+{
+    const char *p;
+    char key[160];
+    int filters = 0;
+    CHECK(strstr(svg, "<text class=\"figtitle\"") && strstr(svg, "&#952; = 0&#176;, r = 1</text>"),
+          "%s: figure title", what);
+    CHECK(count(svg, "texels/pixel</text>") == 3, "%s: panel titles", what);
+    snprintf(key, sizeof key, ">%s</text>", FQ_PLOT_XLABEL);
+    CHECK(count(svg, key) == 3, "%s: x axis name on every panel", what);
+    snprintf(key, sizeof key, ">%s</text>", FQ_PLOT_YLABEL);
+    CHECK(count(svg, key) == 3, "%s: y axis name on every panel", what);
+    CHECK(strstr(FQ_PLOT_XLABEL, "(cycles/pixel)") != NULL, "x axis unit");
+    for (p = svg; (p = strstr(p, "data-filter=\"")) != NULL; ++p) {
+        char name[64], label[TOOL_FILTER_LABEL_MAX];
+        tool_pick pick;
+        size_t len = strcspn(p + 13, "\"");
+        if (len >= sizeof name) continue;
+        memcpy(name, p + 13, len);
+        name[len] = '\0';
+        if (tool_pick_find(name, &pick, NULL) != 0) {
+            CHECK(0, "%s: unknown filter %s", what, name);
+            continue;
+        }
+        tool_pick_label(&pick, label, sizeof label);
+        {
+            char entry[160];
+            snprintf(entry, sizeof entry, ">%s</text>", label);
+            CHECK(count(svg, entry) == 1, "%s: legend entry for %s (%s)", what, name, label);
+        }
+        ++filters;
+    }
+    /* Three panels per curve name: each filter counted three times. */
+    CHECK(filters >= 3 * 8, "%s: curves %d", what, filters);
+    CHECK(strstr(svg, ">ideal low-pass (Nyquist 0.5)</text>") != NULL, "%s: ideal in legend", what);
+}
+
+static void test_labels(void)
+{
+    char *svg = check_slurp_in(dir, "plot_r1_t0.svg"), *html = check_slurp_in(dir, "index.html");
+    CHECK(svg && html, "plot_r1_t0.svg, index.html");
+    if (svg) check_figure_labels(svg, "plot_r1_t0.svg");
+    if (html) {
+        /* The page shows the labelled figures themselves, one per (θ, r). */
+        const char *fig = strstr(html, "<svg ");
+        CHECK(count(html, "<svg ") == 4, "inline figures: %d", count(html, "<svg "));
+        CHECK(strstr(html, "<?xml") == NULL, "no XML declaration inside the page");
+        CHECK(strstr(html, "plot_r1_t0.png") == NULL, "no unlabelled PNG plot");
+        if (fig && strstr(fig, "</svg>")) {
+            char *one = strndup(fig, (size_t)(strstr(fig, "</svg>") - fig));
+            if (one) check_figure_labels(one, "page");
+            free(one);
+        }
+        /* Lists of values read as lists: no "16; )" left over. */
+        CHECK(strstr(html, "; )") == NULL && strstr(html, ", )") == NULL, "stray list separator");
+        CHECK(strstr(html, "m = 1.5, 5.7, 16)") != NULL, "panel order sentence");
+    }
+    free(svg);
+    free(html);
 }
 
 /* CSV: the ideal column follows the design, and at m = 16 nearest without
@@ -200,6 +275,7 @@ int main(int argc, char **argv)
     }
     RUN(test_usage);
     RUN(test_svg_ideal);
+    RUN(test_labels);
     RUN(test_csv);
     RUN(test_html);
     return check_finish();

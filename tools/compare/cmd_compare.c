@@ -22,7 +22,7 @@ enum { MAX_SCENES = 32 };
 typedef struct opts {
     const char *scenes[MAX_SCENES];
     int nscenes;
-    int size, truth, threads, raw;
+    int size, truth, threads, raw, runs;
     const char *out;
     cmp_config cfg[CMP_MAX_CONFIGS];
     int ncfg;
@@ -41,14 +41,29 @@ static void usage(void)
            "the exact screen-to-texture mapping, DESIGN section 8). Writes PNG pictures,\n"
            "results.csv, results.json and index.html, and prints where they are.\n\n"
            "Options:\n"
-           "  --scene NAME|FILE   scene to compare (repeatable); built-in: ");
-    for (k = 0; cmp_scene_names[k]; ++k) printf("%s%s", k ? ", " : "", cmp_scene_names[k]);
-    printf(",\n                      the renderer's others, 'all' for the comparison set,\n"
+           "  --scene NAME|FILE   scene to compare (repeatable); built-in:\n"
+           "                     ");
+    {
+        /* The names, wrapped at 78 columns. */
+        int col = 21;
+        for (k = 0; cmp_scene_names[k]; ++k) {
+            int len = (int)strlen(cmp_scene_names[k]) + 2;
+            if (col + len > 78) {
+                printf("\n                     ");
+                col = 21;
+            }
+            printf(" %s,", cmp_scene_names[k]);
+            col += len;
+        }
+    }
+    printf("\n                      the renderer's others, 'all' for the comparison set,\n"
            "                      or a scene file (JSON). Default: ");
     for (k = 0; cmp_default_scenes[k]; ++k) printf("%s%s", k ? " and " : "", cmp_default_scenes[k]);
     printf(".\n  --size N            image size N x N (default 256)\n"
            "  --truth-samples N   N x N samples per 2x2-pixel footprint, even (default 32)\n"
            "  --threads N         worker threads (default: all processors)\n"
+           "  --runs N            filter each image N times and report the median times\n"
+           "                      (default 3; 1 to 100)\n"
            "  --out DIR           output folder (default out/compare)\n"
            "  --configs LIST      comma-separated configurations from the tools' filter\n"
            "                      registry (doc/comparison.md); default, or 'all': those\n"
@@ -68,6 +83,7 @@ static int parse_args(int argc, char **argv, opts *o)
     memset(o, 0, sizeof *o);
     o->size = 256;
     o->truth = 32;
+    o->runs = 3;
     o->out = "out/compare";
     {
         long n = sysconf(_SC_NPROCESSORS_ONLN);
@@ -93,6 +109,9 @@ static int parse_args(int argc, char **argv, opts *o)
         } else if (cli_opt(argc, argv, &i, "--threads", &v)) {
             if (!v || !cli_parse_int(v, &o->threads) || o->threads < 1 || o->threads > 256)
                 return cli_usage_error("compare", "--threads needs an integer 1 to 256");
+        } else if (cli_opt(argc, argv, &i, "--runs", &v)) {
+            if (!v || !cli_parse_int(v, &o->runs) || o->runs < 1 || o->runs > 100)
+                return cli_usage_error("compare", "--runs needs an integer 1 to 100");
         } else if (cli_opt(argc, argv, &i, "--out", &v)) {
             if (!v || !*v) return cli_usage_error("compare", "--out needs a folder");
             o->out = v;
@@ -180,6 +199,7 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
     memset(&t, 0, sizeof t);
     memset(s, 0, sizeof *s);
     snprintf(s->source, sizeof s->source, "%s", name);
+    s->runs = o->runs;
     if (cmp_scene_open(name, o->size, &sc, s->label, sizeof s->label, err, sizeof err))
         return cli_runtime_error("compare", "scene '%s': %s", name, err);
     snprintf(dir, sizeof dir, "%s/%s", o->out, s->label);
@@ -209,8 +229,9 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
         cmp_result r;
         w->cfg = c;
         fprintf(stderr, "compare %s: %s\n", s->label, c->label);
-        if (c->pick.oiio ? cmp_run_oiio(&v, c, dir, o->threads, &r, w->note, sizeof w->note)
-                    : cmp_run_sample(&v, c, o->threads, &r, w->note, sizeof w->note)) {
+        if (c->pick.oiio
+                ? cmp_run_oiio(&v, c, dir, o->threads, o->runs, &r, w->note, sizeof w->note)
+                : cmp_run_sample(&v, c, o->threads, o->runs, &r, w->note, sizeof w->note)) {
             fprintf(stderr, "texsample compare: %s: %s (left out)\n", s->label, w->note);
             continue;
         }
@@ -260,8 +281,9 @@ static void print_table(const cmp_scene_result *s)
         size_t n = strlen(s->rows[r].cfg->label);
         if (n > (size_t)lw) lw = n > 60 ? 60 : (int)n;
     }
-    printf("%s (%d x %d, truth %d x %d, %zu pixels measured)\n", s->label, s->w, s->h,
-           s->truth_samples, s->truth_samples, s->measured);
+    printf("%s (%d x %d, truth %d x %d, %zu pixels measured; ns/sample: median of %d run%s)\n",
+           s->label, s->w, s->h, s->truth_samples, s->truth_samples, s->measured, s->runs,
+           s->runs == 1 ? "" : "s");
     printf("  %-*s %9s %9s %10s %9s\n", lw, "filter", "RMSE", "PSNR dB", "ns/sample", "texels");
     for (r = 0; r < s->nrows; ++r) {
         const cmp_row *w = &s->rows[r];

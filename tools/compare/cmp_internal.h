@@ -11,6 +11,7 @@
  *   picture.c     8-bit pictures: tone, heat map + legend, crops, contact sheet;
  *                 written through libsample_io
  *   font.c        a 5 × 7 bitmap font for labels in the pictures
+ *   legend.c      where the heat map's colour scale and its labels go
  *   sheet.c       a scene's pictures and its contact sheet
  *   report.c      results.csv, results.json, index.html
  *   cmd_compare.c the subcommand
@@ -79,6 +80,7 @@ void cmp_view_free(cmp_view *v);
 
 typedef struct cmp_result {
     float *rgba;          /* w × h × 4 linear */
+    int runs;             /* the image was filtered this many times; times are medians */
     double seconds;       /* wall time of the whole image */
     double ns_per_sample; /* time inside the filter calls, per query, all threads summed */
     double texels;        /* texels read per query (libsample's count; OIIO: not known, −1) */
@@ -90,16 +92,18 @@ typedef struct cmp_result {
  * many threads at once. */
 typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
                             size_t n, float *rgba, sample_stats *stats);
-/* Run an engine over every textured pixel of the view (run.c). stats: ask
- * for texel counts. Returns 0 on success. */
+/* Run an engine over every textured pixel of the view, `runs` times (≥ 1)
+ * (run.c): the times are the medians over the runs (one run's time moves
+ * with whatever else the machine does); the image and texel counts are the
+ * same every run. stats: ask for texel counts. Returns 0 on success. */
 int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stats, int threads,
-            cmp_result *r);
-int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, cmp_result *r, char *err,
-                   size_t errlen);
+            int runs, cmp_result *r);
+int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, int runs, cmp_result *r,
+                   char *err, size_t errlen);
 /* 1 if this build can run OpenImageIO's TextureSystem. */
 int cmp_oiio_available(void);
 int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, int threads,
-                 cmp_result *r, char *err, size_t errlen);
+                 int runs, cmp_result *r, char *err, size_t errlen);
 void cmp_result_free(cmp_result *r);
 
 /* Background and untextured pixels, shared by every engine. */
@@ -110,7 +114,7 @@ void cmp_fill_untextured(const cmp_view *v, float *rgba);
 typedef struct cmp_truth {
     float *rgba;         /* w × h × 4 linear */
     unsigned char *mask; /* 1: pixel counted by the metrics (whole footprint on the centre's
-                            textured object) */
+                            textured object, on no occlusion edge: truth.c) */
     int samples;         /* n: n × n samples over each 2 × 2-pixel footprint */
     double seconds;
 } cmp_truth;
@@ -133,6 +137,9 @@ void cmp_metrics_compute(const float *img, const float *ref, const unsigned char
                          cmp_metrics *m);
 /* Per-pixel error e = sqrt(mean over R, G, B of the squared difference). */
 void cmp_error_map(const float *img, const float *ref, size_t n, float *err);
+/* The median of v[0..n) (n ≥ 1; the mean of the middle two for even n);
+ * sorts v. */
+double cmp_median(double *v, int n);
 /* The size × size window with the largest sum of `score` over masked pixels
  * (score: w × h). Ties go to the first in row order. */
 void cmp_worst_window(const double *score, const unsigned char *mask, int w, int h, int size,
@@ -155,6 +162,21 @@ int cmp_pic_heatmap(cmp_pic *p, const float *err, const unsigned char *mask, int
                     float scale);
 /* The colour of a value in [0, 1] on the heat map's scale (sRGB bytes). */
 void cmp_heat_colour(float v, unsigned char rgb[3]);
+/* The heat map's legend in a picture w pixels wide, below the image: the
+ * bar (x, width; width 0: too narrow for one) and the labels that fit, each
+ * inside the picture and at least 4 pixels clear of the others; label
+ * coordinates are relative to the legend's top. */
+typedef struct cmp_label {
+    int x, y, w, h; /* the text's box */
+    int tick_x;     /* the bar position it names */
+    char text[16];
+} cmp_label;
+typedef struct cmp_legend {
+    int bar_x, bar_w;
+    int n;
+    cmp_label label[3];
+} cmp_legend;
+void cmp_heat_legend(int w, float scale, cmp_legend *lg);
 /* Window (x0, y0, size) of src magnified by an integer factor. */
 int cmp_pic_crop(cmp_pic *p, const cmp_pic *src, int x0, int y0, int size, int zoom);
 /* dst ← src at (x, y), src shrunk by the integer `down` (box). */
@@ -164,6 +186,12 @@ void cmp_pic_rect(cmp_pic *p, int x, int y, int w, int h, const unsigned char rg
 /* Text in the 5 × 7 font, `scale` pixels per font pixel; returns the width. */
 int cmp_pic_text(cmp_pic *p, int x, int y, const char *text, int scale, const unsigned char rgb[3]);
 int cmp_text_width(const char *text, int scale);
+/* Text cut into at most maxlines lines that each fit `width` pixels
+ * (cmp_text_width, the last glyph's blank column not counted), breaking
+ * after '-' or '_' where one falls in a line; what does not fit is left
+ * out. Returns the number of lines. */
+#define CMP_LINE_MAX 64
+int cmp_text_wrap(const char *text, int width, int scale, char lines[][CMP_LINE_MAX], int maxlines);
 /* One glyph: 7 rows of 5 bits (bit 4 = leftmost), NULL for unknown characters. */
 const unsigned char *cmp_font_glyph(char c);
 
@@ -192,6 +220,7 @@ typedef struct cmp_scene_result {
     char source[256];    /* what --scene said */
     int w, h;
     int truth_samples;
+    int runs;            /* times are medians of this many runs */
     double truth_seconds;
     size_t pixels, measured; /* all pixels, pixels in the metrics */
     int crop_x, crop_y, crop_size, crop_zoom;

@@ -8,6 +8,7 @@
 #include "cmp_internal.h"
 
 #include <ctype.h>
+#include <string.h>
 
 #define B(c, k) ((c)[k] == '#' ? 1 << (4 - (k)) : 0)
 #define ROW(c) (unsigned char)(B(c, 0) | B(c, 1) | B(c, 2) | B(c, 3) | B(c, 4))
@@ -76,4 +77,30 @@ const unsigned char *cmp_font_glyph(char c)
     for (k = 0; k < sizeof glyphs / sizeof glyphs[0]; ++k)
         if (glyphs[k].ch == u) return glyphs[k].rows;
     return NULL;
+}
+
+int cmp_text_width(const char *text, int scale) { return (int)strlen(text) * 6 * scale; }
+
+int cmp_text_wrap(const char *text, int width, int scale, char lines[][CMP_LINE_MAX], int maxlines)
+{
+    int per = (width + scale) / (6 * scale), n = 0;
+    size_t len = strlen(text);
+    if (per > CMP_LINE_MAX - 1) per = CMP_LINE_MAX - 1;
+    while (len > 0 && n < maxlines && per > 0) {
+        size_t take = len <= (size_t)per ? len : (size_t)per, k;
+        /* Break after a '-' or '_' when one falls in the line (and this is
+         * not the last line, which takes as much as fits). */
+        if (take < len && n < maxlines - 1)
+            for (k = take; k > 1; --k)
+                if (text[k - 1] == '-' || text[k - 1] == '_') {
+                    take = k;
+                    break;
+                }
+        memcpy(lines[n], text, take);
+        lines[n][take] = '\0';
+        ++n;
+        text += take;
+        len -= take;
+    }
+    return n;
 }

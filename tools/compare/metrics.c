@@ -78,3 +78,15 @@ void cmp_worst_window(const double *score, const unsigned char *mask, int w, int
         }
     free(sat);
 }
+
+double cmp_median(double *v, int n)
+{
+    int i, j;
+    /* Insertion sort: n is a handful of runs. */
+    for (i = 1; i < n; ++i) {
+        double x = v[i];
+        for (j = i; j > 0 && v[j - 1] > x; --j) v[j] = v[j - 1];
+        v[j] = x;
+    }
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}

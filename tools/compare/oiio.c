@@ -59,7 +59,7 @@ static oiio_ts_tex *oiio_prepare(const cmp_view *v, oiio_ts *ts, int k, const ch
 int cmp_oiio_available(void) { return 1; }
 
 int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, int threads,
-                 cmp_result *r, char *err, size_t errlen)
+                 int runs, cmp_result *r, char *err, size_t errlen)
 {
     oiio_ctx ctx;
     int ntex = render_scene_texture_count(v->sc), k, rc = 1;
@@ -91,7 +91,7 @@ int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, in
             !(ctx.tex[k] = oiio_prepare(v, ctx.ts, k, workdir, err, errlen)))
             goto out;
     }
-    if (cmp_run(v, 0, oiio_fn, &ctx, 0, threads, r)) {
+    if (cmp_run(v, 0, oiio_fn, &ctx, 0, threads, runs, r)) {
         snprintf(err, errlen, "%s: an OpenImageIO lookup failed", c->name);
         goto out;
     }
@@ -107,11 +107,12 @@ out:
 int cmp_oiio_available(void) { return 0; }
 
 int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, int threads,
-                 cmp_result *r, char *err, size_t errlen)
+                 int runs, cmp_result *r, char *err, size_t errlen)
 {
     (void)v;
     (void)workdir;
     (void)threads;
+    (void)runs;
     memset(r, 0, sizeof *r);
     snprintf(err, errlen, "%s: this build has no OpenImageIO", c->name);
     return 1;

@@ -110,8 +110,6 @@ void cmp_pic_rect(cmp_pic *p, int x, int y, int w, int h, const unsigned char rg
     cmp_pic_fill(p, x + w - 1, y, 1, h, rgb);
 }
 
-int cmp_text_width(const char *text, int scale) { return (int)strlen(text) * 6 * scale; }
-
 int cmp_pic_text(cmp_pic *p, int x, int y, const char *text, int scale, const unsigned char rgb[3])
 {
     int x0 = x, r, b;
@@ -133,8 +131,8 @@ int cmp_pic_heatmap(cmp_pic *p, const float *err, const unsigned char *mask, int
     static const unsigned char grey[3] = {90, 90, 90}, white[3] = {235, 235, 235},
                                black[3] = {20, 20, 20};
     size_t px, n = (size_t)w * (size_t)h;
-    int i, k, bar = w - 16;
-    char label[32];
+    cmp_legend lg;
+    int i, k;
     if (cmp_pic_alloc(p, w, h + LEGEND_H)) return 1;
     for (px = 0; px < n; ++px) {
         if (mask && !mask[px])
@@ -142,23 +140,18 @@ int cmp_pic_heatmap(cmp_pic *p, const float *err, const unsigned char *mask, int
         else
             cmp_heat_colour(err[px] / scale, p->rgb + px * 3);
     }
-    /* Legend: the scale as a bar, ticks at 0, ½ and 1 of it. */
+    /* Legend: the scale as a bar, a tick and a value for each label that
+     * fits (legend.c). */
     cmp_pic_fill(p, 0, h, w, LEGEND_H, black);
-    for (i = 0; i < bar; ++i) {
+    cmp_heat_legend(w, scale, &lg);
+    for (i = 0; i < lg.bar_w; ++i) {
         unsigned char c[3];
-        cmp_heat_colour((float)i / (float)(bar - 1), c);
-        cmp_pic_fill(p, 8 + i, h + 4, 1, 9, c);
+        cmp_heat_colour((float)i / (float)(lg.bar_w - 1), c);
+        cmp_pic_fill(p, lg.bar_x + i, h + 4, 1, 9, c);
     }
-    for (k = 0; k <= 2; ++k) {
-        int x = 8 + k * (bar - 1) / 2, tw;
-        if (k == 2)
-            snprintf(label, sizeof label, ">=%.3g", scale);
-        else
-            snprintf(label, sizeof label, "%.3g", scale * 0.5 * k);
-        tw = cmp_text_width(label, 1);
-        cmp_pic_fill(p, x, h + 13, 1, 3, white);
-        x -= k == 0 ? 0 : k == 1 ? tw / 2 : tw - 1;
-        cmp_pic_text(p, x, h + 18, label, 1, white);
+    for (k = 0; k < lg.n; ++k) {
+        cmp_pic_fill(p, lg.label[k].tick_x, h + 13, 1, 3, white);
+        cmp_pic_text(p, lg.label[k].x, h + lg.label[k].y, lg.label[k].text, 1, white);
     }
     return 0;
 }

@@ -99,7 +99,7 @@ int cmp_write_csv(const char *path, const cmp_scene_result *s, int n)
     buf b = {0};
     int k, r;
     bprintf(&b, "scene,config,label,rmse,psnr_db,max_error,seconds,ns_per_sample,"
-                "texels_per_sample,measured_pixels,truth_samples,note\n");
+                "texels_per_sample,measured_pixels,truth_samples,runs,note\n");
     for (k = 0; k < n; ++k)
         for (r = 0; r < s[k].nrows; ++r) {
             const cmp_row *w = &s[k].rows[r];
@@ -115,7 +115,7 @@ int cmp_write_csv(const char *path, const cmp_scene_result *s, int n)
             } else {
                 bprintf(&b, ",,,,,");
             }
-            bprintf(&b, ",%zu,%d,\"", s[k].measured, s[k].truth_samples);
+            bprintf(&b, ",%zu,%d,%d,\"", s[k].measured, s[k].truth_samples, s[k].runs);
             {
                 const char *c;
                 for (c = w->note; *c; ++c) bprintf(&b, *c == '"' ? "\"\"" : "%c", *c);
@@ -149,10 +149,10 @@ int cmp_write_json(const char *path, const cmp_scene_result *s, int n, const cha
         bprintf(&b, ", ");
         jstr(&b, "source", c->source);
         bprintf(&b, ", \"width\": %d, \"height\": %d, \"truth_samples\": %d, \"truth_seconds\": %.3f,"
-                    " \"pixels\": %zu, \"measured_pixels\": %zu,\n     \"crop\": {\"x\": %d, \"y\": %d,"
-                    " \"size\": %d, \"zoom\": %d},\n     ",
-                c->w, c->h, c->truth_samples, c->truth_seconds, c->pixels, c->measured, c->crop_x,
-                c->crop_y, c->crop_size, c->crop_zoom);
+                    " \"pixels\": %zu, \"measured_pixels\": %zu, \"runs\": %d,\n     \"crop\": {\"x\": %d,"
+                    " \"y\": %d, \"size\": %d, \"zoom\": %d},\n     ",
+                c->w, c->h, c->truth_samples, c->truth_seconds, c->pixels, c->measured, c->runs,
+                c->crop_x, c->crop_y, c->crop_size, c->crop_zoom);
         cmp_pic_path(p, sizeof p, c, "truth", "");
         jstr(&b, "truth", p);
         bprintf(&b, ", ");
@@ -208,7 +208,9 @@ static const char html_head[] =
     "tr.best td{background:#e3f4e3}\n"
     ".grid{display:flex;flex-wrap:wrap;gap:10px}figure{margin:0;background:#fff;"
     "border:1px solid #ccc;padding:6px}\n"
-    "figure img{display:block;image-rendering:pixelated;margin-bottom:3px}"
+    ".strip{display:flex;gap:6px;overflow-x:auto;padding-bottom:6px;margin-bottom:10px}"
+    ".strip figure{flex:none}.strip figcaption{max-width:none;width:min-content;min-width:100%}\n"
+    "figure img{display:block;image-rendering:pixelated;margin-bottom:3px;height:auto}"
     "figcaption{font-size:12px;max-width:260px}\n"
     ".legend{display:inline-block;width:300px;height:14px;vertical-align:middle;"
     "background:linear-gradient(to right,#000004,#50127b,#b73779,#fc8961,#fcfdbf)}\n"
@@ -231,13 +233,16 @@ static void html_intro(buf *b, const char *command)
             "footprint, each evaluated at its exact (s,&nbsp;t): analytically for procedural "
             "textures, by bilinear reconstruction of the base level for image textures.</p>\n"
             "<p><b>Metrics</b>: RMSE over R,&nbsp;G,&nbsp;B of linear values and PSNR "
-            "(peak&nbsp;1), over the pixels whose whole footprint lies on the textured object "
-            "seen at the centre; pixels at silhouettes and the background are left out (grey "
-            "in the heat maps), since no texture filter can know about an edge. Time is the "
+            "(peak&nbsp;1), over the pixels whose whole footprint lies on the textured surface "
+            "seen at the centre; pixels at silhouettes, at occlusion edges within an object "
+            "and the background are left out (grey in the heat maps), since no texture "
+            "filter can know about an edge. Time is the "
             "wall time of the whole image; ns/sample is the time inside the filter calls per "
-            "query (all threads summed); texels/sample is libsample's count of texels read. "
+            "query (all threads summed); both are the median of several runs (the table "
+            "says how many), as one run's time moves with whatever else the machine is "
+            "doing. texels/sample is libsample's count of texels read. "
             "The crop (magnified) is the window with the highest error summed over all "
-            "configurations.</p>\n"
+            "configurations. Click a picture to see it at full size.</p>\n"
             "<p>Heat maps: per-pixel error (RMS over R,&nbsp;G,&nbsp;B) from 0 "
             "<span class=\"legend\"></span> %g and above.</p>\n"
             "<p>Tables: <a href=\"results.csv\">results.csv</a>, "
@@ -252,7 +257,9 @@ static void html_table(buf *b, const cmp_scene_result *c)
     for (r = 0; r < c->nrows; ++r)
         if (c->rows[r].ok && c->rows[r].m.rmse < best) best = c->rows[r].m.rmse;
     bprintf(b, "<table>\n<tr><th class=\"l\">filter</th><th>RMSE</th><th>PSNR (dB)</th>"
-               "<th>max error</th><th>time (ms)</th><th>ns/sample</th><th>texels/sample</th></tr>\n");
+               "<th>max error</th><th>time (ms),<br>median of %d run%s</th><th>ns/sample,<br>median "
+               "of %d run%s</th><th>texels/sample</th></tr>\n",
+            c->runs, c->runs == 1 ? "" : "s", c->runs, c->runs == 1 ? "" : "s");
     for (r = 0; r < c->nrows; ++r) {
         const cmp_row *w = &c->rows[r];
         bprintf(b, "<tr%s><td class=\"l\">", w->ok && w->m.rmse == best ? " class=\"best\"" : "");
@@ -273,22 +280,61 @@ static void html_table(buf *b, const cmp_scene_result *c)
     bprintf(b, "</table>\n");
 }
 
+/* The largest width the page shows a scene's pictures at; a click opens
+ * the picture itself at full size. */
+enum { HTML_THUMB = 256 };
+
+/* One picture: shown `width` wide (the height follows), linked to itself. */
+static void html_img(buf *b, const cmp_scene_result *c, const char *name, const char *suffix,
+                     int width, const char *alt)
+{
+    char p[512];
+    cmp_pic_path(p, sizeof p, c, name, suffix);
+    bprintf(b, "<a href=\"%s\"><img src=\"%s\" width=\"%d\" alt=\"", p, p, width);
+    bescape(b, alt, 0);
+    bprintf(b, "\"></a>");
+}
+
+/* A filter's (or the truth's) image and its heat map (the truth: its mask). */
 static void html_figure(buf *b, const cmp_scene_result *c, const char *name, const char *label,
                         const char *metrics, int heat)
 {
-    char p[512];
+    int dw = c->w < HTML_THUMB ? c->w : HTML_THUMB;
+    char alt[160];
     bprintf(b, "<figure>");
-    cmp_pic_path(p, sizeof p, c, name, "");
-    bprintf(b, "<img src=\"%s\" width=\"%d\" height=\"%d\" alt=\"%s\">", p, c->w, c->h, name);
-    cmp_pic_path(p, sizeof p, c, name, heat ? "_err" : "_mask");
-    bprintf(b, "<img src=\"%s\" width=\"%d\" alt=\"%s %s\">", p, c->w, name,
-            heat ? "error" : "mask");
-    cmp_pic_path(p, sizeof p, c, name, "_crop");
-    bprintf(b, "<img src=\"%s\" width=\"%d\" height=\"%d\" alt=\"%s crop\">", p,
-            c->crop_size * c->crop_zoom, c->crop_size * c->crop_zoom, name);
+    html_img(b, c, name, "", dw, name);
+    snprintf(alt, sizeof alt, "%s %s", name, heat ? "error" : "mask");
+    html_img(b, c, name, heat ? "_err" : "_mask", dw, alt);
     bprintf(b, "<figcaption><b>");
     bescape(b, label, 0);
     bprintf(b, "</b>%s</figcaption></figure>\n", metrics);
+}
+
+/* The crop of the truth and of every filter side by side, in one row, so
+ * that the same window can be compared across filters at a glance. */
+static void html_crop_strip(buf *b, const cmp_scene_result *c)
+{
+    /* Half the magnified crop (still at least 1 image pixel per page
+     * pixel); a click gives the crop at full magnification. */
+    int zoom = c->crop_zoom > 1 ? (c->crop_zoom + 1) / 2 : 1, dw = c->crop_size * zoom, r;
+    char alt[160];
+    bprintf(b, "<p>The crop (red frame in the ground truth), every filter side by side; click "
+               "for %d&times; magnification.</p>\n<div class=\"strip\">\n",
+            c->crop_zoom);
+    bprintf(b, "<figure>");
+    html_img(b, c, "truth", "_crop", dw, "truth crop");
+    bprintf(b, "<figcaption><b>ground truth</b></figcaption></figure>\n");
+    for (r = 0; r < c->nrows; ++r) {
+        const cmp_row *w = &c->rows[r];
+        if (!w->ok) continue;
+        bprintf(b, "<figure>");
+        snprintf(alt, sizeof alt, "%s crop", w->cfg->name);
+        html_img(b, c, w->cfg->name, "_crop", dw, alt);
+        bprintf(b, "<figcaption><b>");
+        bescape(b, w->cfg->label, 0);
+        bprintf(b, "</b></figcaption></figure>\n");
+    }
+    bprintf(b, "</div>\n");
 }
 
 int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const char *command)
@@ -312,6 +358,7 @@ int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const cha
                 c->w, c->h, c->truth_samples, c->truth_samples, c->truth_seconds, c->measured,
                 c->pixels, c->crop_size, c->crop_size, c->crop_x, c->crop_y, c->crop_zoom, p);
         html_table(&b, c);
+        html_crop_strip(&b, c);
         bprintf(&b, "<div class=\"grid\">\n");
         html_figure(&b, c, "truth", "ground truth",
                     "<br>white: pixels measured; red frame: the crop", 0);

@@ -117,12 +117,13 @@ done:
 }
 
 int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stats, int threads,
-            cmp_result *r)
+            int runs, cmp_result *r)
 {
     run_job jb;
     size_t n = (size_t)v->w * (size_t)v->h;
-    double t0, secs = 0.0, texels = 0.0;
-    int j, failed = 0;
+    double *wall = NULL, *ns = NULL;
+    int j, run, failed = 0;
+    if (runs < 1) runs = 1;
     memset(r, 0, sizeof *r);
     memset(&jb, 0, sizeof jb);
     jb.v = v;
@@ -135,26 +136,41 @@ int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stat
     jb.row_texels = calloc((size_t)v->h, sizeof *jb.row_texels);
     jb.row_queries = calloc((size_t)v->h, sizeof *jb.row_queries);
     jb.row_failed = calloc((size_t)v->h, 1);
-    if (!r->rgba || !jb.row_seconds || !jb.row_texels || !jb.row_queries || !jb.row_failed) {
+    wall = malloc(sizeof *wall * (size_t)runs);
+    ns = malloc(sizeof *ns * (size_t)runs);
+    if (!r->rgba || !jb.row_seconds || !jb.row_texels || !jb.row_queries || !jb.row_failed ||
+        !wall || !ns) {
         failed = 1;
     } else {
         cmp_fill_untextured(v, r->rgba);
-        t0 = cmp_now();
-        render_parallel_rows(v->h, threads, run_row, &jb, NULL, NULL);
-        r->seconds = cmp_now() - t0;
-        for (j = 0; j < v->h; ++j) {
-            secs += jb.row_seconds[j];
-            texels += jb.row_texels[j];
-            r->queries += jb.row_queries[j];
-            failed |= jb.row_failed[j];
+        /* Every run writes the same values into the same image (the engines
+         * are deterministic); only the clock differs. */
+        for (run = 0; run < runs && !failed; ++run) {
+            double t0 = cmp_now(), secs = 0.0, texels = 0.0;
+            render_parallel_rows(v->h, threads, run_row, &jb, NULL, NULL);
+            wall[run] = cmp_now() - t0;
+            r->queries = 0;
+            for (j = 0; j < v->h; ++j) {
+                secs += jb.row_seconds[j];
+                texels += jb.row_texels[j];
+                r->queries += jb.row_queries[j];
+                failed |= jb.row_failed[j];
+            }
+            ns[run] = r->queries ? 1e9 * secs / (double)r->queries : 0.0;
+            r->texels = !stats ? -1.0 : r->queries ? texels / (double)r->queries : 0.0;
         }
-        r->ns_per_sample = r->queries ? 1e9 * secs / (double)r->queries : 0.0;
-        r->texels = !stats ? -1.0 : r->queries ? texels / (double)r->queries : 0.0;
+        if (!failed) {
+            r->runs = runs;
+            r->seconds = cmp_median(wall, runs);
+            r->ns_per_sample = cmp_median(ns, runs);
+        }
     }
     free(jb.row_seconds);
     free(jb.row_texels);
     free(jb.row_queries);
     free(jb.row_failed);
+    free(wall);
+    free(ns);
     if (failed) cmp_result_free(r);
     return failed;
 }
@@ -178,8 +194,8 @@ static int sample_fn(void *ctx, int texture, const sample_query *q, const sample
     return sample_batch(render_scene_texture(c->sc, texture), &c->smp, &a) == SAMPLE_OK ? 0 : 1;
 }
 
-int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, cmp_result *r, char *err,
-                   size_t errlen)
+int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, int runs, cmp_result *r,
+                   char *err, size_t errlen)
 {
     sample_ctx ctx;
     ctx.sc = v->sc;
@@ -188,7 +204,7 @@ int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, cmp_resu
         snprintf(err, errlen, "%s: invalid sampler state", c->name);
         return 1;
     }
-    if (cmp_run(v, c->pick.f->corners, sample_fn, &ctx, 1, threads, r)) {
+    if (cmp_run(v, c->pick.f->corners, sample_fn, &ctx, 1, threads, runs, r)) {
         snprintf(err, errlen, "%s: out of memory or sampling failed", c->name);
         return 1;
     }

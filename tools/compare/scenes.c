@@ -1,31 +1,86 @@
 /*
- * The comparison set: the renderer's built-in checkerboard plane
- * to the horizon, grid teapot, teapot with the photograph and photograph on
- * a tilted plane ("teapot-image", "photo-plane": testimages/photo.jpg of the
- * source tree, read through libsample_io), and one scene of compare's own,
- * a minified zone plate. The photo scenes are the renderer's, not copies,
- * so that `texsample render` and `texsample compare` show the same view.
+ * The comparison set (doc/comparison.md, "The scenes"): the renderer's
+ * built-in checkerboard plane to the horizon and photograph on a tilted
+ * plane, and compare's own framings: the grid teapot and the teapot with
+ * the photograph, whole in the picture, and two zone plates, one minified
+ * face-on and one on an oblique plane. Compare shows the filtered texture
+ * only, so its own scenes carry no lights or environment.
  */
 #include "cmp_internal.h"
 
 #include <stdio.h>
 #include <string.h>
 
-const char *const cmp_scene_names[] = {"plane", "teapot", "teapot-image", "zoneplate",
-                                       "photo-plane", NULL};
+const char *const cmp_scene_names[] = {"plane",         "teapot",      "teapot-image", "zoneplate",
+                                       "zoneplate-oblique", "photo-plane", NULL};
 const char *const cmp_default_scenes[] = {"plane", "teapot", NULL};
 
-/* The zone plate, minified: the renderer's built-in shows its 256-texel
- * texture one texel per pixel at 256 × 256 (nothing to filter). Here
- * cos(π k r²) with k = 700 reaches 495 cycles per unit in the corners,
- * about 2 cycles per pixel at 256 × 256, baked at 1024 texels (Nyquist 512). */
+/* The renderer's teapot scenes (Fig. 10 of Blinn & Newell) look from the
+ * same direction but frame the body, so the spout leaves the picture. Here
+ * the view axis goes through the middle of the teapot's extent on the
+ * screen (handle to spout tip, foot to knob) and the field of view takes
+ * all of it with a margin: 8 % of the side left and right
+ * (tests/compare_scenes.c checks that none of the outer 4 % sees it). */
+#define TEAPOT_VIEW                                                                       \
+    "{\"camera\":{\"eye\":[6.5,-8.5,5.2],\"look\":[0.52,0.24,1.45],\"up\":[0,0,1],\"fov\":33}," \
+    "\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\"},"
+#define TEAPOT_OBJECT                                                    \
+    "\"materials\":[{\"name\":\"glaze\",\"texture\":\"t\"}],"            \
+    "\"objects\":[{\"type\":\"teapot\",\"material\":\"glaze\"}]}"
+/* The pattern of the renderer's teapot: Fig. 2's grid of parametric lines. */
+static const char teapot_json[] =
+    TEAPOT_VIEW "\"textures\":[{\"name\":\"t\",\"type\":\"grid\",\"freq\":4,\"width\":0.12,"
+    "\"a\":[0.85,0.8,0.65,1],\"b\":[0.08,0.15,0.55,1]}]," TEAPOT_OBJECT;
+/* testimages/photo.jpg on every patch (REPEAT across patch seams). */
+static const char teapot_image_json[] =
+    TEAPOT_VIEW "\"textures\":[{\"name\":\"t\",\"type\":\"image\",\"file\":\"photo.jpg\"}],"
+    TEAPOT_OBJECT;
+
+/* The zone plate cos(π k r²) on the unit square: k·r cycles per unit at
+ * distance r from the centre, baked at n texels (Nyquist n/2 cycles per
+ * unit, above k/√2 in the corners), each the mean of m × m samples. */
+#define ZONEPLATE_SQUARE(k, n, m)                                                             \
+    "\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\"},"                    \
+    "\"textures\":[{\"name\":\"zp\",\"type\":\"zoneplate\",\"amount\":" #k ",\"size\":" #n ",\"samples\":" #m "}]," \
+    "\"materials\":[{\"name\":\"m\",\"texture\":\"zp\"}],"                                  \
+    "\"objects\":[{\"type\":\"polygons\",\"polygons\":[{\"v\":[[0,0,0],[1,0,0],[1,1,0],[0,1,0]]," \
+    "\"st\":[[0,0],[1,0],[1,1],[0,1]]}]}]}"
+/* Face-on, filling the picture, k = 700 (495 cycles per unit in the
+ * corners), 1024 texels: about 4 texels per pixel at 256 × 256 in both
+ * directions everywhere (the renderer's built-in zone plate maps texels
+ * 1:1 onto pixels, so nothing would be filtered). Every isotropic mip
+ * filter then reads one level at λ = 2 alone, and they score alike. */
 static const char zoneplate_json[] =
     "{\"camera\":{\"eye\":[0.5,0.5,1.2071067811865475],\"look\":[0.5,0.5,0],\"up\":[0,1,0],"
-    "\"fov\":45},\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\"},"
-    "\"textures\":[{\"name\":\"zp\",\"type\":\"zoneplate\",\"amount\":700,\"size\":1024}],"
-    "\"materials\":[{\"name\":\"m\",\"texture\":\"zp\"}],"
-    "\"objects\":[{\"type\":\"polygons\",\"polygons\":[{\"v\":[[0,0,0],[1,0,0],[1,1,0],[0,1,0]],"
-    "\"st\":[[0,0],[1,0],[1,1],[0,1]]}]}]}";
+    "\"fov\":45}," ZONEPLATE_SQUARE(700, 1024, 4);
+/* The square seen from low over its near edge, k = 300 (212 cycles per
+ * unit in the corners), 1024 texels like the face-on plate (at 512 the
+ * bake's own blur would put a floor under every filter's error near the
+ * eye). At most 0.21 cycles per texel, so 2 × 2 samples per texel give
+ * its mean within 2 % (4 × 4: 0.4 %) at a quarter of the bake. At 96 × 96
+ * the anisotropy goes from 1.5 at the bottom of the picture to 8.9 at the
+ * far edge and λ from 1.8 to 6.5, so the footprint's size and shape and
+ * the local frequency all vary over the picture (tests/compare_scenes.c). */
+static const char zoneplate_oblique_json[] =
+    "{\"camera\":{\"eye\":[0.5,-0.15,0.15],\"look\":[0.5,0.6,0],\"up\":[0,0,1],\"fov\":50},"
+    ZONEPLATE_SQUARE(300, 1024, 2);
+
+static const struct {
+    const char *name, *json;
+} own_scenes[] = {
+    {"teapot", teapot_json},
+    {"teapot-image", teapot_image_json},
+    {"zoneplate", zoneplate_json},
+    {"zoneplate-oblique", zoneplate_oblique_json},
+};
+
+/* Image files of the scenes: testimages/ of the source tree, as for the
+ * renderer's built-in scenes (tools/compare.cmake). */
+#ifdef TEXSAMPLE_SOURCE_DIR
+#define CMP_IMAGES TEXSAMPLE_SOURCE_DIR "/testimages"
+#else
+#define CMP_IMAGES "testimages"
+#endif
 
 static void file_label(const char *path, char *label, size_t len)
 {
@@ -47,11 +102,16 @@ static void file_label(const char *path, char *label, size_t len)
 int cmp_scene_open(const char *name, int size, render_scene **out, char *label, size_t labellen,
                    char *err, size_t errlen)
 {
-    int k;
+    size_t k;
     snprintf(label, labellen, "%s", name);
-    if (strcmp(name, "zoneplate") == 0)
-        return render_scene_parse(zoneplate_json, strlen(zoneplate_json), size, size, out, err,
-                                  errlen);
+    for (k = 0; k < sizeof own_scenes / sizeof own_scenes[0]; ++k)
+        if (strcmp(name, own_scenes[k].name) == 0) {
+            render_parse_options po;
+            render_parse_options_init(&po);
+            po.base_dir = CMP_IMAGES;
+            return render_scene_parse_ex(own_scenes[k].json, strlen(own_scenes[k].json), size,
+                                         size, &po, out, err, errlen);
+        }
     for (k = 0; render_builtin_names[k]; ++k)
         if (strcmp(name, render_builtin_names[k]) == 0)
             return render_scene_builtin(name, size, size, out, err, errlen);

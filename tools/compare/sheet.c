@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { SHEET_TILE = 256, SHEET_LABEL = 18, SHEET_GAP = 4 };
+enum { SHEET_TILE = 256, SHEET_LABEL = 19, SHEET_GAP = 4 };
 
 static int write_pic(const char *dir, const cmp_scene_result *s, const char *what,
                      const char *suffix, const cmp_pic *p)
@@ -88,7 +88,12 @@ int cmp_scene_pictures(const char *dir, const cmp_scene_result *s, const cmp_tru
         if (write_pic(dir, s, name, "", &pic[0]) ||
             write_pic(dir, s, name, r < 0 ? "_mask" : "_err", &pic[1]))
             goto out;
-        cmp_pic_text(&sheet, x + 2, 5, name, 1, fg);
+        {
+            /* The name in the column's width: two lines of the label band. */
+            char lines[2][CMP_LINE_MAX];
+            int nl = cmp_text_wrap(name, tw - 2, 1, lines, 2), l;
+            for (l = 0; l < nl; ++l) cmp_pic_text(&sheet, x + 2, nl == 1 ? 6 : 1 + 9 * l, lines[l], 1, fg);
+        }
         for (k = 0; k < 3; ++k)
             if (pic[k].rgb)
                 cmp_pic_blit(&sheet, &pic[k], x, y[k],

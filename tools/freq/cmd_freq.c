@@ -22,8 +22,9 @@ static const char help[] =
     "sampled with m texels per pixel along the wave and m*r across it, at many\n"
     "offsets; the least-squares amplitude at the screen frequency F = f*m (below\n"
     "0.5 cycles/pixel: pass-band response) or at its alias (above: leakage).\n"
-    "Writes freq.csv (every curve), summary.csv, summary.md, plot_r*_t*.svg and\n"
-    ".png, zone_*.png and index.html into the output folder.\n"
+    "Writes freq.csv (every curve), summary.csv, summary.md, plot_r*_t*.svg\n"
+    "(labelled figures, also shown in the page), zone_*.png and index.html into\n"
+    "the output folder.\n"
     "\n"
     "Options:\n"
     "  --out DIR          output folder (default freq-out; created if missing)\n"
@@ -41,7 +42,7 @@ static const char help[] =
     "  --fmax F           top of the grid, cycles/pixel (default 2)\n"
     "  --width N, --rows N, --phases N\n"
     "                     pixels per row, rows, offsets (default 16, 1, 64)\n"
-    "  --no-png           SVG plots only (no PNG, no zone plates)\n"
+    "  --no-png           no PNG pictures (no zone plates)\n"
     "\n"
     "Filters (the tools' shared registry, doc/comparison.md):\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";

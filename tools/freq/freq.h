@@ -12,8 +12,8 @@
  *   sweep.c     the (m, θ, r) × filter × frequency loops
  *   summary.c   per-curve and per-filter numbers
  *   report.c    CSV, Markdown and HTML text
- *   svg.c       SVG plots
- *   raster.c    the same plots as RGBA pictures (PNG for the HTML page)
+ *   plot.c      plot geometry
+ *   svg.c       SVG plots (files of their own and inlined in the page)
  *   strbuf.c    a growable text buffer
  *
  * GEOMETRY (doc/frequency-tests.md §2). Texel space of the base level,
@@ -213,11 +213,11 @@ void fq_report_csv(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
 /* summary.csv and the Markdown table (per filter, then per filter and r). */
 void fq_report_summary_csv(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
 void fq_report_summary_md(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
-/* The HTML page. `plots` holds two relative file names per (r, θ), r-major:
- * the picture to show (PNG, or the SVG when there is no PNG) and the SVG to
- * link; `zone` the zone-plate pictures (one per backend, NULL entries
- * skipped) or NULL; `command` the command line that produced it. */
-void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *plots,
+/* The HTML page, with every figure inlined (fq_svg_figure). `svgs` holds
+ * the relative file name of each figure's SVG, per (r, θ), r-major, which
+ * the page links; `zone` the zone-plate pictures (one per backend, NULL
+ * entries skipped) or NULL; `command` the command line that produced it. */
+void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *svgs,
                     const char *const *zone, const char *command, fq_buf *out);
 
 /* ---- Zone plate (zone.c) -------------------------------------------------- */
@@ -234,19 +234,23 @@ sample_status fq_zone_texture(sample_texture **out, float **texels, sample_error
  * (½ + ½·value), caller frees; NULL with a message on failure. */
 float *fq_zone_render(const fq_backend *b, void *ctx, char *err, size_t errlen);
 
-/* ---- Plots (svg.c, raster.c) --------------------------------------------- */
+/* ---- Plots (plot.c, svg.c) ----------------------------------------------- */
 
-/* Plot geometry shared by the SVG and raster renderings: one figure per
- * (θ, r), one panel per m (3 columns), response 0 … FQ_PLOT_YMAX against
- * F = 0 … plan->f_max. */
+/* Plot geometry: one figure per (θ, r), a title line, one panel per m
+ * (3 columns), response 0 … FQ_PLOT_YMAX against F = 0 … plan->f_max,
+ * then the legend. */
 #define FQ_PLOT_YMAX 1.25
+#define FQ_FIG_TITLE_H 26
 #define FQ_PANEL_W 300
-#define FQ_PANEL_H 200
-#define FQ_PANEL_MARGIN_L 40
+#define FQ_PANEL_H 210
+#define FQ_PANEL_MARGIN_L 48
 #define FQ_PANEL_MARGIN_T 24
-#define FQ_PANEL_MARGIN_B 28
-#define FQ_PANEL_MARGIN_R 10
+#define FQ_PANEL_MARGIN_B 40
+#define FQ_PANEL_MARGIN_R 12
 #define FQ_PLOT_COLS 3
+/* The axis names, with their units (|H| is a ratio of amplitudes). */
+#define FQ_PLOT_XLABEL "screen frequency F (cycles/pixel)"
+#define FQ_PLOT_YLABEL "|H| (output/input)"
 
 typedef struct fq_figure {
     int width, height, legend_h;
@@ -270,10 +274,9 @@ unsigned fq_plot_color(int k);
 void fq_ideal_points(const fq_plan *plan, double F[4], double h[4]);
 double fq_ideal(double F);
 
-void fq_svg_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, fq_buf *out);
-/* The same figure rasterized: width × height linear RGBA floats (caller
- * frees), NULL when out of memory. */
-float *fq_raster_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, int *w,
-                        int *h);
+/* The figure of (θ index, r index) as SVG text: standalone 1 for a file of
+ * its own (with the XML declaration), 0 for inlining in HTML. */
+void fq_svg_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, int standalone,
+                   fq_buf *out);
 
 #endif

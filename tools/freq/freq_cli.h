@@ -36,8 +36,8 @@ void fq_oiio_backend(const tool_pick *p, fq_oiio_file *file, fq_oiio_cfg *cfg, f
 void fq_oiio_file_clear(fq_oiio_file *file);
 
 /* Write every output of a finished sweep into `dir` (created if missing):
- * freq.csv, summary.csv, summary.md, plot_r*_t*.svg (and .png when built
- * with libsample_io and png is set), zone_*.png, index.html. `zone` holds
+ * freq.csv, summary.csv, summary.md, plot_r*_t*.svg, zone_*.png (when
+ * built with libsample_io and png is set), index.html. `zone` holds
  * one zone-plate picture per backend (may be NULL or hold NULLs). Returns
  * 0, or −1 with a message in err. */
 int fq_write_outputs(const char *dir, const fq_plan *plan, const fq_sweep *s, float *const *zone,

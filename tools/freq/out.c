@@ -1,6 +1,6 @@
 /* Writing the outputs of `texsample freq`: every file is built in memory and
- * written atomically (cli_write_file); pictures go through libsample_io when
- * texsample has it, and the HTML page falls back to the SVGs otherwise. */
+ * written atomically (cli_write_file); the zone-plate pictures go through
+ * libsample_io when texsample has it (the page leaves them out otherwise). */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 #include "freq_cli.h"
@@ -56,38 +56,20 @@ static int write_png(const char *dir, const char *name, const float *rgba, int w
 #endif
 }
 
-/* The figures: SVG always, PNG when possible; names[2k] is what the page
- * shows, names[2k + 1] the SVG. */
-static int write_figures(const char *dir, const fq_plan *plan, const fq_sweep *s, int png,
+/* The figures as SVG files; names[k] gets figure k's file name. */
+static int write_figures(const char *dir, const fq_plan *plan, const fq_sweep *s,
                          char (*names)[64], char *err, size_t errlen)
 {
     int ir, it, k = 0;
     for (ir = 0; ir < plan->nr; ++ir)
-        for (it = 0; it < plan->ntheta; ++it, k += 2) {
+        for (it = 0; it < plan->ntheta; ++it, ++k) {
             fq_buf b = {0};
-            int rc, done = 0;
-            char svg[64];
-            snprintf(svg, sizeof svg, "plot_r%g_t%g.svg", plan->r[ir], plan->theta_deg[it]);
-            memcpy(names[k], svg, sizeof svg);
-            memcpy(names[k + 1], svg, sizeof svg);
-            fq_svg_figure(plan, s, it, ir, &b);
-            rc = write_buf(dir, names[k + 1], &b, err, errlen);
+            int rc;
+            snprintf(names[k], 64, "plot_r%g_t%g.svg", plan->r[ir], plan->theta_deg[it]);
+            fq_svg_figure(plan, s, it, ir, 1, &b);
+            rc = write_buf(dir, names[k], &b, err, errlen);
             fq_buf_free(&b);
             if (rc != 0) return -1;
-            if (png) {
-                int w, h;
-                float *pic = fq_raster_figure(plan, s, it, ir, &w, &h);
-                char name[64];
-                if (!pic) {
-                    snprintf(err, errlen, "out of memory for a plot");
-                    return -1;
-                }
-                snprintf(name, sizeof name, "plot_r%g_t%g.png", plan->r[ir], plan->theta_deg[it]);
-                done = write_png(dir, name, pic, w, h, err, errlen);
-                free(pic);
-                if (done < 0) return -1;
-                if (done) snprintf(names[k], 64, "%s", name);
-            }
         }
     return 0;
 }
@@ -96,8 +78,8 @@ int fq_write_outputs(const char *dir, const fq_plan *plan, const fq_sweep *s, fl
                      int png, const char *command, char *err, size_t errlen)
 {
     int nfig = plan->nr * plan->ntheta, k, rc = 0;
-    char(*names)[64] = (char(*)[64])calloc((size_t)nfig * 2, 64);
-    const char **plots = (const char **)calloc((size_t)nfig * 2, sizeof *plots);
+    char(*names)[64] = (char(*)[64])calloc((size_t)nfig, 64);
+    const char **plots = (const char **)calloc((size_t)nfig, sizeof *plots);
     char(*znames)[64] = (char(*)[64])calloc((size_t)plan->nbackends, 64);
     const char **zlist = (const char **)calloc((size_t)plan->nbackends, sizeof *zlist);
     fq_buf b = {0};
@@ -124,7 +106,7 @@ int fq_write_outputs(const char *dir, const fq_plan *plan, const fq_sweep *s, fl
         rc = write_buf(dir, "summary.md", &b, err, errlen);
         fq_buf_free(&b);
     }
-    if (rc == 0) rc = write_figures(dir, plan, s, png, names, err, errlen);
+    if (rc == 0) rc = write_figures(dir, plan, s, names, err, errlen);
     for (k = 0; rc == 0 && k < plan->nbackends; ++k) {
         int done;
         if (!zone || !zone[k] || !png) continue;
@@ -134,7 +116,7 @@ int fq_write_outputs(const char *dir, const fq_plan *plan, const fq_sweep *s, fl
         if (done > 0) zlist[k] = znames[k];
     }
     if (rc == 0) {
-        for (k = 0; k < 2 * nfig; ++k) plots[k] = names[k];
+        for (k = 0; k < nfig; ++k) plots[k] = names[k];
         fq_report_html(plan, s, plots, zlist, command, &b);
         rc = write_buf(dir, "index.html", &b, err, errlen);
         fq_buf_free(&b);

@@ -1,5 +1,5 @@
-/* Plot geometry shared by the SVG and the raster renderings, so that the
- * two pictures of a figure agree to the pixel. */
+/* Plot geometry of the SVG figures: where the title, the panels and the
+ * legend go, and the data → figure mapping inside a panel. */
 #include "freq.h"
 
 #define AXES_W (FQ_PANEL_W - FQ_PANEL_MARGIN_L - FQ_PANEL_MARGIN_R)
@@ -13,7 +13,7 @@ fq_figure fq_figure_size(const fq_plan *plan)
     int rows = (plan->nm + FQ_PLOT_COLS - 1) / FQ_PLOT_COLS;
     f.width = FQ_PLOT_COLS * FQ_PANEL_W;
     f.legend_h = ((plan->nbackends + LEGEND_COLS - 1) / LEGEND_COLS + 1) * LEGEND_ROW;
-    f.height = rows * FQ_PANEL_H + f.legend_h;
+    f.height = FQ_FIG_TITLE_H + rows * FQ_PANEL_H + f.legend_h;
     return f;
 }
 
@@ -21,7 +21,7 @@ void fq_panel_origin(const fq_plan *plan, int k, double *x0, double *y0)
 {
     (void)plan;
     *x0 = (k % FQ_PLOT_COLS) * FQ_PANEL_W + FQ_PANEL_MARGIN_L;
-    *y0 = (k / FQ_PLOT_COLS) * FQ_PANEL_H + FQ_PANEL_MARGIN_T;
+    *y0 = FQ_FIG_TITLE_H + (k / FQ_PLOT_COLS) * FQ_PANEL_H + FQ_PANEL_MARGIN_T;
 }
 
 double fq_plot_x(const fq_plan *plan, double F) { return AXES_W * F / plan->f_max; }
@@ -41,7 +41,7 @@ void fq_legend_pos(const fq_plan *plan, int k, double *x, double *y)
 {
     int rows = (plan->nm + FQ_PLOT_COLS - 1) / FQ_PLOT_COLS;
     *x = 20 + (k % LEGEND_COLS) * (FQ_PLOT_COLS * FQ_PANEL_W / LEGEND_COLS);
-    *y = rows * FQ_PANEL_H + (k / LEGEND_COLS + 1) * LEGEND_ROW;
+    *y = FQ_FIG_TITLE_H + rows * FQ_PANEL_H + (k / LEGEND_COLS + 1) * LEGEND_ROW;
 }
 
 unsigned fq_plot_color(int k)

@@ -157,15 +157,14 @@ void fq_report_summary_md(const fq_plan *plan, const fq_sweep *s, fq_buf *out)
     table_by_r(plan, s, &MD, out);
 }
 
-static void html_list(fq_buf *out, const char *what, const double *v, int n, const char *unit)
+/* "1.5, 5.7, 16" (each value followed by `unit`). */
+static void html_list(fq_buf *out, const double *v, int n, const char *unit)
 {
     int k;
-    fq_buf_printf(out, "%s ", what);
     for (k = 0; k < n; ++k) fq_buf_printf(out, "%s%g%s", k ? ", " : "", v[k], unit);
-    fq_buf_printf(out, "; ");
 }
 
-void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *plots,
+void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *svgs,
                     const char *const *zone, const char *command, fq_buf *out)
 {
     int b, it, ir;
@@ -175,10 +174,12 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *p
                   "body{font-family:sans-serif;max-width:1000px;margin:1em auto;padding:0 1em}"
                   "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;"
                   "padding:2px 6px;text-align:right}td:first-child,th:first-child{text-align:left}"
-                  "img{max-width:100%%}code{background:#f4f4f4}.sw{display:inline-block;width:2em;"
-                  "height:0.4em;margin-right:0.4em;vertical-align:middle}"
-                  "figure{margin:1em 0}</style></head><body>\n"
-                  "<h1>Frequency tests</h1>\n<p>Produced by <code>");
+                  "img{max-width:100%%}svg.figure{display:block;max-width:100%%;height:auto}"
+                  "code{background:#f4f4f4}figure{margin:1em 0}figcaption{margin-top:0.3em}"
+                  ".zones{display:flex;flex-wrap:wrap;gap:1em}.zones figure{margin:0;width:%dpx}"
+                  "</style></head><body>\n"
+                  "<h1>Frequency tests</h1>\n<p>Produced by <code>",
+                  FQ_ZONE_PIXELS);
     {
         const char *c;
         for (c = command; *c; ++c) {
@@ -196,35 +197,32 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *p
                   "or at its alias frequency F &minus; round(F) (above: the leakage, ideally 0). "
                   "The dashed line is the ideal low-pass. Method and decisions: "
                   "doc/frequency-tests.md. Data: <a href=\"freq.csv\">freq.csv</a>, "
-                  "<a href=\"summary.csv\">summary.csv</a>.</p>\n<p>");
-    html_list(out, "m =", plan->m, plan->nm, "");
-    html_list(out, "&theta; =", plan->theta_deg, plan->ntheta, "&deg;");
-    html_list(out, "r =", plan->r, plan->nr, "");
-    fq_buf_printf(out, "texture %d &times; %d, %d &times; %d pixels &times; %d offsets per point.</p>\n",
+                  "<a href=\"summary.csv\">summary.csv</a>.</p>\n<p>m = ");
+    html_list(out, plan->m, plan->nm, "");
+    fq_buf_printf(out, "; &theta; = ");
+    html_list(out, plan->theta_deg, plan->ntheta, "&deg;");
+    fq_buf_printf(out, "; r = ");
+    html_list(out, plan->r, plan->nr, "");
+    fq_buf_printf(out, "; texture %d &times; %d, %d &times; %d pixels &times; %d offsets per point.</p>\n",
                   plan->n, plan->n, plan->width, plan->rows, plan->phases);
     fq_buf_printf(out, "<h2>Summary</h2>\n<p>Means weigh every (m, &theta;, r) curve "
                        "equally; worst is the lowest pass-band mean and the highest aliasing "
                        "mean of any one curve.</p>\n");
     table_overall(plan, s, &HTML, out);
     table_by_r(plan, s, &HTML, out);
-    fq_buf_printf(out, "<h2>Curves</h2>\n<p>");
-    for (b = 0; b < plan->nbackends; ++b)
-        fq_buf_printf(out, "<span class=\"sw\" style=\"background:#%06x\"></span>%s&emsp;",
-                      fq_plot_color(b), plan->backends[b]->label);
-    fq_buf_printf(out, "</p>\n<p>Panels: one per m (left to right, top to bottom: ");
-    html_list(out, "m =", plan->m, plan->nm, "");
-    fq_buf_printf(out, "), x from 0 to %g cycles/pixel (grid every 0.25), y from 0 to %g "
-                       "(grid every 0.25). Click a picture for its labelled SVG.</p>\n",
-                  plan->f_max, FQ_PLOT_YMAX);
+    fq_buf_printf(out, "<h2>Curves</h2>\n<p>One figure per (&theta;, r), one panel per m "
+                       "(left to right, top to bottom: m = ");
+    html_list(out, plan->m, plan->nm, "");
+    fq_buf_printf(out, "); each figure names its axes and its filters and links its SVG "
+                       "file.</p>\n");
     for (ir = 0; ir < plan->nr; ++ir) {
         fq_buf_printf(out, "<h3>r = %g</h3>\n", plan->r[ir]);
         for (it = 0; it < plan->ntheta; ++it) {
-            const char *pic = plots[2 * (ir * plan->ntheta + it)];
-            const char *svg = plots[2 * (ir * plan->ntheta + it) + 1];
-            fq_buf_printf(out, "<figure><a href=\"%s\"><img src=\"%s\" alt=\"r = %g, theta = %g\"></a>"
-                               "<figcaption>&theta; = %g&deg;, r = %g</figcaption></figure>\n",
-                          svg, pic, plan->r[ir], plan->theta_deg[it], plan->theta_deg[it],
-                          plan->r[ir]);
+            fq_buf_printf(out, "<figure>\n");
+            fq_svg_figure(plan, s, it, ir, 0, out);
+            fq_buf_printf(out, "<figcaption>&theta; = %g&deg;, r = %g: <a href=\"%s\">SVG "
+                               "file</a></figcaption></figure>\n",
+                          plan->theta_deg[it], plan->r[ir], svgs[ir * plan->ntheta + it]);
         }
     }
     for (b = 0; zone && b < plan->nbackends && !zone[b]; ++b)
@@ -233,13 +231,15 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *p
         fq_buf_printf(out, "<h2>Zone plate</h2>\n<p>cos(&pi;(x&sup2; + y&sup2;)/N), local "
                            "frequency 0 at the centre to 0.5 cycles/texel at the edges, seen "
                            "at 2 texels per pixel: every ring pattern away from the centre is "
-                           "aliasing.</p>\n<p>");
+                           "aliasing.</p>\n<div class=\"zones\">\n");
         for (b = 0; b < plan->nbackends; ++b)
             if (zone[b])
-                fq_buf_printf(out, "<figure style=\"display:inline-block\"><img src=\"%s\" "
-                                   "alt=\"%s\"><figcaption>%s</figcaption></figure>\n",
-                              zone[b], plan->backends[b]->name, plan->backends[b]->label);
-        fq_buf_printf(out, "</p>\n");
+                fq_buf_printf(out, "<figure><a href=\"%s\"><img src=\"%s\" alt=\"%s\" "
+                                   "width=\"%d\" height=\"%d\"></a><figcaption>%s</figcaption>"
+                                   "</figure>\n",
+                              zone[b], zone[b], plan->backends[b]->name, FQ_ZONE_PIXELS,
+                              FQ_ZONE_PIXELS, plan->backends[b]->label);
+        fq_buf_printf(out, "</div>\n");
     }
     fq_buf_printf(out, "</body></html>\n");
 }
