@@ -77,6 +77,8 @@ _Static_assert(COUNT_OF(format_names) == SAMPLE_FORMAT_COUNT, "format_names");
 
 static const char *const kind_names[] = {
     [SAMPLE_TEXTURE_2D] = "2d",
+    [SAMPLE_TEXTURE_CUBE] = "cube",
+    [SAMPLE_TEXTURE_3D] = "3d",
 };
 _Static_assert(COUNT_OF(kind_names) == SAMPLE_TEXTURE_KIND_COUNT, "kind_names");
 

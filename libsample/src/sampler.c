@@ -11,7 +11,7 @@ void sample_sampler_init(sample_sampler *s)
     /* OpenGL 4.6 table 23.18 (sampler object state) initial values. */
     if (!s) return;
     memset(s, 0, sizeof *s);
-    s->wrap_s = s->wrap_t = SAMPLE_WRAP_REPEAT;
+    s->wrap_s = s->wrap_t = s->wrap_r = SAMPLE_WRAP_REPEAT;
     s->min_filter = SAMPLE_NEAREST_MIPMAP_LINEAR;
     s->mag_filter = SAMPLE_LINEAR;
     s->min_lod = -1000.0f;
@@ -37,7 +37,8 @@ void sample_mip_params_init(sample_mip_params *p)
 sample_status sample_sampler_validate(const sample_sampler *s)
 {
     if (!s) return SAMPLE_E_INVALID_ARGUMENT;
-    if ((unsigned)s->wrap_s >= SAMPLE_WRAP_COUNT || (unsigned)s->wrap_t >= SAMPLE_WRAP_COUNT)
+    if ((unsigned)s->wrap_s >= SAMPLE_WRAP_COUNT || (unsigned)s->wrap_t >= SAMPLE_WRAP_COUNT ||
+        (unsigned)s->wrap_r >= SAMPLE_WRAP_COUNT)
         return SAMPLE_E_INVALID_ARGUMENT;
     if ((unsigned)s->min_filter >= SAMPLE_FILTER_COUNT) return SAMPLE_E_INVALID_ARGUMENT;
     if (s->mag_filter != SAMPLE_NEAREST && s->mag_filter != SAMPLE_LINEAR && s->mag_filter != SAMPLE_CUBIC)

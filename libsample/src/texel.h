@@ -16,7 +16,8 @@
  * source — tiles held apart (tiled.c), a tile cache — hands out one texel
  * at a time through texel(): a pointer to texel (i, j) of level lv (both
  * in range), valid until the batch ends, or NULL when the source cannot
- * supply it (a tile that failed to load), which reads as `fill`. The
+ * supply it (a tile that failed to load), which reads as `fill`; `layer`
+ * is the face of a cube map or the slice of a volume (0 for 2D). The
  * filters do not change with the source: every texel read goes through
  * tex_texel (below), and the only readers that form addresses themselves
  * (the fast path's planners, the footprint filters' in-level spans, the
@@ -24,20 +25,26 @@
  * other texture through the reference loop, whose answers are the fast
  * path's bit for bit. */
 struct ls_texel_source {
-    const unsigned char *(*texel)(const struct ls_texel_source *src, int lv, int i, int j);
+    const unsigned char *(*texel)(const struct ls_texel_source *src, int lv, int i, int j, int layer);
     void (*destroy)(struct ls_texel_source *src); /* with the texture */
     float fill[4];
 };
 
+/* One level: d layers of w × h texels. A 2D texture's levels have one
+ * layer; a kind with more (a cube map's six faces, a volume's slices) keeps
+ * them in one array, layer after layer, so that a layer is addressed as a
+ * 2D level is. */
 struct sample_level {
-    int w, h;
+    int w, h, d;
     size_t stride;       /* bytes per row (resident) */
+    size_t slice;        /* bytes per layer (resident) */
     unsigned char *data; /* owned (resident), else NULL */
 };
 
 struct sample_texture {
     sample_texture_kind kind;
     int width, height, channels, nlevels;
+    int depth; /* layers of level 0 (tex_level_layers); 1 for 2D */
     sample_format format;
     size_t texel_bytes; /* channels × format bytes */
     size_t bytes;       /* all levels */
@@ -105,19 +112,29 @@ SAMPLE_FORCE_INLINE v4f tex_decode_v4(sample_format format, int nc, const unsign
     }
 }
 
-/* Texel (i, j) of a resident level. */
+/* Texel (i, j) of a resident level (its first layer). */
 static inline const unsigned char *tex_level_addr(const sample_texture *tex, const struct sample_level *L, int i, int j)
 {
     return L->data + (size_t)j * L->stride + (size_t)i * tex->texel_bytes;
 }
 
-/* The addressing of every texel read: texel (i, j) (both in range) of
- * level lv, from the texture's source; NULL when the source cannot supply
- * it. */
+/* The addressing of every texel read: texel (i, j) of layer `layer` (all
+ * in range) of level lv, from the texture's source; NULL when the source
+ * cannot supply it. */
+static inline const unsigned char *tex_texel_layer(const sample_texture *tex, int lv, int i, int j, int layer)
+{
+    if (SAMPLE_LIKELY(tex_resident(tex))) {
+        const struct sample_level *L = &tex->level[lv];
+        return tex_level_addr(tex, L, i, j) + (size_t)layer * L->slice;
+    }
+    return tex->source->texel(tex->source, lv, i, j, layer);
+}
+
+/* Texel (i, j) of a one-layer (2D) level: tex_texel_layer's layer 0. */
 static inline const unsigned char *tex_texel(const sample_texture *tex, int lv, int i, int j)
 {
     if (SAMPLE_LIKELY(tex_resident(tex))) return tex_level_addr(tex, &tex->level[lv], i, j);
-    return tex->source->texel(tex->source, lv, i, j);
+    return tex->source->texel(tex->source, lv, i, j, 0);
 }
 
 /* Decode texel (i, j) (both in range) of a resident level: the pyramid
@@ -128,16 +145,39 @@ static inline void tex_decode(const sample_texture *tex, const struct sample_lev
     v4_store(out, tex_decode_v4(tex->format, tex->channels, tex_level_addr(tex, L, i, j)));
 }
 
-/* Decode texel (i, j) (both in range) of level lv, from whatever source;
- * the source's fill colour where it has none. */
-static inline void tex_read(const sample_texture *tex, int lv, int i, int j, float out[4])
+/* Decode what tex_texel_layer addresses, p; the source's fill colour where
+ * p is NULL (the source has none). */
+static inline void tex_read_at(const sample_texture *tex, const unsigned char *p, float out[4])
 {
-    const unsigned char *p = tex_texel(tex, lv, i, j);
     if (!p) {
         memcpy(out, tex->source->fill, sizeof tex->source->fill);
         return;
     }
     v4_store(out, tex_decode_v4(tex->format, tex->channels, p));
+}
+
+/* Decode texel (i, j) (both in range) of level lv (layer 0), from
+ * whatever source. */
+static inline void tex_read(const sample_texture *tex, int lv, int i, int j, float out[4])
+{
+    tex_read_at(tex, tex_texel(tex, lv, i, j), out);
+}
+
+/* Decode texel (i, j) of layer `layer` of level lv, from whatever source. */
+static inline void tex_read_layer(const sample_texture *tex, int lv, int i, int j, int layer, float out[4])
+{
+    tex_read_at(tex, tex_texel_layer(tex, lv, i, j, layer), out);
+}
+
+/* Layers of level k: one for a 2D texture; a kind with more says how many
+ * here (a cube map six at every level, a volume its depth halved). */
+static inline int tex_level_layers(const sample_texture *tex, int k)
+{
+    (void)k;
+    switch (tex->kind) {
+    case SAMPLE_TEXTURE_2D:
+    default: return 1;
+    }
 }
 
 /* Encode linear RGBA (first `channels` values) into one texel of the
@@ -148,7 +188,8 @@ void ls_tex_encode(const sample_texture *tex, const float in[4], unsigned char *
  * NULL if out of memory. */
 sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int channels, sample_format format);
 
-/* Allocate level k's storage (size from the level rule); tex->bytes updated. */
+/* Allocate level k's storage (size from the level rule, tex_level_layers
+ * layers); tex->bytes updated. */
 sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err);
 
 #endif /* SAMPLE_TEXEL_H */

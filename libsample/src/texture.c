@@ -79,11 +79,13 @@ sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err)
     size_t bytes;
     L->w = level_dim(tex->width, k);
     L->h = level_dim(tex->height, k);
+    L->d = tex_level_layers(tex, k);
     L->stride = (size_t)L->w * tex->texel_bytes;
-    bytes = L->stride * (size_t)L->h;
+    L->slice = L->stride * (size_t)L->h;
+    bytes = L->slice * (size_t)L->d;
     L->data = (unsigned char *)tex_level_malloc(bytes);
     RETURN_ERROR_IF(!L->data, err, SAMPLE_E_OUT_OF_MEMORY,
-                    "cannot allocate %zu bytes for level %d (%d x %d)", bytes, k, L->w, L->h);
+                    "cannot allocate %zu bytes for level %d (%d x %d x %d)", bytes, k, L->w, L->h, L->d);
     tex->bytes += bytes;
     return SAMPLE_OK;
 }
@@ -104,6 +106,7 @@ sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int 
     tex->kind = kind;
     tex->width = width;
     tex->height = height;
+    tex->depth = 1;
     tex->channels = channels;
     tex->format = format;
     tex->texel_bytes = (size_t)channels * format_bytes[format];

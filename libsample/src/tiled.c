@@ -22,11 +22,13 @@ typedef struct tiled_source {
     unsigned char **tiles[SAMPLE_MAX_LEVELS];           /* row-major grid; NULL: missing */
 } tiled_source;
 
-static const unsigned char *tiled_texel(const struct ls_texel_source *src, int lv, int i, int j)
+static const unsigned char *tiled_texel(const struct ls_texel_source *src, int lv, int i, int j, int layer)
 {
     const tiled_source *t = (const tiled_source *)src;
     const int b = t->log2, m = (1 << b) - 1;
-    const unsigned char *tile = t->tiles[lv][(size_t)(j >> b) * (size_t)t->ntx[lv] + (size_t)(i >> b)];
+    const unsigned char *tile;
+    (void)layer; /* 2D textures only (sample_texture_tiled_copy) */
+    tile = t->tiles[lv][(size_t)(j >> b) * (size_t)t->ntx[lv] + (size_t)(i >> b)];
     if (!tile) return NULL;
     return tile + (((size_t)(j & m) << b) + (size_t)(i & m)) * t->texel_bytes;
 }
@@ -58,6 +60,7 @@ static sample_status tile_level(tiled_source *t, const sample_texture *from, sam
     RETURN_ERROR_IF(!t->tiles[lv], err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate the tile table of level %d", lv);
     to->level[lv].w = L->w;
     to->level[lv].h = L->h;
+    to->level[lv].d = L->d;
     for (ty = 0; ty < t->nty[lv]; ++ty)
         for (tx = 0; tx < t->ntx[lv]; ++tx) {
             /* Texels past the level's edge in a tile are never read; zero
@@ -84,8 +87,8 @@ sample_status sample_texture_tiled_copy(const sample_texture *tex, int tile_log2
     int lv;
     RETURN_ERROR_IF(!out, err, SAMPLE_E_INVALID_ARGUMENT, "output pointer is NULL");
     *out = NULL;
-    RETURN_ERROR_IF(!tex || !tex_resident(tex), err, SAMPLE_E_INVALID_ARGUMENT,
-                    "tiled copy: the texture must be resident");
+    RETURN_ERROR_IF(!tex || !tex_resident(tex) || tex->kind != SAMPLE_TEXTURE_2D, err, SAMPLE_E_INVALID_ARGUMENT,
+                    "tiled copy: the texture must be resident and 2D");
     RETURN_ERROR_IF(tile_log2 < 0 || tile_log2 > 12, err, SAMPLE_E_INVALID_ARGUMENT,
                     "tiled copy: tiles of 2^%d texels a side (0 to 12)", tile_log2);
     copy = ls_tex_new(tex->kind, tex->width, tex->height, tex->channels, tex->format);

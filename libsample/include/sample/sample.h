@@ -186,13 +186,17 @@ typedef struct sample_mip_params {
 SAMPLE_API void sample_mip_params_init(sample_mip_params *params);
 
 /* What a texture is, as OpenGL's texture targets say it (GL 4.6 §8.1):
- * the shape of its levels and the coordinates a query gives. Every
- * texture today is 2D (GL_TEXTURE_2D: levels of w × h texels, queries
- * (s, t) with a 2 × 2 Jacobian, sample_batch). Further kinds (cube maps,
- * 3D) will each have their own query type and batch entry point; the
- * filters and the texel addressing below them are shared. */
+ * the shape of its levels and the coordinates a query gives. A 2D texture
+ * (GL_TEXTURE_2D: levels of w × h texels) takes queries (s, t) with a
+ * 2 × 2 Jacobian (sample_batch). A cube map (GL_TEXTURE_CUBE_MAP: six
+ * square faces per level) and a 3D texture (GL_TEXTURE_3D: w × h × d
+ * texels per level) take 9-float queries (sample_query3) through their
+ * own batch entry points; the filters and the texel addressing below them
+ * are shared. */
 typedef enum sample_texture_kind {
     SAMPLE_TEXTURE_2D = 0,
+    SAMPLE_TEXTURE_CUBE = 1,
+    SAMPLE_TEXTURE_3D = 2,
     SAMPLE_TEXTURE_KIND_COUNT
 } sample_texture_kind;
 
@@ -278,6 +282,7 @@ enum {
 
 typedef struct sample_sampler {
     sample_wrap wrap_s, wrap_t;   /* default REPEAT */
+    sample_wrap wrap_r;           /* third coordinate of a 3D texture; default REPEAT */
     sample_filter min_filter;     /* default NEAREST_MIPMAP_LINEAR (GL default) */
     sample_filter mag_filter;     /* NEAREST, LINEAR or CUBIC; default LINEAR */
     float border_color[4];        /* linear RGBA; default 0,0,0,0 */
@@ -338,6 +343,25 @@ typedef struct sample_batch_args {
 SAMPLE_API sample_status sample_batch(const sample_texture *tex, const sample_sampler *sampler,
                            const sample_batch_args *args);
 
+/* A query of a cube map or a 3D texture: 9 floats, GLSL textureGrad's
+ * order. For a cube map p is the direction R (any length but zero) and
+ * dpdx, dpdy its screen derivatives; for a 3D texture p is (s, t, r) and
+ * dpdx, dpdy the columns of its 3 × 2 Jacobian. */
+typedef struct sample_query3 {
+    float p[3];
+    float dpdx[3];
+    float dpdy[3];
+} sample_query3;
+
+/* A batch of sample_query3 queries, as sample_batch_args. */
+typedef struct sample_batch3_args {
+    size_t count;
+    const sample_query3 *queries; /* count entries; required */
+    const float *lod_bias;        /* optional: per-query bias (GLSL `bias`) */
+    float *rgba;                  /* count × 4 results; required */
+    sample_stats *stats;          /* optional: count entries */
+} sample_batch3_args;
+
 /* One query; a thin wrapper over sample_batch(). */
 SAMPLE_API sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,
                          const sample_query *query, float rgba[4]);
@@ -364,7 +388,7 @@ SAMPLE_API int sample_footprint_parse(const char *name);
 SAMPLE_API const char *sample_mipgen_name(sample_mipgen mipgen);
 SAMPLE_API int sample_mipgen_parse(const char *name);
 SAMPLE_API const char *sample_format_name(sample_format format);
-SAMPLE_API const char *sample_texture_kind_name(sample_texture_kind kind); /* "2d" */
+SAMPLE_API const char *sample_texture_kind_name(sample_texture_kind kind); /* "2d", "cube", "3d" */
 
 /* ---- Colour helpers ---------------------------------------------------- */
 
