@@ -123,6 +123,25 @@ SAMPLE_FORCE_INLINE void fp_sums_add(fp_sums *s, double w, const float T[4])
     s->n++;
 }
 
+/* The two filters' weights (DESIGN §7), each written once as an
+ * expression that serves a double (the derivative passes in
+ * footprint_blinn_newell.c and footprint_ewa.c) and footprint_rows.c's
+ * vector lanes alike, so that both round the same way.
+ *
+ * Blinn–Newell's pyramid (1 − |x|)₊·(1 − |y|)₊ at a texel's position
+ * (x, y) in the pyramid's frame; ABS and POS are |·| and max(·, +0) of
+ * the operand type. */
+#define FP_BN_PYRAMID(x, y, ABS, POS) (POS(1.0 - ABS(x)) * POS(1.0 - ABS(y)))
+/* EWA's r² = A·du² + B·du·dv + C·dv² of the texel (du, dv) from the
+ * centre, with the row's constant term C·dv² given as cdv2. */
+#define FP_EWA_R2(A, B, cdv2, du, dv) ((A) * (du) * (du) + (B) * (du) * (dv) + (cdv2))
+/* EWA's table read at x = 128·r², e = ⌊x⌋: linear between lo = lut[e] and
+ * hi = lut[e + 1]. */
+#define FP_EWA_LERP(lo, hi, x, e) ((lo) + ((x) - (e)) * ((hi) - (lo)))
+
+/* max(x, +0) of a double (FP_BN_PYRAMID's POS). */
+static inline double fp_pos(double x) { return x > 0.0 ? x : 0.0; }
+
 /* EWA's weight, e^(−2r²) − e^(−2), interpolated in ls_fp_ewa_lut
  * (footprint_ewa.c) at r² ∈ [0, 1); its slope dw/dr² in *dwdr2 if asked
  * for. */
@@ -133,7 +152,7 @@ SAMPLE_FORCE_INLINE double fp_ewa_weight(double r2, double *dwdr2)
     int e = (int)x;
     if (e > 127) e = 127;
     if (dwdr2) *dwdr2 = (ls_fp_ewa_lut[e + 1] - ls_fp_ewa_lut[e]) * 128.0;
-    return ls_fp_ewa_lut[e] + (x - e) * (ls_fp_ewa_lut[e + 1] - ls_fp_ewa_lut[e]);
+    return FP_EWA_LERP(ls_fp_ewa_lut[e], ls_fp_ewa_lut[e + 1], x, e);
 }
 
 /* a ← a + s for an fp_accum that received nothing else (a level's sums

@@ -60,7 +60,7 @@ static double pyramid(double x, double y, double *gx, double *gy)
     if (ax >= 1.0 || ay >= 1.0) return 0.0;
     *gx = -(double)((x > 0.0) - (x < 0.0)) * (1.0 - ay);
     *gy = -(double)((y > 0.0) - (y < 0.0)) * (1.0 - ax);
-    return (1.0 - ax) * (1.0 - ay);
+    return FP_BN_PYRAMID(x, y, fabs, fp_pos);
 }
 
 /* Intersect [lo, hi] with {du : |a·du + b| ≤ 1}. */

@@ -128,7 +128,7 @@ typedef struct ewa_deriv {
 static int ewa_deriv_weight(const void *dp, double du, double dv, double *w, double *wu, double *wv)
 {
     const ewa_deriv *d = (const ewa_deriv *)dp;
-    const double A = d->A, B = d->B, C = d->C, r2 = A * du * du + B * du * dv + C * dv * dv;
+    const double A = d->A, B = d->B, C = d->C, r2 = FP_EWA_R2(A, B, C * dv * dv, du, dv);
     double dw;
     if (!(r2 < 1.0)) return 0;
     *w = fp_ewa_weight(r2 > 0.0 ? r2 : 0.0, &dw);

@@ -122,7 +122,7 @@ static inline lanes lanes_ewa_lut(lanes x)
     d4 lo = {ls_fp_ewa_lut[ie[0]], ls_fp_ewa_lut[ie[1]], ls_fp_ewa_lut[ie[2]], ls_fp_ewa_lut[ie[3]]};
     d4 hi = {ls_fp_ewa_lut[ie[0] + 1], ls_fp_ewa_lut[ie[1] + 1], ls_fp_ewa_lut[ie[2] + 1], ls_fp_ewa_lut[ie[3] + 1]};
 #endif
-    return lo + (x - __builtin_convertvector(ie, d4)) * (hi - lo);
+    return FP_EWA_LERP(lo, hi, x, __builtin_convertvector(ie, d4));
 }
 #else
 typedef double lanes;
@@ -133,7 +133,7 @@ typedef fp_sums sums_reg;
 static inline lanes lanes_set1(double x) { return x; }
 static inline lanes lanes_iota(void) { return 0.0; }
 static inline lanes lanes_abs(lanes x) { return fabs(x); }
-static inline lanes lanes_pos(lanes x) { return x > 0.0 ? x : 0.0; }
+static inline lanes lanes_pos(lanes x) { return fp_pos(x); }
 static inline LANES_MASK lanes_lt(lanes a, lanes b) { return a < b; }
 static inline LANES_MASK lanes_le(lanes a, lanes b) { return a <= b; }
 static inline lanes lanes_sqrt(lanes x) { return sqrt(x); }
@@ -141,11 +141,8 @@ static inline lanes lanes_select(LANES_MASK c, lanes a, lanes b) { return c ? a 
 static inline lanes lanes_inside(lanes r2, lanes x) { return r2 < 1.0 ? x : 0.0; }
 static inline lanes lanes_ceil(lanes x) { return fp_ceil(x); }
 static inline lanes lanes_floor(lanes x) { return fp_floor(x); }
-static inline lanes lanes_ewa_lut(lanes x)
-{
-    int e = (int)x;
-    return ls_fp_ewa_lut[e] + (x - e) * (ls_fp_ewa_lut[e + 1] - ls_fp_ewa_lut[e]);
-}
+/* fp_ewa_weight at r² = x / 128 (both scalings exact). */
+static inline lanes lanes_ewa_lut(lanes x) { return fp_ewa_weight(x * (1.0 / 128.0), NULL); }
 static inline void sums_load(sums_reg *r, const fp_sums *s) { *r = *s; }
 static inline void sums_store(fp_sums *s, const sums_reg *r) { *s = *r; }
 /* The one texel at p when w > 0 (w is ≥ +0 and not NaN). */
@@ -180,7 +177,7 @@ static inline void bn_consts(const double *par, double dv, row_consts *rc)
 
 static inline lanes bn_weights(const row_consts *rc, lanes du)
 {
-    return lanes_pos(1.0 - lanes_abs(rc->k[0] * du + rc->k[1])) * lanes_pos(1.0 - lanes_abs(rc->k[2] * du + rc->k[3]));
+    return FP_BN_PYRAMID(rc->k[0] * du + rc->k[1], rc->k[2] * du + rc->k[3], lanes_abs, lanes_pos);
 }
 
 /* EWA (footprint_ewa.c): the truncated Gaussian fp_ewa_weight(r²) where
@@ -197,7 +194,7 @@ static inline void ewa_consts(const double *par, double dv, row_consts *rc)
 
 static inline lanes ewa_weights(const row_consts *rc, lanes du)
 {
-    lanes r2 = rc->k[0] * du * du + rc->k[1] * du * rc->k[3] + rc->k[2];
+    lanes r2 = FP_EWA_R2(rc->k[0], rc->k[1], rc->k[2], du, rc->k[3]);
     return lanes_inside(r2, lanes_ewa_lut(lanes_inside(r2, lanes_pos(r2)) * 128.0));
 }
 

@@ -54,13 +54,14 @@
  * 6. INSTRUCTION SETS (doc/performance.md)
  *
  *   The sampling loops are built for several instruction sets — portable
- *   C ("scalar"), SSE2, AVX2 and AVX-512 on x86-64 — and the best one this
- *   CPU supports is picked on first use. Every one returns the same bits,
+ *   C ("scalar"), SSE2 and AVX2 on x86-64, and AVX-512 where the build is
+ *   asked for it (doc/performance.md) — and the best one this CPU supports
+ *   is picked on first use. Every one returns the same bits,
  *   on every machine: they do the same IEEE operations in the same order,
  *   never fused, and call no C math library (whose last bits vary between
  *   libraries). The environment variable LIBSAMPLE_ISA=scalar|sse2|avx2|
- *   avx512, read once, caps the choice (a level the CPU lacks falls back to
- *   the best below it); sample_isa_name() says what runs.
+ *   avx512, read once, caps the choice (a level the CPU or the build lacks
+ *   falls back to the best below it); sample_isa_name() says what runs.
  */
 #ifndef SAMPLE_SAMPLE_H
 #define SAMPLE_SAMPLE_H
