@@ -1,6 +1,7 @@
 # The installed package: a fresh CMake project (find_package(libsample))
 # and pkg-config builds, shared and static, each program run
-# (install_test.sh). Not under the sanitizers or the fuzzing build, whose
+# (install_test.sh), and the Python package imported from the prefix. Not
+# under the sanitizers or the fuzzing build, whose
 # libraries need the sanitizer runtimes in every program that links them.
 if(NOT SAMPLE_SANITIZE AND NOT SAMPLE_TSAN AND NOT SAMPLE_FUZZ)
   set(_with_io OFF)
@@ -9,7 +10,8 @@ if(NOT SAMPLE_SANITIZE AND NOT SAMPLE_TSAN AND NOT SAMPLE_FUZZ)
   endif()
   add_test(NAME install_package
     COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/install_test.sh install ${PROJECT_BINARY_DIR}
-      ${PROJECT_SOURCE_DIR} ${CMAKE_INSTALL_LIBDIR} ${CMAKE_C_COMPILER} ${_with_io})
+      ${PROJECT_SOURCE_DIR} ${CMAKE_INSTALL_LIBDIR} ${CMAKE_C_COMPILER} ${_with_io}
+      ${SAMPLE_PYTHON_INSTALL_DIR} "${SAMPLE_PYTHON3}" /usr/bin/python3)
   set_tests_properties(install_package PROPERTIES TIMEOUT 300)
 endif()
 # Only the public API is exported: the shared libraries' dynamic symbol
