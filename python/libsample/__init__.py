@@ -17,11 +17,13 @@ from . import _lib
 from ._errors import LibsampleArgumentError, LibsampleError
 from ._handle import ClosedTextureError
 from ._names import OPTIONS
+from .measure import POINT_DTYPE, FreqResult, FreqSummary, freq
 from .sampler import Sampler
 from .texture import STATS_DTYPE, Samples, Texture, TextureInfo
 
 __all__ = ["Texture", "TextureInfo", "Sampler", "Samples", "STATS_DTYPE", "OPTIONS", "LibsampleError",
-           "LibsampleArgumentError", "ClosedTextureError", "names", "isa", "__version__"]
+           "LibsampleArgumentError", "ClosedTextureError", "freq", "FreqResult", "FreqSummary",
+           "POINT_DTYPE", "names", "isa", "__version__"]
 
 
 def names(kind):
