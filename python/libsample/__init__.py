@@ -11,18 +11,20 @@ A thin ctypes layer over libsample's C API (sample.h) and libsample_io's
 Texture    a mip-mapped texture (numpy arrays, image files)
 Sampler    sampler state (sample_sampler's fields as keywords)
 freq       the frequency response of filters (texsample freq), callables too
+compare    error against the ground truth (texsample compare), callables too
 LibsampleError, LibsampleArgumentError   errors the C library reports
 """
 from . import _lib
 from ._errors import LibsampleArgumentError, LibsampleError
 from ._handle import ClosedTextureError
 from ._names import OPTIONS
-from .measure import POINT_DTYPE, FreqResult, FreqSummary, freq
+from .measure import POINT_DTYPE, CompareMetrics, CompareResult, FreqResult, FreqSummary, compare, freq
 from .sampler import Sampler
 from .texture import STATS_DTYPE, Samples, Texture, TextureInfo
 
 __all__ = ["Texture", "TextureInfo", "Sampler", "Samples", "STATS_DTYPE", "OPTIONS", "LibsampleError",
            "LibsampleArgumentError", "ClosedTextureError", "freq", "FreqResult", "FreqSummary",
+           "compare", "CompareResult", "CompareMetrics",
            "POINT_DTYPE", "names", "isa", "__version__"]
 
 

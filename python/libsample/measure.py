@@ -1,13 +1,16 @@
 """The tools' measurements from Python: the frequency test of ``texsample
-freq`` (DESIGN §9, doc/frequency-tests.md), run by the same C code through
-libsample_measure (tools/freq/sample_measure.h), on libsample's filters or
-on filters written in Python."""
+freq`` (DESIGN §9, doc/frequency-tests.md) and the comparison against the
+ground truth of ``texsample compare`` (DESIGN §8, doc/comparison.md), run by
+the same C code through libsample_measure (tools/freq/sample_measure.h), on
+libsample's filters or on filters written in Python."""
+import os
 import ctypes
 import dataclasses
 
 import numpy as np
 
 from . import _lib
+from ._errors import make_error
 from .texture import Texture
 
 
@@ -35,6 +38,16 @@ POINT_DTYPE = np.dtype([("filter", "<i4"), ("im", "<i4"), ("itheta", "<i4"), ("i
                         ("texels", "<f8"), ("ns", "<f8")])
 
 
+class _CompareParams(ctypes.Structure):
+    _fields_ = [("scene", ctypes.c_char_p), ("size", ctypes.c_int), ("truth", ctypes.c_int),
+                ("threads", ctypes.c_int)]
+
+
+class _CompareMetrics(ctypes.Structure):
+    _fields_ = [(n, ctypes.c_double) for n in ("rmse", "psnr", "max_err", "count", "seconds", "ns_per_sample",
+                                               "texels")]
+
+
 class _Summary(ctypes.Structure):
     _fields_ = [(n, ctypes.c_double) for n in ("pass_", "pass_worst", "alias", "alias_worst", "texels", "ns")] + \
                [("npass", ctypes.c_int), ("nstop", ctypes.c_int)]
@@ -58,6 +71,20 @@ def _lib_measure():
         lib.sample_freq_summarize.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int]
         lib.sample_freq_free.restype = None
         lib.sample_freq_free.argtypes = [ctypes.c_void_p]
+        lib.sample_compare_run.restype = ctypes.c_int
+        lib.sample_compare_run.argtypes = [ctypes.POINTER(_CompareParams), ctypes.POINTER(_Filter), ctypes.c_int,
+                                           ctypes.POINTER(ctypes.c_void_p), ctypes.c_char_p, ctypes.c_size_t]
+        lib.sample_compare_size.restype = None
+        lib.sample_compare_size.argtypes = [ctypes.c_void_p, ctypes.POINTER(ctypes.c_int),
+                                            ctypes.POINTER(ctypes.c_int)]
+        for name in ("truth", "mask", "image"):
+            f = getattr(lib, "sample_compare_" + name)
+            f.restype = ctypes.c_void_p
+            f.argtypes = [ctypes.c_void_p] + ([ctypes.c_int] if name == "image" else [])
+        lib.sample_compare_metrics_get.restype = _CompareMetrics
+        lib.sample_compare_metrics_get.argtypes = [ctypes.c_void_p, ctypes.c_int]
+        lib.sample_compare_free.restype = None
+        lib.sample_compare_free.argtypes = [ctypes.c_void_p]
         _measure = lib
     return _measure
 
@@ -164,25 +191,7 @@ def freq(filters, m=(1.0, 2.0, 5.7, 16.0), theta=(0.0, 22.5, 45.0), r=(1.0,), n=
     arrays = [(ctypes.c_double * len(x))(*x) for x in lists]
     params = _Params(arrays[0], len(lists[0]), arrays[1], len(lists[1]), arrays[2], len(lists[2]), int(n),
                      float(f_step), float(f_max), int(width), int(rows), int(phases))
-    failure = []
-    cfilters = (_Filter * len(flist))()
-    keep = []
-    for k, (name, f) in enumerate(flist):
-        # A registry filter is looked up by its registry name; a callable's
-        # name is its label in C's messages.
-        cfilters[k].name = (f if isinstance(f, str) else name).encode()
-        if callable(f):
-            cb = _FILTER_FN(_callback(f, name, failure))
-            keep.append(cb)
-            cfilters[k].fn = cb
-    res = ctypes.c_void_p()
-    err = ctypes.create_string_buffer(512)
-    rc = lib.sample_freq_run(ctypes.byref(params), cfilters, len(flist), ctypes.byref(res), err, len(err))
-    if rc != 0:
-        if failure:
-            raise failure[0]
-        from ._errors import LibsampleArgumentError
-        raise LibsampleArgumentError(1, err.value.decode(errors="replace"))
+    res = _run(lib.sample_freq_run, params, flist)
     try:
         pts = np.empty(lib.sample_freq_count(res), POINT_DTYPE)
         lib.sample_freq_points(res, pts.ctypes.data)
@@ -196,6 +205,99 @@ def freq(filters, m=(1.0, 2.0, 5.7, 16.0), theta=(0.0, 22.5, 45.0), r=(1.0,), n=
         lib.sample_freq_free(res)
     return FreqResult([name for name, _ in flist], list(lists[0]), list(lists[1]), list(lists[2]), pts,
                       lambda b, im, ir: sums[b, im, ir])
+
+
+def _run(run, params, flist):
+    """Call sample_freq_run or sample_compare_run with the filters: registry
+    names as they are, callables through ctypes callbacks. Returns the
+    result handle; raises what a callable raised, else the C message."""
+    failure = []
+    cfilters = (_Filter * len(flist))()
+    keep = []
+    for k, (name, f) in enumerate(flist):
+        # A registry filter is looked up by its registry name; a callable's
+        # name is its label in C's messages.
+        cfilters[k].name = (f if isinstance(f, str) else name).encode()
+        if callable(f):
+            cb = _FILTER_FN(_callback(f, name, failure))
+            keep.append(cb)
+            cfilters[k].fn = cb
+    res = ctypes.c_void_p()
+    err = ctypes.create_string_buffer(512)
+    if run(ctypes.byref(params), cfilters, len(flist), ctypes.byref(res), err, len(err)) != 0:
+        if failure:
+            raise failure[0]
+        raise make_error(1, err.value.decode(errors="replace"))
+    return res
+
+
+@dataclasses.dataclass(frozen=True)
+class CompareMetrics:
+    """One filter's row of texsample compare's results.csv: RMSE, PSNR (dB,
+    peak 1) and the largest per-pixel error over R, G, B of the measured
+    pixels (linear), their count, and the time and texels per query
+    (texels < 0: not counted, as for callables)."""
+    rmse: float
+    psnr: float
+    max_err: float
+    count: int
+    seconds: float
+    ns_per_sample: float
+    texels: float
+
+
+@dataclasses.dataclass(frozen=True)
+class CompareResult:
+    """What ``compare`` measured: the filter names; the ground truth
+    (h, w, 4) linear RGBA; the metric mask (h, w) bool (True: the pixel is
+    measured); each filter's picture and CompareMetrics, by name."""
+    filters: list
+    truth: np.ndarray
+    mask: np.ndarray
+    images: dict
+    metrics: dict
+
+
+def compare(filters, scene="plane", size=64, truth=8, threads=None):
+    """Render a scene of ``texsample compare`` (doc/comparison.md: "plane",
+    "teapot", "teapot-image", "zoneplate", "zoneplate-oblique",
+    "photo-plane", or a scene file) with each filter and measure it against
+    the ground truth (DESIGN §8: ``truth`` x ``truth`` samples of the exact
+    texture over each pixel's 2 x 2-pixel footprint), as texsample compare
+    does, ``size`` x ``size`` pixels.
+
+    ``filters`` as for ``freq``: registry names (corner-mode entries such as
+    "blinn-newell-corners" too) or callables ``f(queries, texture)``, here
+    given each row's pixels that show one texture of the scene (the
+    scene's texture, usable during the call). ``threads`` (default: every
+    processor) serve the view, the truth and registry filters; callables
+    run on one thread. Returns a CompareResult.
+    """
+    lib = _lib_measure()
+    flist = _filter_list(filters)
+    params = _CompareParams(os.fsencode(scene), int(size), int(truth),
+                            int(threads) if threads else (os.cpu_count() or 1))
+    res = _run(lib.sample_compare_run, params, flist)
+    try:
+        w, h = ctypes.c_int(), ctypes.c_int()
+        lib.sample_compare_size(res, ctypes.byref(w), ctypes.byref(h))
+        shape = (h.value, w.value, 4)
+
+        def floats(ptr):
+            return np.ctypeslib.as_array(ctypes.cast(ptr, ctypes.POINTER(ctypes.c_float)), shape).copy()
+
+        mask = np.ctypeslib.as_array(ctypes.cast(lib.sample_compare_mask(res), ctypes.POINTER(ctypes.c_ubyte)),
+                                     shape[:2]).astype(bool)
+        images, metrics = {}, {}
+        for k, (name, _) in enumerate(flist):
+            images[name] = floats(lib.sample_compare_image(res, k))
+            m = lib.sample_compare_metrics_get(res, k)
+            metrics[name] = CompareMetrics(m.rmse, m.psnr, m.max_err, int(m.count), m.seconds, m.ns_per_sample,
+                                           m.texels)
+        return CompareResult([name for name, _ in flist], floats(lib.sample_compare_truth(res)), mask, images,
+                             metrics)
+    finally:
+        lib.sample_compare_free(res)
 
 
 def _callback(f, name, failure):

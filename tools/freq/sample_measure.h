@@ -1,10 +1,13 @@
 /*
- * sample_measure.h — the frequency test (`texsample freq`, DESIGN §9,
- * doc/frequency-tests.md) as a C API for other languages: the shared
- * library libsample_measure (tools/measure.cmake), which the Python
- * package loads (doc/python.md). The measurement is the texsample_freq
- * code the command line runs (sweep.c, measure.c, summary.c); this file
- * adds only filters given as callbacks and results as plain arrays.
+ * sample_measure.h — the tools' measurements as a C API for other
+ * languages: the frequency test (`texsample freq`, DESIGN §9,
+ * doc/frequency-tests.md) and the comparison against the ground truth
+ * (`texsample compare`, DESIGN §8, doc/comparison.md), in the shared
+ * library libsample_measure (tools/sample_measure.cmake) that the Python
+ * package loads (doc/python.md). The measurements are the code the
+ * command line runs (tools/freq/sweep.c, measure.c, summary.c;
+ * tools/compare/view.c, truth.c, run.c, metrics.c); this API adds only
+ * filters given as callbacks and results as plain arrays.
  */
 #ifndef SAMPLE_MEASURE_H
 #define SAMPLE_MEASURE_H
@@ -26,10 +29,12 @@ extern "C" {
 #endif
 
 /* A filter given as a function: sample `count` queries (sample_query, the
- * Jacobian of each pixel) on `tex` — the grating under test, a 2-channel
- * float REPEAT texture with its box pyramid — and write count × 4 floats
- * to rgba. Called in batches of width × rows × phases queries. Returns 0,
- * or nonzero with a message in err (errlen bytes), which stops the run. */
+ * Jacobian of each pixel) on `tex` and write count × 4 floats to rgba.
+ * Returns 0, or nonzero with a message in err (errlen bytes), which stops
+ * the run. freq calls it with batches of width × rows × phases queries on
+ * the grating under test (a 2-channel float REPEAT texture with its box
+ * pyramid); compare with the pixels of one row that show one texture of
+ * the scene, from one thread at a time. */
 typedef int (*sample_measure_fn)(void *user, const sample_texture *tex, const sample_query *queries,
                                  size_t count, float *rgba, char *err, size_t errlen);
 
@@ -90,6 +95,41 @@ SAMPLE_MEASURE_API void sample_freq_points(const sample_freq_result *res, sample
 SAMPLE_MEASURE_API sample_freq_summary sample_freq_summarize(const sample_freq_result *res, int filter, int im,
                                                              int ir);
 SAMPLE_MEASURE_API void sample_freq_free(sample_freq_result *res);
+
+/* ---- Comparison against the ground truth ---------------------------------- */
+
+/* What `texsample compare` renders (its --scene, --size, --truth-samples,
+ * --threads). */
+typedef struct sample_compare_params {
+    const char *scene; /* a scene of compare's set ("plane", "teapot", "zoneplate", ...) or a scene file */
+    int size;          /* picture side, pixels */
+    int truth;         /* n × n truth samples per 2 × 2-pixel footprint, even, >= 2 */
+    int threads;       /* threads for the view, the truth and registry filters (>= 1) */
+} sample_compare_params;
+
+/* One filter's row of results.csv (cmp_metrics, cmp_result). */
+typedef struct sample_compare_metrics {
+    double rmse, psnr, max_err; /* over R, G, B of the measured pixels, linear */
+    double count;               /* pixels measured */
+    double seconds, ns_per_sample;
+    double texels;              /* per query; < 0: not counted */
+} sample_compare_metrics;
+
+typedef struct sample_compare_result sample_compare_result;
+
+/* Cast the view, build the truth, run every filter (registry names may be
+ * corner-mode entries; callbacks get the Jacobians) and measure each.
+ * Returns 0 and *out (free with sample_compare_free), or −1 with a message. */
+SAMPLE_MEASURE_API int sample_compare_run(const sample_compare_params *params, const sample_measure_filter *filters,
+                                          int nfilters, sample_compare_result **out, char *err, size_t errlen);
+/* Picture size; the truth and each filter's picture (w × h × 4 linear
+ * floats, row 0 at the top), the metric mask (w × h, 1: measured). */
+SAMPLE_MEASURE_API void sample_compare_size(const sample_compare_result *res, int *w, int *h);
+SAMPLE_MEASURE_API const float *sample_compare_truth(const sample_compare_result *res);
+SAMPLE_MEASURE_API const unsigned char *sample_compare_mask(const sample_compare_result *res);
+SAMPLE_MEASURE_API const float *sample_compare_image(const sample_compare_result *res, int filter);
+SAMPLE_MEASURE_API sample_compare_metrics sample_compare_metrics_get(const sample_compare_result *res, int filter);
+SAMPLE_MEASURE_API void sample_compare_free(sample_compare_result *res);
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,5 @@
-"""libsample.freq: texsample freq's measurement from Python, on registry
-filters and on Python callables."""
+"""libsample.freq and libsample.compare: texsample freq's and compare's
+measurements from Python, on registry filters and on Python callables."""
 import numpy as np
 import pytest
 
@@ -82,3 +82,36 @@ def test_freq_errors():
     ls.freq(lambda q, t: (kept.append(t), np.zeros((len(q), 4)))[1], m=[8.0], **SMALL)
     with pytest.raises(ls.ClosedTextureError):
         kept[0].level(0)  # the grating is lent for the call only
+
+
+def trilinear(queries, texture):
+    """Trilinear through libsample itself, as a callable."""
+    return texture.sample(ls.Sampler(min_filter="linear_mipmap_linear", wrap="repeat"), queries)
+
+
+def test_compare_callable_and_registry():
+    """A callable that samples as the registry's trilinear gives its picture
+    and its numbers; the truth, mask and metrics are texsample compare's."""
+    r = ls.compare({"py": trilinear, "c": "trilinear", "bn": "blinn-newell-corners", "near": "nearest"},
+                   scene="plane", size=48, truth=4, threads=2)
+    assert r.filters == ["py", "c", "bn", "near"]
+    assert r.truth.shape == (48, 48, 4) and r.mask.dtype == bool and 0 < r.mask.sum() < 48 * 48
+    assert np.array_equal(r.images["py"], r.images["c"])
+    py, c = r.metrics["py"], r.metrics["c"]
+    assert (py.rmse, py.psnr, py.max_err, py.count) == (c.rmse, c.psnr, c.max_err, c.count)
+    assert py.texels < 0 and c.texels > 1
+    assert r.metrics["bn"].rmse < c.rmse < r.metrics["near"].rmse
+    # The metric is the RMS over R, G, B of the masked pixels.
+    d = (r.images["c"] - r.truth)[r.mask][:, :3]
+    assert abs(np.sqrt(np.mean(d.astype(np.float64) ** 2)) - c.rmse) < 1e-9
+
+
+def test_compare_errors():
+    with pytest.raises(ValueError, match="'oiio-trilinear' is not a libsample filter"):
+        ls.compare("oiio-trilinear", size=16, truth=2)
+    with pytest.raises(ValueError, match="truth even"):
+        ls.compare("trilinear", size=16, truth=3)
+    with pytest.raises(ls.LibsampleError, match="no-such-scene"):
+        ls.compare("trilinear", scene="no-such-scene", size=16, truth=2)
+    with pytest.raises(KeyError, match="bad"):
+        ls.compare(lambda q, t: {}["bad"], size=16, truth=2)
