@@ -16,12 +16,16 @@ if(NOT SAMPLE_SANITIZE AND NOT SAMPLE_TSAN AND NOT SAMPLE_FUZZ)
 endif()
 # Only the public API is exported: the shared libraries' dynamic symbol
 # tables hold exactly the functions the public headers mark SAMPLE_API /
-# SAMPLE_IO_API. Skipped (77) without nm.
+# SAMPLE_IO_API / SAMPLE_MEASURE_API. Skipped (77) without nm.
 set(_symbols_args ${PROJECT_SOURCE_DIR}/libsample/include/sample/sample.h
   $<TARGET_FILE:sample_shared> sample_)
 if(TARGET sample_io_shared)
   list(APPEND _symbols_args ${PROJECT_SOURCE_DIR}/libsample/io/include/sample/sample_io.h
     $<TARGET_FILE:sample_io_shared> sample_io_)
+endif()
+if(TARGET sample_measure)
+  list(APPEND _symbols_args ${PROJECT_SOURCE_DIR}/tools/freq/sample_measure.h
+    $<TARGET_FILE:sample_measure> sample_)
 endif()
 if(CMAKE_NM)
   set(_nm ${CMAKE_NM})

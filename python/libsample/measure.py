@@ -59,6 +59,13 @@ _measure = None
 def _lib_measure():
     global _measure
     if _measure is None:
+        # Its libsample_io dependency, loaded first from where the package
+        # finds it, since an installed library carries no search path
+        # (libsample.so is loaded already). A build without it has none.
+        try:
+            _lib.io()
+        except ImportError:
+            pass
         lib = _lib.load("sample_measure")
         lib.sample_freq_run.restype = ctypes.c_int
         lib.sample_freq_run.argtypes = [ctypes.POINTER(_Params), ctypes.POINTER(_Filter), ctypes.c_int,
