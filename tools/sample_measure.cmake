@@ -10,7 +10,9 @@
 # the shared libsample (and libsample_io), a process holds one libsample,
 # and the textures a callback is handed are that library's. Only
 # sample_freq_* and sample_compare_* are exported.
-if(TARGET texsample_render)
+# Not in the sanitizer and fuzzing builds: nothing there loads it (the
+# Python tests are not run under them, tests/python.cmake).
+if(TARGET texsample_render AND NOT SAMPLE_SANITIZE AND NOT SAMPLE_TSAN AND NOT SAMPLE_FUZZ)
   set(_cmp_sources configs scenes view run truth metrics sample_compare)
   list(TRANSFORM _cmp_sources PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/compare/)
   list(TRANSFORM _cmp_sources APPEND .c)
