@@ -5,6 +5,15 @@ import pytest
 
 import libsample as ls
 
+
+@pytest.fixture(autouse=True, scope="module")
+def measure_library():
+    """libsample_measure is built with the tools (SAMPLE_BUILD_IO)."""
+    try:
+        ls.measure._lib_measure()
+    except ImportError as e:
+        pytest.skip(str(e).splitlines()[0])
+
 # A small sweep: 64-texel gratings, F step 1/8 cycle/pixel.
 SMALL = dict(theta=[0.0], n=64, f_step=1 / 8, f_max=2.0, width=16, rows=1, phases=64)
 
