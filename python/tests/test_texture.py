@@ -115,3 +115,19 @@ def test_close_while_sampling():
     for th in threads:
         th.join()
     assert all(results) and len(results) + len(errors) == 60
+
+
+def test_no_references_kept():
+    """Sampling keeps no reference to its inputs, and its result owns its
+    memory (no view into a temporary)."""
+    import sys
+
+    t = ls.Texture(np.ones((8, 8, 4), np.float32))
+    q = queries(16)
+    before = sys.getrefcount(q)
+    for _ in range(100):
+        r = t.sample(SMP, q)
+    assert sys.getrefcount(q) == before
+    assert r.base is None and r.flags.owndata
+    lv = t.level(0)
+    assert lv.base is None or lv.base.base is None  # a reshape of an array it owns
