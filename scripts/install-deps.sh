@@ -9,7 +9,8 @@ libopenexr-dev openexr
 libcjson-dev
 libosmesa6-dev
 clang libclang-rt-14-dev
-chromium fonts-dejavu-core"
+chromium fonts-dejavu-core
+python3 python3-numpy python3-pytest"
 missing=""
 for p in $PKGS; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

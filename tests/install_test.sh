@@ -1,7 +1,7 @@
 #!/bin/sh
 # Two checks of libsample as a package (tests/install.cmake).
 #
-#   install_test.sh install BUILD SRC LIBDIR CC IO
+#   install_test.sh install BUILD SRC LIBDIR CC IO [PYDIR PYTHON...]
 # installs the build tree into a scratch prefix, then builds and runs small
 # programs (tests/install_example/, copied out of the source tree) against
 # that prefix only: a CMake project (find_package(libsample):
@@ -9,7 +9,11 @@
 # libsample::sample_io and libsample::sample_io_static), pkg-config for the
 # shared libraries, and `pkg-config --static` for the static ones. No
 # include path may name the source or build tree. With IO=ON, the installed
-# texsample is also moved and run from $PATH elsewhere.
+# texsample is also moved and run from $PATH elsewhere. With PYDIR (the
+# Python package's folder under the prefix), the first PYTHON that has
+# numpy imports the installed package, which must load the installed
+# libsample.so and sample with it, and with IO=ON (the tools built)
+# libsample_measure.so.
 #
 #   install_test.sh symbols NM HEADER LIB PREFIX [HEADER LIB PREFIX]...
 # checks that LIB's dynamic symbol table defines exactly the functions
@@ -51,13 +55,16 @@ if [ "$mode" = symbols ]; then
 fi
 
 build=$1; src=$2; libdir=$3; cc=$4; io=$5
+shift 5
+pydir=${1:-}; [ $# -gt 0 ] && shift
+pythons=$* # interpreter paths hold no spaces here (PATH lookups, /usr/bin/python3)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" --component Unspecified >/dev/null
 cp -R "$src/tests/install_example" "$work/ex-src"
 unset OCIO # libsample_io's shipped config, found beside the installed library
-unset CPATH C_INCLUDE_PATH LIBRARY_PATH LD_LIBRARY_PATH
+unset CPATH C_INCLUDE_PATH LIBRARY_PATH LD_LIBRARY_PATH LIBSAMPLE_LIBRARY_PATH PYTHONPATH
 image=$src/testimages/rgb8.png
 passed=0
 
@@ -142,5 +149,28 @@ if [ "$io" = ON ]; then
     *) echo "installed texsample info: $info"; exit 1 ;;
   esac
   ok "installed texsample, moved and run from \$PATH: its image program and its OCIO config"
+fi
+# The Python package, imported from the install tree in another directory.
+if [ -n "$pydir" ]; then
+  py=""
+  for p in $pythons; do
+    if [ -n "$p" ] && "$p" -c "import numpy" 2>/dev/null; then py=$p; break; fi
+  done
+  if [ -z "$py" ]; then
+    echo "installed Python package: no python3 with numpy: not checked"
+  else
+    mkdir -p "$work/elsewhere"
+    out=$(cd "$work/elsewhere" && PYTHONPATH="$prefix/$pydir" "$py" -c '
+import sys, numpy as np, libsample as ls
+t = ls.Texture(np.full((4, 4), 2.5, np.float32))
+measured = sys.argv[1] != "ON" or len(ls.freq("nearest", m=[2.0], theta=[0.0], n=16, f_step=0.5, f_max=1.0,
+                                               phases=4).points) > 0
+print(ls.__file__, ls._lib.core._name, t.sample(ls.Sampler(), s=[0.5], t=[0.5])[0, 0], measured)' "$io")
+    case "$out" in
+      "$prefix/$pydir/libsample/__init__.py $prefix/$libdir/libsample.so.0 2.5 True") ;;
+      *) echo "installed Python package: $out"; exit 1 ;;
+    esac
+    ok "installed Python package: imported, loads the installed libsample.so (and libsample_measure.so)"
+  fi
 fi
 echo "$passed passed, 0 failed"

@@ -1,0 +1,353 @@
+"""Textures: numpy arrays or image files in, sampled values out."""
+import collections
+import ctypes
+import dataclasses
+import os
+
+import numpy as np
+
+from . import _errors, _lib, _names
+from ._handle import Handle
+from .sampler import Sampler
+
+# sample_stats (sample.h), field for field.
+STATS_DTYPE = np.dtype([("texels", "<u4"), ("level0", "<i2"), ("level1", "<i2"),
+                        ("level_frac", "<f4"), ("lod", "<f4")])
+assert STATS_DTYPE.itemsize == 16
+
+# Formats by their sample_format_name, and the numpy dtype of each.
+_FORMATS = {_names.name("format", i): i for i in range(_names._COUNTS["format"])}
+_FORMAT_DTYPE = {"float": np.float32, "half": np.float16, "unorm8": np.uint8, "srgb8": np.uint8}
+
+
+@dataclasses.dataclass(frozen=True)
+class TextureInfo:
+    """What a texture holds (sample_texture_info)."""
+    width: int
+    height: int
+    channels: int
+    levels: int
+    format: str   # "float", "half", "unorm8", "srgb8"
+    bytes: int    # texel memory of every level
+    kind: str     # "2d", "cube", "3d"
+
+
+Samples = collections.namedtuple("Samples", "rgba drgba_ds drgba_dt stats")
+Samples.__doc__ = """What Texture.sample returns when derivatives or stats are asked for:
+rgba (N, 4) float32; drgba_ds, drgba_dt (N, 4) float32 or None; stats (N,)
+of STATS_DTYPE or None."""
+
+
+def _format_of(a, format, srgb):
+    if format is not None:
+        if format not in _FORMATS:
+            raise ValueError("format: %r is not one of %s" % (format, ", ".join(_FORMATS)))
+        if srgb and format != "srgb8":
+            raise ValueError("srgb=True is format 'srgb8', not %r" % format)
+        return format
+    kind = a.dtype
+    if kind == np.uint8:
+        return "srgb8" if srgb else "unorm8"
+    if srgb:
+        raise ValueError("srgb=True needs uint8 texels, not %s (float texels are linear)" % kind)
+    if kind == np.float16:
+        return "half"
+    if kind in (np.float32, np.float64):
+        return "float"
+    raise TypeError("texels: float32, float16 or uint8 (float64 is stored as float32), not %s" % kind)
+
+
+def _image(array, format=None, srgb=False, what="texels"):
+    """A sample_image over a C-contiguous copy (or view) of `array`; returns
+    (image, the array it points into, which must outlive the C call)."""
+    a = np.asarray(array)
+    if a.ndim == 2:
+        a = a[:, :, np.newaxis]
+    if a.ndim != 3 or not 1 <= a.shape[2] <= 4:
+        raise ValueError("%s: an H x W or H x W x C array with C = 1 to 4, not shape %s" % (what, a.shape))
+    fmt = _format_of(a, format, srgb)
+    want = _FORMAT_DTYPE[fmt]
+    if a.dtype != want:
+        if want == np.uint8 or a.dtype.kind != "f":
+            raise TypeError("%s: format %r stores %s; the array is %s"
+                            % (what, fmt, np.dtype(want).name, a.dtype))
+    a = np.ascontiguousarray(a, dtype=want)
+    img = _lib.Image(width=a.shape[1], height=a.shape[0], channels=a.shape[2],
+                     format=_FORMATS[fmt], data=a.ctypes.data, row_stride=0)
+    return img, a
+
+
+def _mip_params(mip, wrap, max_levels):
+    p = _lib.MipParams()
+    _lib.core.sample_mip_params_init(ctypes.byref(p))
+    p.filter = 0 if mip is None else _names.parse("mipgen", mip, "mip")
+    ws, wt = (wrap, wrap) if isinstance(wrap, (str, int)) else wrap
+    p.wrap_s = _names.parse("wrap", ws, "wrap")
+    p.wrap_t = _names.parse("wrap", wt, "wrap")
+    if int(max_levels) < 0:
+        raise ValueError("max_levels: 0 (all) or more, not %d" % max_levels)
+    p.max_levels = int(max_levels)
+    return p
+
+
+def _float_array(x, name, shape_tail, n=None):
+    """x as a C-contiguous float32 array of shape (N,) + shape_tail: the
+    same memory when it already is one (zero-copy), else a copy."""
+    a = np.asarray(x)
+    if a.dtype.kind not in "fiu":
+        raise TypeError("%s: a float32 array (or real numbers), not dtype %s" % (name, a.dtype))
+    want = (n if n is not None else (a.shape[0] if a.ndim else -1),) + shape_tail
+    if a.shape != want:
+        spelled = " x ".join("N" if i == 0 and n is None else str(d) for i, d in enumerate(want))
+        raise ValueError("%s: shape (%s) expected, not %s" % (name, spelled, a.shape))
+    return np.ascontiguousarray(a, dtype=np.float32)
+
+
+def _out_array(x, name, n):
+    if x is None:
+        return np.empty((n, 4), np.float32)
+    if not (isinstance(x, np.ndarray) and x.dtype == np.float32 and x.shape == (n, 4)
+            and x.flags.c_contiguous and x.flags.writeable):
+        raise ValueError("%s: a writable C-contiguous float32 array of shape (%d, 4)" % (name, n))
+    return x
+
+
+def _ptr(a):
+    return None if a is None else a.ctypes.data
+
+
+class Texture:
+    """An immutable, mip-mapped texture (sample_texture).
+
+    ``Texture(array, format=None, srgb=False, mip="box", wrap="clamp_to_edge",
+    max_levels=0)`` copies ``array`` (H x W, or H x W x C with C = 1 to 4;
+    row 0 is t = 0) into a new texture; the array may be changed or freed
+    afterwards. Storage follows the dtype: float32 -> "float", float16 ->
+    "half", uint8 -> "unorm8" (value/255) or, with ``srgb=True``, "srgb8"
+    (sRGB-encoded colour, linear alpha); float64 is stored as float32.
+    ``format`` names the storage explicitly (a float array is converted to
+    "half"). ``mip`` is how the pyramid is built: "box", "lanczos3",
+    "kaiser", or "none"/None for the base level only; ``wrap`` (one name or
+    an (s, t) pair) is how its kernels read past the edges; ``max_levels``
+    caps the level count (0: down to 1 x 1).
+
+    ``Texture.load(path, ...)`` reads an image file through libsample_io,
+    ``Texture.from_levels(arrays)`` takes the levels as given.
+
+    The texture owns its C object: ``close()`` (or a ``with`` block) frees
+    it, after which every use raises ValueError; it is freed as well when
+    the object is garbage-collected. Sampling releases the GIL and may run
+    from several threads at once.
+    """
+
+    def __init__(self, array, format=None, srgb=False, mip="box", wrap="clamp_to_edge", max_levels=0):
+        img, keep = _image(array, format, srgb)
+        params = _mip_params(mip, wrap, max_levels)
+        self._handle = Handle(self._create(lambda out, err: _lib.core.sample_texture_create(
+            ctypes.byref(img), ctypes.byref(params), out, err), "sample_texture_create"))
+        del keep
+
+    @staticmethod
+    def _create(fn, what):
+        out = ctypes.c_void_p()
+        err = _lib.Error()
+        _errors.check(fn(ctypes.byref(out), ctypes.byref(err)), err, what)
+        return out.value
+
+    @classmethod
+    def _wrap(cls, ptr, owned):
+        t = cls.__new__(cls)
+        t._handle = Handle(ptr, owned)
+        return t
+
+    @classmethod
+    def from_levels(cls, levels, format=None, srgb=False):
+        """A texture from its levels as given (sample_texture_create_levels):
+        level k must be max(1, W >> k) x max(1, H >> k) with the base's
+        channels and dtype; a partial chain is allowed."""
+        levels = list(levels)
+        if not levels:
+            raise ValueError("from_levels: at least one level")
+        imgs = (_lib.Image * len(levels))()
+        keep = []
+        for k, lv in enumerate(levels):
+            imgs[k], a = _image(lv, format, srgb, "levels[%d]" % k)
+            keep.append(a)
+        return cls._wrap(cls._create(lambda out, err: _lib.core.sample_texture_create_levels(
+            imgs, len(levels), out, err), "sample_texture_create_levels"), True)
+
+    @classmethod
+    def load(cls, path, colorspace=None, ocio_config=None, mip="box", wrap="clamp_to_edge", max_levels=0,
+             use_file_levels=True, float_storage=False, premultiply=False, max_bytes=0):
+        """Read an image file (any format OpenImageIO reads; mip-mapped .exr
+        and .tx files give their stored levels unless use_file_levels is
+        False) through libsample_io, converting colour to the OCIO config's
+        scene-linear space (sample_io.h, doc/io-and-colour.md). A file
+        without levels gets a pyramid built with ``mip`` and ``wrap``.
+        Raises LibsampleError with libsample_io's message on failure, and
+        ImportError when libsample_io is not built."""
+        io = _lib.io()
+        o = _lib.IoOptions()
+        io.sample_io_options_init(ctypes.byref(o))
+        o.colorspace = None if colorspace is None else colorspace.encode()
+        o.ocio_config = None if ocio_config is None else os.fsencode(ocio_config)
+        o.use_file_levels = int(bool(use_file_levels))
+        o.float_storage = int(bool(float_storage))
+        o.premultiply = int(bool(premultiply))
+        o.max_bytes = int(max_bytes)
+        params = _mip_params(mip, wrap, max_levels)
+        p = os.fsencode(path)
+        return cls._wrap(cls._create(lambda out, err: io.sample_io_read_texture(
+            p, ctypes.byref(o), ctypes.byref(params), out, err), "sample_io_read_texture"), True)
+
+    # ---- lifetime ----------------------------------------------------------
+
+    def close(self):
+        """Free the C texture (idempotent). Later uses raise ValueError."""
+        h = getattr(self, "_handle", None)
+        if h is not None:
+            h.close()
+
+    @property
+    def closed(self):
+        return self._handle.closed
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        if _lib is not None and _lib.core is not None:
+            self.close()
+
+    def __repr__(self):
+        if self.closed:
+            return "<libsample.Texture (closed)>"
+        i = self.info
+        return "<libsample.Texture %s %dx%d x%d %s, %d levels>" % (i.kind, i.width, i.height, i.channels,
+                                                                  i.format, i.levels)
+
+    # ---- what it holds -----------------------------------------------------
+
+    @property
+    def info(self):
+        """TextureInfo: size, channels, level count, format, bytes, kind."""
+        c = _lib.TextureInfo()
+        with self._handle as p:
+            _lib.core.sample_texture_info_get(p, ctypes.byref(c))
+        return TextureInfo(c.width, c.height, c.channels, c.levels, _names.name("format", c.format),
+                           c.bytes, _names.name("texture_kind", c.kind))
+
+    def level_size(self, level):
+        """(width, height) of a level."""
+        w, h = ctypes.c_int(), ctypes.c_int()
+        with self._handle as p:
+            if not _lib.core.sample_texture_level_size(p, int(level), ctypes.byref(w), ctypes.byref(h)):
+                raise IndexError("level %d: the texture has %d levels" % (level, self.info.levels))
+        return w.value, h.value
+
+    def texel(self, level, i, j):
+        """Texel (i, j) of a level, decoded to linear RGBA float32
+        (sample_texture_texel): column i, row j (row 0 is t = 0)."""
+        w, h = self.level_size(level)
+        if not (0 <= i < w and 0 <= j < h):
+            raise IndexError("texel (%d, %d) outside level %d's %d x %d" % (i, j, level, w, h))
+        out = np.empty(4, np.float32)
+        with self._handle as p:
+            _lib.core.sample_texture_texel(p, int(level), int(i), int(j), out.ctypes.data_as(_lib.c_float_p))
+        return out
+
+    def level(self, k):
+        """Level k decoded to linear RGBA float32, shape (h, w, 4), row 0 at
+        t = 0: the values sample_texture_texel gives (1 channel reads as
+        (r, 0, 0, 1), 2 as (r, g, 0, 1), 3 as (r, g, b, 1); sRGB decoded).
+        A new array; the texture is not changed through it."""
+        w, h = self.level_size(k)
+        # Nearest magnification of level k alone, at every texel centre, reads
+        # each texel once and decodes it as sample_texture_texel does: one
+        # batch instead of w x h calls.
+        sampler = Sampler(min_filter="nearest", mag_filter="nearest", wrap="clamp_to_edge",
+                          base_level=k, max_level=k)
+        jj, ii = np.meshgrid(np.arange(h, dtype=np.float64), np.arange(w, dtype=np.float64), indexing="ij")
+        q = np.zeros((h * w, 6), np.float32)
+        q[:, 0] = ((ii.ravel() + 0.5) / w)
+        q[:, 1] = ((jj.ravel() + 0.5) / h)
+        return self.sample(sampler, q).reshape(h, w, 4)
+
+    @property
+    def levels(self):
+        """Every level as Texture.level(k) gives it: a list of (h, w, 4)
+        float32 arrays, decoded linear RGBA."""
+        return [self.level(k) for k in range(self.info.levels)]
+
+    # ---- sampling ----------------------------------------------------------
+
+    def sample(self, sampler, queries=None, *, s=None, t=None, dsdx=0.0, dtdx=0.0, dsdy=0.0, dtdy=0.0,
+               corners=None, bias=None, derivatives=False, stats=False, out=None):
+        """Sample N queries with one sampler state (sample_batch).
+
+        ``queries``: an (N, 6) array of (s, t, ds/dx, dt/dx, ds/dy, dt/dy),
+        the order of ``texsample lookup``'s query file; or give ``s``, ``t``
+        and optionally the Jacobian entries as arrays (or scalars,
+        broadcast). A C-contiguous float32 array is passed to C as it is
+        (no copy); anything else real-valued is copied to float32.
+        ``corners``: (N, 8) or (N, 4, 2) footprint corners (Blinn–Newell's
+        corner mode); ``bias``: (N,) per-query LOD bias. ``sampler``: a
+        Sampler, or a dict of its keywords.
+
+        Returns the (N, 4) float32 linear RGBA results (into ``out`` when
+        given); with ``derivatives=True`` or ``stats=True`` a Samples tuple
+        (rgba, drgba_ds, drgba_dt, stats). A query whose coordinates or
+        Jacobian hold NaN or inf returns the border colour (DESIGN §10).
+        """
+        if isinstance(sampler, dict):
+            sampler = Sampler(**sampler)
+        if not isinstance(sampler, Sampler):
+            raise TypeError("sampler: a libsample.Sampler (or a dict of its keywords), not %r" % type(sampler).__name__)
+        q = self._queries(queries, s, t, dsdx, dtdx, dsdy, dtdy)
+        n = q.shape[0]
+        c = None
+        if corners is not None:
+            c = np.asarray(corners)
+            c = _float_array(c.reshape(c.shape[0], 8) if c.ndim == 3 and c.shape[1:] == (4, 2) else c,
+                             "corners", (8,), n)
+        b = None if bias is None else _float_array(bias, "bias", (), n)
+        rgba = _out_array(out, "out", n)
+        ds = np.empty((n, 4), np.float32) if derivatives else None
+        dt = np.empty((n, 4), np.float32) if derivatives else None
+        st = np.empty(n, STATS_DTYPE) if stats else None
+        args = _lib.BatchArgs(count=n, queries=_ptr(q), corners=_ptr(c), lod_bias=_ptr(b), rgba=_ptr(rgba),
+                              drgba_ds=_ptr(ds), drgba_dt=_ptr(dt), stats=_ptr(st))
+        if n:
+            with self._handle as p:
+                status = _lib.core.sample_batch(p, ctypes.byref(sampler._state), ctypes.byref(args))
+            _errors.check(status, None, "sample_batch")
+        if derivatives or stats:
+            return Samples(rgba, ds, dt, st)
+        return rgba
+
+    @staticmethod
+    def _queries(queries, s, t, dsdx, dtdx, dsdy, dtdy):
+        if queries is not None:
+            if s is not None or t is not None:
+                raise TypeError("sample: give queries or s=, t=, not both")
+            return _float_array(queries, "queries", (6,))
+        if s is None or t is None:
+            raise TypeError("sample: give queries (N x 6) or s= and t=")
+        cols = [np.asarray(v) for v in (s, t, dsdx, dtdx, dsdy, dtdy)]
+        for name, v in zip(("s", "t", "dsdx", "dtdx", "dsdy", "dtdy"), cols):
+            if v.dtype.kind not in "fiu":
+                raise TypeError("%s: real numbers, not dtype %s" % (name, v.dtype))
+            if v.ndim > 1:
+                raise ValueError("%s: a 1-D array or a scalar, not shape %s" % (name, v.shape))
+        try:
+            n = np.broadcast(*cols).size
+            q = np.empty((n, 6), np.float32)
+            for k, v in enumerate(cols):
+                q[:, k] = np.broadcast_to(v, (n,))
+        except ValueError:
+            raise ValueError("s, t, dsdx, ...: arrays of one length N (or scalars), not %s"
+                             % [v.shape for v in cols]) from None
+        return q
