@@ -167,6 +167,34 @@ static void test_edges_and_corners(void)
     sample_texture_destroy(tex);
 }
 
+/* Every corner of the cube: LINEAR at the corner direction is the mean
+ * of the three corner texels that meet there, each found from table 8.19
+ * on its own face (s, t ∈ {0, 1} at the corner). */
+static void test_all_corners(void)
+{
+    const int n = 4;
+    sample_texture *tex = make_cube(n, NULL);
+    sample_sampler s;
+    int x, y, z, a, c;
+    sample_sampler_init(&s);
+    for (x = -1; x <= 1; x += 2)
+        for (y = -1; y <= 1; y += 2)
+            for (z = -1; z <= 1; z += 2) {
+                float r[3] = {(float)x, (float)y, (float)z}, out[4], expect[4] = {0, 0, 0, 0};
+                double d[3] = {x, y, z};
+                sample_query3 q = q_dir(r);
+                for (a = 0; a < 3; ++a) {
+                    int f = 2 * a + (d[a] < 0.0);
+                    double fs, ft;
+                    cube_face_st(f, d, &fs, &ft);
+                    for (c = 0; c < 4; ++c) expect[c] += tval(f, fs > 0.5 ? n - 1 : 0, ft > 0.5 ? n - 1 : 0, c, n);
+                }
+                one(tex, &s, &q, out, NULL);
+                for (c = 0; c < 4; ++c) CHECK_NEAR(out[c], expect[c] / 3.0f, 2e-7);
+            }
+    sample_texture_destroy(tex);
+}
+
 /* A constant cube gives the constant under every filter and footprint,
  * for every format and channel count, at random directions and
  * derivatives. */
@@ -235,11 +263,252 @@ static void test_constant(void)
         }
 }
 
+/* λ for axis-aligned derivatives at a face centre (|ma| = 1): dR/dx =
+ * (d, 0, 0) on +Z is ∂s/∂x = d/2, ρ = N·d/2; the switch from
+ * magnification to level 1 at ρ = 1 and 2, and the ma term: along the
+ * major axis at sc = ½, ∂s = −½·sc·∂ma, which an implementation that
+ * drops the term sees as no footprint at all. */
+static void test_lod(void)
+{
+    const int n = 16;
+    sample_mip_params mp;
+    sample_texture *tex;
+    sample_sampler s;
+    sample_stats st;
+    float out[4];
+    int k;
+    sample_mip_params_init(&mp);
+    tex = make_cube(n, &mp);
+    sample_sampler_init(&s);
+    s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+    for (k = -2; k <= 4; ++k) {
+        sample_query3 q;
+        memset(&q, 0, sizeof q);
+        q.p[2] = 1.0f;
+        q.dpdx[0] = ldexpf(2.0f / n, k); /* ρ = 2^k */
+        q.dpdy[1] = ldexpf(1.0f / n, k); /* half as long: ρ is the longer */
+        one(tex, &s, &q, out, &st);
+        CHECK(st.lod == (float)k, "λ %g, expected %d", st.lod, k);
+        CHECK(st.level0 == (k <= 0 ? 0 : (k < 4 ? k : 4)) && (k <= 0 || k >= 4 ? st.level1 == -1 : 1), "k %d: levels %d %d", k,
+              st.level0, st.level1);
+        /* The same footprint with a bias of −k is magnification again. */
+    }
+    {
+        /* ma term: R = (0.5, 0, 1) on +Z (sc = ½), dR/dx = (0, 0, δ):
+         * ∂s/∂x = ½(0·1 − ½·δ)/1 = −δ/4, ∂t = 0; ρ = N·δ/4: δ = 8/N → λ = 1. */
+        sample_query3 q;
+        memset(&q, 0, sizeof q);
+        q.p[0] = 0.5f;
+        q.p[2] = 1.0f;
+        q.dpdx[2] = 8.0f / n;
+        one(tex, &s, &q, out, &st);
+        CHECK(st.lod == 1.0f, "ma term: λ %g, expected 1", st.lod);
+        /* R and its derivative scaled together: the same λ (s depends on
+         * R/|ma| only). */
+        q.p[0] = 2.0f;
+        q.p[2] = 4.0f;
+        q.dpdx[2] = 32.0f / n;
+        one(tex, &s, &q, out, &st);
+        CHECK(st.lod == 1.0f, "scaled: λ %g, expected 1", st.lod);
+    }
+    {
+        /* Bias, clamps and base level as for 2D. */
+        sample_query3 q;
+        float bias = -1.0f;
+        sample_batch3_args a;
+        memset(&q, 0, sizeof q);
+        q.p[2] = 1.0f;
+        q.dpdx[0] = 8.0f / n; /* λ = 2 */
+        memset(&a, 0, sizeof a);
+        a.count = 1;
+        a.queries = &q;
+        a.lod_bias = &bias;
+        a.rgba = out;
+        a.stats = &st;
+        CHECK(sample_batch_cube(tex, &s, &a) == SAMPLE_OK && st.lod == 1.0f, "bias: λ %g", st.lod);
+        s.max_lod = 0.5f;
+        CHECK(sample_batch_cube(tex, &s, &a) == SAMPLE_OK && st.lod == 0.5f, "max_lod: λ %g", st.lod);
+        /* λ is in texels of the base level (4 × 4 at base 2): ρ = 4. */
+        s.max_lod = 1000.0f;
+        s.base_level = 2;
+        s.min_filter = SAMPLE_LINEAR_MIPMAP_NEAREST;
+        q.dpdx[0] = 32.0f / n;
+        bias = 0.0f;
+        CHECK(sample_batch_cube(tex, &s, &a) == SAMPLE_OK && st.level0 == 4, "base level 2, λ 2: level %d",
+              st.level0);
+    }
+    sample_texture_destroy(tex);
+}
+
+/* DESIGN §10: NaN, infinite or zero directions, non-finite derivatives or
+ * bias give the border colour; no level is read. */
+static void test_bad_input(void)
+{
+    sample_texture *tex = make_cube(4, NULL), *flat;
+    sample_sampler s;
+    const float nan = NAN, inf = INFINITY;
+    sample_query3 q[6];
+    float out[6][4], bias[6] = {0, 0, 0, 0, 0, nan}, img[4] = {1, 1, 1, 1};
+    sample_stats st[6];
+    sample_batch3_args a;
+    sample_image im = {1, 1, 4, SAMPLE_FORMAT_F32, img, 0};
+    int i, c;
+    sample_sampler_init(&s);
+    s.border_color[0] = 0.25f;
+    s.border_color[3] = 0.5f;
+    memset(q, 0, sizeof q);
+    for (i = 0; i < 6; ++i) q[i].p[2] = 1.0f;
+    q[0].p[0] = nan;
+    q[1].p[2] = 0.0f; /* zero direction */
+    q[2].p[1] = inf;
+    q[3].dpdx[0] = inf;
+    q[4].dpdy[2] = nan;
+    memset(&a, 0, sizeof a);
+    a.count = 6;
+    a.queries = q;
+    a.lod_bias = bias;
+    a.rgba = &out[0][0];
+    a.stats = st;
+    CHECK(sample_batch_cube(tex, &s, &a) == SAMPLE_OK, "batch");
+    for (i = 0; i < 6; ++i) {
+        for (c = 0; c < 4; ++c) CHECK_EQF(out[i][c], s.border_color[c]);
+        CHECK(st[i].level0 == -1 && st[i].texels == 0, "query %d read level %d", i, st[i].level0);
+    }
+    /* Kinds: a 2D texture is refused by sample_batch_cube, a cube by
+     * sample_batch; NULLs too. */
+    CHECK(sample_texture_create(&im, NULL, &flat, NULL) == SAMPLE_OK, "2D texture");
+    CHECK(sample_batch_cube(flat, &s, &a) == SAMPLE_E_INVALID_ARGUMENT, "2D texture accepted by sample_batch_cube");
+    {
+        sample_query q2 = {0.5f, 0.5f, 0, 0, 0, 0};
+        CHECK(sample_one(tex, &s, &q2, out[0]) == SAMPLE_E_INVALID_ARGUMENT, "cube accepted by sample_batch");
+    }
+    CHECK(sample_batch_cube(NULL, &s, &a) == SAMPLE_E_INVALID_ARGUMENT, "NULL texture");
+    a.queries = NULL;
+    CHECK(sample_batch_cube(tex, &s, &a) == SAMPLE_E_INVALID_ARGUMENT, "NULL queries");
+    sample_texture_destroy(flat);
+    sample_texture_destroy(tex);
+}
+
+/* Creation: faces must be square, equal, of one format; levels checked;
+ * nothing is returned on error, with a message naming the face. */
+static void test_create_errors(void)
+{
+    float d[4 * 4 * 4] = {0};
+    sample_image faces[12];
+    sample_texture *tex = (sample_texture *)&tex;
+    sample_error err;
+    int f;
+    for (f = 0; f < 12; ++f) faces[f] = (sample_image){4, 4, 4, SAMPLE_FORMAT_F32, d, 0};
+    faces[3].width = 2;
+    CHECK(sample_texture_create_cube(faces, NULL, &tex, &err) == SAMPLE_E_BAD_SIZE && !tex &&
+              strstr(err.message, "-Y"),
+          "unequal face: %s", err.message);
+    faces[3].width = 4;
+    faces[0].height = 2;
+    faces[0].width = 2;
+    CHECK(sample_texture_create_cube(faces, NULL, &tex, &err) == SAMPLE_E_BAD_SIZE, "face 0 smaller: accepted");
+    faces[0].width = 4;
+    faces[0].height = 4;
+    faces[5].channels = 3;
+    CHECK(sample_texture_create_cube(faces, NULL, &tex, &err) == SAMPLE_E_INVALID_ARGUMENT, "channels: %s",
+          err.message);
+    faces[5].channels = 4;
+    CHECK(sample_texture_create_cube(NULL, NULL, &tex, &err) == SAMPLE_E_INVALID_ARGUMENT, "NULL faces");
+    /* Levels: level 1 must be 2 × 2. */
+    for (f = 6; f < 12; ++f) faces[f].width = faces[f].height = 2;
+    faces[8].width = 3;
+    CHECK(sample_texture_create_cube_levels(faces, 2, &tex, &err) == SAMPLE_E_BAD_SIZE, "level 1 face 2: %s",
+          err.message);
+    faces[8].width = 2;
+    CHECK(sample_texture_create_cube_levels(faces, 2, &tex, &err) == SAMPLE_OK && tex, "two levels: %s",
+          err.message);
+    sample_texture_destroy(tex);
+    CHECK(sample_texture_create_cube_levels(faces, 4, &tex, &err) == SAMPLE_E_BAD_SIZE, "4 levels of a 4-cube");
+}
+
+/* Pyramids. The box on even faces stays inside each face: every face of
+ * every level is that face's 2D box pyramid, bit for bit. A kernel that
+ * reaches over edges (Lanczos-3, odd size) reads the neighbours: a cube
+ * lit on +X only puts energy into level 1 of the four faces around it,
+ * and a constant cube stays constant on every level. */
+static void test_pyramids(void)
+{
+    const int n = 8;
+    sample_mip_params mp;
+    sample_texture *cube;
+    int f, k, i, j, c;
+    sample_mip_params_init(&mp);
+    cube = make_cube(n, &mp);
+    for (f = 0; f < 6; ++f) {
+        float *d = (float *)malloc((size_t)n * n * 4 * sizeof(float));
+        sample_image im = {n, n, 4, SAMPLE_FORMAT_F32, d, 0};
+        sample_texture *flat;
+        for (j = 0; j < n; ++j)
+            for (i = 0; i < n; ++i)
+                for (c = 0; c < 4; ++c) d[(j * n + i) * 4 + c] = tval(f, i, j, c, n);
+        CHECK(sample_texture_create(&im, &mp, &flat, NULL) == SAMPLE_OK, "2D");
+        for (k = 1; k < 4; ++k)
+            for (j = 0; j < n >> k; ++j)
+                for (i = 0; i < n >> k; ++i) {
+                    float a[4], b[4];
+                    sample_texture_texel_layer(cube, k, f, i, j, a);
+                    sample_texture_texel(flat, k, i, j, b);
+                    CHECK(!memcmp(a, b, sizeof a), "face %d level %d texel %d %d", f, k, i, j);
+                }
+        sample_texture_destroy(flat);
+        free(d);
+    }
+    sample_texture_destroy(cube);
+    {
+        const int m = 9;
+        float d[6][9 * 9];
+        sample_image faces[6];
+        sample_texture *t;
+        float v[4];
+        for (f = 0; f < 6; ++f) {
+            for (i = 0; i < m * m; ++i) d[f][i] = f == 0 ? 1.0f : 0.0f;
+            faces[f] = (sample_image){m, m, 1, SAMPLE_FORMAT_F32, d[f], 0};
+        }
+        mp.filter = SAMPLE_MIPGEN_LANCZOS3;
+        CHECK(sample_texture_create_cube(faces, &mp, &t, NULL) == SAMPLE_OK, "lanczos cube");
+        /* +X's neighbours: +Y, −Y, +Z, −Z; −X is opposite and stays dark
+         * at level 1 (the kernel reaches 3 · 9/4 texels, less than a face). */
+        for (f = 2; f < 6; ++f) {
+            float sum = 0.0f;
+            for (j = 0; j < 4; ++j)
+                for (i = 0; i < 4; ++i) {
+                    sample_texture_texel_layer(t, 1, f, i, j, v);
+                    sum += fabsf(v[0]);
+                }
+            CHECK(sum > 0.01f, "face %d got %g from +X", f, sum);
+        }
+        sample_texture_texel_layer(t, 1, 1, 0, 0, v);
+        CHECK(v[0] == 0.0f, "-X got %g", v[0]);
+        sample_texture_destroy(t);
+        for (f = 0; f < 6; ++f)
+            for (i = 0; i < m * m; ++i) d[f][i] = 0.625f;
+        CHECK(sample_texture_create_cube(faces, &mp, &t, NULL) == SAMPLE_OK, "constant lanczos cube");
+        for (k = 0; k < 3; ++k)
+            for (f = 0; f < 6; ++f)
+                for (j = 0; j < (m >> k ? m >> k : 1); ++j)
+                    for (i = 0; i < (m >> k ? m >> k : 1); ++i) {
+                        sample_texture_texel_layer(t, k, f, i, j, v);
+                        CHECK_NEAR(v[0], 0.625f, 1e-6);
+                    }
+        sample_texture_destroy(t);
+    }
+}
+
 int main(void)
 {
     RUN(test_face_selection);
     RUN(test_texel_centres);
     RUN(test_edges_and_corners);
+    RUN(test_all_corners);
     RUN(test_constant);
+    RUN(test_lod);
+    RUN(test_bad_input);
+    RUN(test_create_errors);
+    RUN(test_pyramids);
     return check_finish();
 }
