@@ -9,6 +9,7 @@
 #include "cube.h"
 #include "filter.h"
 #include "kernels.h"
+#include "latlong.h"
 
 /* Maps query q to its 2D query; returns the layer (cube face) or −1 where
  * the query has no direction (the zero vector). */
@@ -67,4 +68,15 @@ static int cube_map(const sample_texture *tex, const sample_query3 *q, sample_qu
 sample_status sample_batch_cube(const sample_texture *tex, const sample_sampler *smp, const sample_batch3_args *a)
 {
     return env_batch(tex, smp, a, SAMPLE_TEXTURE_CUBE, LS_ENV_CUBE, cube_map);
+}
+
+static int latlong_map(const sample_texture *tex, const sample_query3 *q, sample_query *out)
+{
+    (void)tex;
+    return ls_latlong_query(q, out);
+}
+
+sample_status sample_batch_latlong(const sample_texture *tex, const sample_sampler *smp, const sample_batch3_args *a)
+{
+    return env_batch(tex, smp, a, SAMPLE_TEXTURE_2D, LS_ENV_LATLONG, latlong_map);
 }

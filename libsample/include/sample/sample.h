@@ -400,6 +400,20 @@ typedef struct sample_batch3_args {
 SAMPLE_API sample_status sample_batch_cube(const sample_texture *tex, const sample_sampler *sampler,
                                            const sample_batch3_args *args);
 
+/* Sample a 2D texture as a lat-long (equirectangular) environment map by
+ * direction (doc/environment-maps.md), with OpenImageIO's convention for
+ * lat-long maps whose up direction is +y:
+ *   s = atan2(−x, z)/2π + ½,  t = ½ − atan2(y, √(x² + z²))/π
+ * (+y is row 0, +z the middle column, the seam s = 0 = 1 towards −z).
+ * Texels past s = 0 or 1 wrap (REPEAT); a row past t = 0 or t = 1 is read
+ * over the pole, from the other half of the map (s + ½, the row mirrored),
+ * so no filter shows the seam or the poles. λ and the footprint filters
+ * take the Jacobian of (s, t) from the exact derivatives of the two
+ * angles, strongly anisotropic near the poles (where it is held finite).
+ * The sampler's wrap modes are not used. Bad input as sample_batch_cube. */
+SAMPLE_API sample_status sample_batch_latlong(const sample_texture *tex, const sample_sampler *sampler,
+                                              const sample_batch3_args *args);
+
 /* One query; a thin wrapper over sample_batch(). */
 SAMPLE_API sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,
                          const sample_query *query, float rgba[4]);
