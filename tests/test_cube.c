@@ -6,6 +6,7 @@
  */
 #include "check.h"
 #include "internal.h"
+#include "sample/testing.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -499,6 +500,219 @@ static void test_pyramids(void)
     }
 }
 
+/* Inside a face every filter is the 2D filter of that face: a query whose
+ * footprint stays inside face f gives, bit for bit, what the reference
+ * path gives for a 2D texture holding face f (same pyramid, same (s, t)
+ * and Jacobian), so the footprint filters' in-face spans read face f. */
+static void test_face_interior(void)
+{
+    const int n = 32;
+    sample_mip_params mp;
+    sample_texture *cube, *flat;
+    float *d = (float *)malloc((size_t)n * n * 4 * sizeof(float));
+    sample_image im = {n, n, 4, SAMPLE_FORMAT_F32, d, 0};
+    uint32_t seed = 5;
+    int f, fp, i, j, c;
+    sample_mip_params_init(&mp);
+    cube = make_cube(n, &mp);
+    for (f = 0; f < 6; f += 5) {
+        for (j = 0; j < n; ++j)
+            for (i = 0; i < n; ++i)
+                for (c = 0; c < 4; ++c) d[(j * n + i) * 4 + c] = tval(f, i, j, c, n);
+        CHECK(sample_texture_create(&im, &mp, &flat, NULL) == SAMPLE_OK, "2D");
+        for (fp = 0; fp < SAMPLE_FOOTPRINT_COUNT; ++fp) {
+            sample_sampler s;
+            sample_query3 q3[32];
+            sample_query q2[32];
+            float a[32][4], b[32][4];
+            sample_batch3_args a3;
+            sample_batch_args a2;
+            sample_sampler_init(&s);
+            s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+            s.footprint = (sample_footprint)fp;
+            s.max_anisotropy = 8.0f;
+            for (i = 0; i < 32; ++i) {
+                double r[3], dx[3], dy[3];
+                int k;
+                cube_direction(f, 0.5 * (rnd(&seed) - 0.5), 0.5 * (rnd(&seed) - 0.5), r);
+                for (k = 0; k < 3; ++k) {
+                    dx[k] = (rnd(&seed) - 0.5) * 0.2;
+                    dy[k] = (rnd(&seed) - 0.5) * 0.05;
+                    q3[i].p[k] = (float)r[k];
+                    q3[i].dpdx[k] = (float)dx[k];
+                    q3[i].dpdy[k] = (float)dy[k];
+                }
+                CHECK(ls_cube_query(&q3[i], &q2[i]) == f, "face");
+            }
+            memset(&a3, 0, sizeof a3);
+            a3.count = 32;
+            a3.queries = q3;
+            a3.rgba = &a[0][0];
+            memset(&a2, 0, sizeof a2);
+            a2.count = 32;
+            a2.queries = q2;
+            a2.rgba = &b[0][0];
+            CHECK(sample_batch_cube(cube, &s, &a3) == SAMPLE_OK && sample_batch_reference(flat, &s, &a2) == SAMPLE_OK,
+                  "batches");
+            CHECK(!memcmp(a, b, sizeof a), "face %d footprint %d: cube and 2D differ", f, fp);
+        }
+        sample_texture_destroy(flat);
+    }
+    free(d);
+    sample_texture_destroy(cube);
+}
+
+/* ---- Continuity across edges and corners ---------------------------------- */
+
+/* The filters the continuity test runs (mag and min filter, footprint)
+ * and the bound on one step through a corner (doc/environment-maps.md,
+ * "Continuity"): the 2 × 2 filters meet the edge bound there too; wider
+ * ones walk their footprint in the coordinates of the face of its centre,
+ * where the quadrant past the corner, which no face holds, is filled from
+ * its neighbours, so the result moves when the centre changes face. */
+static const struct {
+    const char *name;
+    sample_filter mag, min;
+    sample_footprint fp;
+    double corner_bound;
+} cont_filters[] = {
+    {"linear", SAMPLE_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE, 0.05},
+    {"trilinear", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_NONE, 0.05},
+    {"cubic", SAMPLE_CUBIC, SAMPLE_CUBIC_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_NONE, 0.08},
+    {"aniso", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_ANISOTROPIC, 0.25},
+    {"blinn-newell", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_BLINN_NEWELL, 0.25},
+    {"ewa", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_EWA, 0.25},
+};
+#define CONT_FILTERS ((int)(sizeof cont_filters / sizeof cont_filters[0]))
+
+/* Largest change of any channel between consecutive queries along the
+ * path R(τ) = a + τ·(b − a), τ ∈ [0, 1] in `steps` steps, with a
+ * footprint of `fx` × `fy` texels (dR/dx, dR/dy across the path, scaled
+ * by |R|, on a face of n texels: ∂s ≈ ½·|dR|/|R|). */
+static double path_jump(const sample_texture *tex, const sample_sampler *smp, const double a[3], const double b[3],
+                        int steps, int n, double fx, double fy)
+{
+    static sample_query3 q[1024];
+    static float out[1024][4];
+    sample_batch3_args args;
+    double jump = 0.0;
+    int i, k;
+    for (i = 0; i <= steps; ++i) {
+        double tau = (double)i / steps, r[3], len = 0.0, u[3], v[3], ul = 0.0, vl = 0.0;
+        for (k = 0; k < 3; ++k) {
+            r[k] = a[k] + tau * (b[k] - a[k]);
+            len += r[k] * r[k];
+        }
+        len = sqrt(len);
+        /* u: the path's direction made orthogonal to R; v = R × u. */
+        for (k = 0; k < 3; ++k) u[k] = b[k] - a[k];
+        {
+            double d = (u[0] * r[0] + u[1] * r[1] + u[2] * r[2]) / (len * len);
+            for (k = 0; k < 3; ++k) u[k] -= d * r[k];
+        }
+        v[0] = r[1] * u[2] - r[2] * u[1];
+        v[1] = r[2] * u[0] - r[0] * u[2];
+        v[2] = r[0] * u[1] - r[1] * u[0];
+        for (k = 0; k < 3; ++k) {
+            ul += u[k] * u[k];
+            vl += v[k] * v[k];
+        }
+        ul = sqrt(ul);
+        vl = sqrt(vl);
+        for (k = 0; k < 3; ++k) {
+            q[i].p[k] = (float)r[k];
+            q[i].dpdx[k] = (float)(u[k] / ul * len * 2.0 * fx / n);
+            q[i].dpdy[k] = (float)(v[k] / vl * len * 2.0 * fy / n);
+        }
+    }
+    memset(&args, 0, sizeof args);
+    args.count = (size_t)steps + 1;
+    args.queries = q;
+    args.rgba = &out[0][0];
+    CHECK(sample_batch_cube(tex, smp, &args) == SAMPLE_OK, "batch");
+    {
+        int wi = 0;
+        for (i = 1; i <= steps; ++i)
+            for (k = 0; k < 4; ++k) {
+                double d = fabs((double)out[i][k] - (double)out[i - 1][k]);
+                if (d > jump) jump = d, wi = i;
+            }
+        if (getenv("TEST_CUBE_VERBOSE") && jump > 0.05) {
+            sample_query o0, o1;
+            int f0 = ls_cube_query(&q[wi - 1], &o0), f1 = ls_cube_query(&q[wi], &o1);
+            printf("  step %.4f at %d: face %d (%.4f %.4f) -> %d (%.4f %.4f), footprint %g x %g\n", jump, wi, f0,
+                   o0.s, o0.t, f1, o1.s, o1.t, fx, fy);
+        }
+    }
+    return jump;
+}
+
+/* Random texels in [0, 1] (so that a seam, which would pair unrelated
+ * texels, jumps by about ⅓ on average): along paths across the middle of
+ * each of the 12 edges, 3 texels of path in 200 steps (0.015 texel a
+ * step), every filter changes by at most CONT_BOUND a step — the gradient
+ * of a bilinear interpolant of such texels is at most 1 per texel,
+ * bicubic's about 1.5. Through each of the 8 corners (along the diagonal,
+ * the worst way through) each filter stays within its corner_bound. Both
+ * with a 2 × ½-texel and a 0.3-texel footprint. */
+#define CONT_BOUND 0.05
+static void test_continuity(void)
+{
+    const int n = 16;
+    uint32_t seed = 99;
+    float *d = (float *)malloc((size_t)6 * n * n * 4 * sizeof(float));
+    sample_image faces[6];
+    sample_mip_params mp;
+    sample_texture *tex = NULL;
+    int f, i, e, fi;
+    double worst[CONT_FILTERS] = {0}, corner[CONT_FILTERS] = {0};
+    for (i = 0; i < 6 * n * n * 4; ++i) d[i] = rnd(&seed);
+    for (f = 0; f < 6; ++f) faces[f] = (sample_image){n, n, 4, SAMPLE_FORMAT_F32, d + (size_t)f * n * n * 4, 0};
+    sample_mip_params_init(&mp);
+    CHECK(sample_texture_create_cube(faces, &mp, &tex, NULL) == SAMPLE_OK, "create");
+    free(d);
+    for (fi = 0; fi < CONT_FILTERS; ++fi) {
+        sample_sampler s;
+        sample_sampler_init(&s);
+        s.mag_filter = cont_filters[fi].mag;
+        s.min_filter = cont_filters[fi].min;
+        s.footprint = cont_filters[fi].fp;
+        s.max_anisotropy = 8.0f;
+        /* The 12 edges: between axes x, y, z with signs; the path crosses
+         * the edge's midpoint (1.5 texels of the face each side). */
+        for (e = 0; e < 12; ++e) {
+            int ax = e / 4, sg1 = (e & 1) ? -1 : 1, sg2 = (e & 2) ? -1 : 1, ay = (ax + 1) % 3;
+            double a[3] = {0, 0, 0}, b[3] = {0, 0, 0}, off = 1.5 * 2.0 / n;
+            a[ax] = sg1;
+            a[ay] = sg2 * (1.0 - off);
+            b[ax] = sg1 * (1.0 - off);
+            b[ay] = sg2;
+            /* 1.5 texels either side: from (1, 1 − off) to (1 − off, 1). */
+            worst[fi] = fmax(worst[fi], path_jump(tex, &s, a, b, 200, n, 2.0, 0.5));
+            worst[fi] = fmax(worst[fi], path_jump(tex, &s, a, b, 200, n, 0.3, 0.3));
+        }
+        /* The 8 corners: from inside face x across the corner into the
+         * region between the other two faces. */
+        for (e = 0; e < 8; ++e) {
+            double c[3] = {(e & 1) ? -1 : 1, (e & 2) ? -1 : 1, (e & 4) ? -1 : 1}, a[3], b[3], off = 1.5 * 2.0 / n;
+            int k;
+            for (k = 0; k < 3; ++k) {
+                a[k] = c[k] * (k == 0 ? 1.0 : 1.0 - off);
+                b[k] = c[k] * (k == 0 ? 1.0 - off : 1.0);
+            }
+            corner[fi] = fmax(corner[fi], path_jump(tex, &s, a, b, 200, n, 2.0, 0.5));
+            corner[fi] = fmax(corner[fi], path_jump(tex, &s, a, b, 200, n, 0.3, 0.3));
+        }
+        CHECK(worst[fi] <= CONT_BOUND, "%s: a step of %g across an edge", cont_filters[fi].name, worst[fi]);
+        CHECK(corner[fi] <= cont_filters[fi].corner_bound, "%s: a step of %g through a corner",
+              cont_filters[fi].name, corner[fi]);
+        if (getenv("TEST_CUBE_VERBOSE"))
+            printf("continuity %s: max step %.4f across edges, %.4f through corners\n", cont_filters[fi].name,
+                   worst[fi], corner[fi]);
+    }
+    sample_texture_destroy(tex);
+}
+
 int main(void)
 {
     RUN(test_face_selection);
@@ -510,5 +724,7 @@ int main(void)
     RUN(test_bad_input);
     RUN(test_create_errors);
     RUN(test_pyramids);
+    RUN(test_face_interior);
+    RUN(test_continuity);
     return check_finish();
 }
