@@ -51,11 +51,13 @@ static void latlong_dst(const double r[3], double rho, const double dr[3], float
 {
     double r2, drho, dphi, dtheta;
     if (rho == 0.0) {
-        /* On the poles' axis: any step off it moves the longitude
-         * arbitrarily far (∂s unbounded), and ρ grows by the step's length
+        /* On the poles' axis the longitude has no derivative; a step dr
+         * leaves the pole along the meridian of dr itself, on which the
+         * longitude is constant: ∂s = 0, the limit of ∂φ along that path
+         * (doc/environment-maps.md, "Poles"). ρ grows by the step's length
          * in x and z. */
         drho = sample_hypot(dr[0], dr[2]);
-        *ds = drho > 0.0 ? FLT_MAX : 0.0f;
+        *ds = 0.0f;
         *dt = finite_float(drho / r[1] / LL_PI); /* t grows off the north pole (y > 0) */
         return;
     }

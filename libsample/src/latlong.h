@@ -22,10 +22,11 @@ double ls_atan2(double y, double x);
 
 /* The 2D query of a lat-long lookup: (s, t) above, and the Jacobian of
  * (s, t) by the chain rule through the exact derivatives of the two
- * angles, which grows without bound towards the poles (ds ∝ 1/√(x² + z²)):
- * held at ±FLT_MAX there, so that λ clamps and the footprint filters'
- * texel cap applies. Returns 0, or −1 for the zero direction. The query
- * must be finite. */
+ * angles. ∂s grows without bound towards the poles (∝ 1/√(x² + z²)) and
+ * is held at ±FLT_MAX, so that λ clamps and the footprint filters' texel
+ * cap applies; on the poles' axis itself it is 0, its limit along the
+ * derivative's own direction. Returns 0, or −1 for the zero direction.
+ * The query must be finite. */
 int ls_latlong_query(const sample_query3 *q, sample_query *out);
 
 #endif /* SAMPLE_LATLONG_H */
