@@ -14,13 +14,15 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-static float rnd(uint32_t *s)
+static uint32_t rnd_u32_of(uint32_t *s)
 {
     *s ^= *s << 13;
     *s ^= *s >> 17;
     *s ^= *s << 5;
-    return (float)(*s >> 8) * (1.0f / 16777216.0f);
+    return *s;
 }
+
+static float rnd(uint32_t *s) { return (float)(rnd_u32_of(s) >> 8) * (1.0f / 16777216.0f); }
 
 /* Texel value of face f, texel (i, j), channel c of an n-sized test cube:
  * distinct exact floats. */
@@ -391,6 +393,57 @@ static void test_bad_input(void)
     CHECK(sample_batch_cube(tex, &s, &a) == SAMPLE_E_INVALID_ARGUMENT, "NULL queries");
     sample_texture_destroy(flat);
     sample_texture_destroy(tex);
+}
+
+static sample_texture *make_latlong(void);
+
+/* Finite directions and derivatives of any magnitude (FLT_MAX, 1e-45,
+ * denormals, −0) give finite results within the texel cap, on cube and
+ * lat-long maps, under every footprint filter. */
+static void test_extreme_directions(void)
+{
+    static const float mags[] = {FLT_MAX, 1e30f, 1.0f, 1e-30f, 1e-45f, 0.0f, -0.0f};
+    const int nm = (int)(sizeof mags / sizeof mags[0]);
+    sample_mip_params mp;
+    sample_texture *cube, *ll;
+    uint32_t seed = 1;
+    int fp, i, k, c, kind;
+    sample_mip_params_init(&mp);
+    cube = make_cube(8, &mp);
+    ll = make_latlong();
+    for (kind = 0; kind < 2; ++kind)
+        for (fp = 0; fp < SAMPLE_FOOTPRINT_COUNT; ++fp) {
+            sample_sampler s;
+            sample_query3 q[64];
+            float out[64][4];
+            sample_stats st[64];
+            sample_batch3_args a;
+            sample_sampler_init(&s);
+            s.min_filter = SAMPLE_CUBIC_MIPMAP_LINEAR;
+            s.mag_filter = SAMPLE_CUBIC;
+            s.footprint = (sample_footprint)fp;
+            s.max_anisotropy = 16.0f;
+            for (i = 0; i < 64; ++i)
+                for (k = 0; k < 3; ++k) {
+                    float sg = (rnd_u32_of(&seed) & 1) ? -1.0f : 1.0f;
+                    q[i].p[k] = sg * mags[rnd_u32_of(&seed) % nm] * rnd(&seed);
+                    q[i].dpdx[k] = mags[rnd_u32_of(&seed) % nm] * (rnd(&seed) - 0.5f);
+                    q[i].dpdy[k] = mags[rnd_u32_of(&seed) % nm] * (rnd(&seed) - 0.5f);
+                }
+            memset(&a, 0, sizeof a);
+            a.count = 64;
+            a.queries = q;
+            a.rgba = &out[0][0];
+            a.stats = st;
+            CHECK((kind ? sample_batch_latlong(ll, &s, &a) : sample_batch_cube(cube, &s, &a)) == SAMPLE_OK, "batch");
+            for (i = 0; i < 64; ++i) {
+                for (c = 0; c < 4; ++c) CHECK(isfinite(out[i][c]), "kind %d fp %d query %d: %g", kind, fp, i, out[i][c]);
+                CHECK(st[i].texels <= SAMPLE_MAX_FOOTPRINT_TEXELS + 64, "kind %d fp %d: %u texels", kind, fp,
+                      st[i].texels);
+            }
+        }
+    sample_texture_destroy(cube);
+    sample_texture_destroy(ll);
 }
 
 /* Creation: faces must be square, equal, of one format; levels checked;
@@ -962,6 +1015,7 @@ int main(void)
     RUN(test_constant);
     RUN(test_lod);
     RUN(test_bad_input);
+    RUN(test_extreme_directions);
     RUN(test_create_errors);
     RUN(test_pyramids);
     RUN(test_face_interior);
