@@ -48,14 +48,8 @@
 static int verbose;
 
 static uint32_t rng = 12345u;
-static uint32_t rnd_u32(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
-}
-static float rnd01(void) { return (float)(rnd_u32() >> 8) * (1.0f / 16777216.0f); }
+static uint32_t rnd_u32(void) { return mesa_rnd_u32(&rng); }
+static float rnd01(void) { return mesa_rnd01(&rng); }
 
 /* ---- GL plumbing (mesa_gl.h) ---------------------------------------------- */
 
@@ -133,11 +127,7 @@ static float coord(sample_wrap w)
 
 /* A texel-space scale 2^e·(1 + m/256): a mantissa of 8 bits, so that ρ and
  * its logarithm are exact in softpipe's 16-bit log2 table as well. */
-static float grad_scale(void)
-{
-    int e = (int)(rnd_u32() % 8) - 2, m = (int)(rnd_u32() % 256);
-    return ldexpf(1.0f + (float)m / 256.0f, e);
-}
+static float grad_scale(void) { return mesa_grad_scale(&rng, -2, 5); }
 
 /* textureGrad queries: axis-aligned Jacobians, on the diagonal or the
  * anti-diagonal, where softpipe's ρ (max of |components| per axis) equals

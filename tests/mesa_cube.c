@@ -49,14 +49,8 @@
 static int verbose;
 
 static uint32_t rng = 2026u;
-static uint32_t rnd_u32(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
-}
-static float rnd01(void) { return (float)(rnd_u32() >> 8) * (1.0f / 16777216.0f); }
+static uint32_t rnd_u32(void) { return mesa_rnd_u32(&rng); }
+static float rnd01(void) { return mesa_rnd01(&rng); }
 
 /* Query i: texels (R, lod), (dR/dx, 0), (dR/dy, 0). */
 static const char *fs_src =
@@ -75,11 +69,7 @@ static const char *fs_src =
     "}\n";
 
 /* A texel-space scale 2^e·(1 + m/256) (mesa_check's grad_scale). */
-static float grad_scale(void)
-{
-    int e = (int)(rnd_u32() % 9) - 2, m = (int)(rnd_u32() % 256);
-    return ldexpf(1.0f + (float)m / 256.0f, e);
-}
+static float grad_scale(void) { return mesa_grad_scale(&rng, -2, 6); }
 
 /* A random direction with its major component exactly ±1, and its face. */
 static int direction(float r[3])

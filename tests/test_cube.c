@@ -641,6 +641,16 @@ static const struct {
 };
 #define CONT_FILTERS ((int)(sizeof cont_filters / sizeof cont_filters[0]))
 
+/* The sampler of cont_filters[fi]. */
+static void cont_sampler(int fi, sample_sampler *s)
+{
+    sample_sampler_init(s);
+    s->mag_filter = cont_filters[fi].mag;
+    s->min_filter = cont_filters[fi].min;
+    s->footprint = cont_filters[fi].fp;
+    s->max_anisotropy = 8.0f;
+}
+
 /* Largest change of any channel between consecutive queries along the
  * path R(τ) = a + τ·(b − a), τ ∈ [0, 1] in `steps` steps, with a
  * footprint of `fx` × `fy` texels (dR/dx, dR/dy across the path, scaled
@@ -729,11 +739,7 @@ static void test_continuity(void)
     free(d);
     for (fi = 0; fi < CONT_FILTERS; ++fi) {
         sample_sampler s;
-        sample_sampler_init(&s);
-        s.mag_filter = cont_filters[fi].mag;
-        s.min_filter = cont_filters[fi].min;
-        s.footprint = cont_filters[fi].fp;
-        s.max_anisotropy = 8.0f;
+        cont_sampler(fi, &s);
         /* The 12 edges: between axes x, y, z with signs; the path crosses
          * the edge's midpoint (1.5 texels of the face each side). */
         for (e = 0; e < 12; ++e) {
@@ -924,11 +930,7 @@ static void test_latlong_continuity(void)
     for (fi = 0; fi < CONT_FILTERS; ++fi) {
         sample_sampler s;
         double worst = 0.0;
-        sample_sampler_init(&s);
-        s.mag_filter = cont_filters[fi].mag;
-        s.min_filter = cont_filters[fi].min;
-        s.footprint = cont_filters[fi].fp;
-        s.max_anisotropy = 8.0f;
+        cont_sampler(fi, &s);
         for (path = 0; path < 6; ++path) {
             sample_batch3_args a;
             for (i = 0; i <= 400; ++i) {
