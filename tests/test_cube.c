@@ -130,6 +130,16 @@ static void test_texel_centres(void)
                     for (c = 0; c < 4; ++c) CHECK_EQF(out[c], tval(f, i, j, c, n));
                 }
     }
+    {
+        /* (1, 0, −1): the x–z tie goes to +X, where sc = −rz = 1, s = 1:
+         * u = n, which NEAREST clamps to texel n − 1 of +X (t = ½: row 2). */
+        const float r[3] = {1.0f, 0.0f, -1.0f};
+        sample_query3 q = q_dir(r);
+        float out[4];
+        s.mag_filter = SAMPLE_NEAREST;
+        one(tex, &s, &q, out, NULL);
+        for (c = 0; c < 4; ++c) CHECK_EQF(out[c], tval(0, n - 1, n / 2, c, n));
+    }
     sample_texture_destroy(tex);
 }
 
