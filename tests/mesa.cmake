@@ -28,10 +28,11 @@ if(SAMPLE_OSMESA_LIBRARY AND SAMPLE_OSMESA_INCLUDE)
   target_include_directories(mesa_cube PRIVATE ${SAMPLE_OSMESA_INCLUDE} ${PROJECT_SOURCE_DIR}/libsample/src)
   target_compile_options(mesa_cube PRIVATE ${SAMPLE_WARNINGS})
   target_compile_definitions(mesa_cube PRIVATE _POSIX_C_SOURCE=200809L)
-  if(TARGET texsample)
-    # Every textureGrad state also through `texsample lookup --cube` (18
-    # process starts of the front program, a few ms each).
-    add_test(NAME mesa_cube COMMAND mesa_cube --texsample $<TARGET_FILE:texsample>)
+  if(TARGET texsample_cli)
+    # Every textureGrad state also through `texsample lookup --cube`: 18
+    # starts of the front program, which reads raw files without loading
+    # the image libraries (a few ms each).
+    add_test(NAME mesa_cube COMMAND mesa_cube --texsample $<TARGET_FILE:texsample_cli>)
   else()
     add_test(NAME mesa_cube COMMAND mesa_cube)
   endif()
