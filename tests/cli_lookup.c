@@ -96,6 +96,57 @@ static void explicit_levels(void)
     CHECK_EQF(out[0], 9.0f); /* λ = 2 → level 2 */
 }
 
+/* --cube and --latlong: a 1 × 1-face cube whose face f holds f, queried
+ * along each axis; a cube's levels from --levels; a 2 × 1 lat-long map
+ * (left half 1, right half 2) at +x (s = ¼) and −x (s = ¾); and their
+ * usage errors. */
+static void environment(void)
+{
+    float cube[6 * 4], lv0[6 * 4 * 4], lv1[6 * 4], ll[8] = {1, 0, 0, 1, 2, 0, 0, 1}, q[6 * 9], out[6 * 4];
+    int f, k;
+    memset(q, 0, sizeof q);
+    for (f = 0; f < 6; ++f) {
+        cube[4 * f] = (float)f;
+        cube[4 * f + 1] = cube[4 * f + 2] = 0.0f;
+        cube[4 * f + 3] = 1.0f;
+        q[9 * f + f / 2] = (f & 1) ? -1.0f : 1.0f;
+    }
+    put("cube.raw", cube, sizeof cube);
+    put("dirs.raw", q, sizeof q);
+    CHECK(run("lookup --cube cube.raw --size 1 --queries dirs.raw --out rc.raw") == 0, "cube run");
+    CHECK(get("rc.raw", out, sizeof out) == sizeof out, "cube output");
+    for (f = 0; f < 6; ++f) CHECK_EQF(out[4 * f], (float)f);
+    /* Levels: a 2-face cube whose level 1 holds 10 + f; λ = 1 on every axis. */
+    for (k = 0; k < 6 * 4 * 4; ++k) lv0[k] = 0.0f;
+    for (f = 0; f < 6; ++f) {
+        lv1[4 * f] = 10.0f + (float)f;
+        lv1[4 * f + 1] = lv1[4 * f + 2] = 0.0f;
+        lv1[4 * f + 3] = 1.0f;
+        q[9 * f + 3 + (f / 2 + 1) % 3] = 2.0f; /* dR/dx across the face: ∂s = 1, ρ = 2 */
+    }
+    put("cb.raw", lv0, sizeof lv0);
+    put("cl.1.raw", lv1, sizeof lv1);
+    put("dirs2.raw", q, sizeof q);
+    CHECK(run("lookup --cube cb.raw --size 2 --levels cl --queries dirs2.raw --out rc2.raw --min linear_mipmap_nearest") == 0,
+          "cube levels run");
+    get("rc2.raw", out, sizeof out);
+    for (f = 0; f < 6; ++f) CHECK_EQF(out[4 * f], 10.0f + (float)f);
+    memset(q, 0, sizeof q);
+    q[0] = 1.0f;  /* +x: s = ¼, the left texel */
+    q[9] = -1.0f; /* −x: s = ¾, the right texel */
+    put("ll.raw", ll, sizeof ll);
+    put("dirs3.raw", q, 18 * sizeof(float));
+    CHECK(run("lookup --latlong ll.raw --w 2 --h 1 --queries dirs3.raw --out rl.raw --mag nearest") == 0, "latlong run");
+    get("rl.raw", out, 8 * sizeof(float));
+    CHECK_EQF(out[0], 1.0f);
+    CHECK_EQF(out[4], 2.0f);
+    CHECK(run("lookup --cube cube.raw --size 2 --queries dirs.raw") == 1, "cube file of the wrong size");
+    CHECK(run("lookup --cube cube.raw --queries dirs.raw") == 2, "--cube without --size");
+    CHECK(run("lookup --cube cube.raw --raw tex.raw --size 1 --queries dirs.raw") == 2, "two textures");
+    CHECK(run("lookup --raw tex.raw --w 2 --h 2 --size 2 --queries q.raw") == 2, "--size without --cube");
+    CHECK(run("lookup --cube cube.raw --size 1 --queries q.raw") == 1, "query file not a multiple of 36");
+}
+
 static void exit_codes(void)
 {
     CHECK(run("lookup --help") == 0, "help is 0");
@@ -184,6 +235,7 @@ int main(int argc, char **argv)
     snprintf(dir, sizeof dir, "%s", tmpl);
     RUN(lookup_values);
     RUN(explicit_levels);
+    RUN(environment);
     RUN(exit_codes);
     RUN(syntax);
     cli_remove_dir(dir);

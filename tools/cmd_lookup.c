@@ -18,7 +18,9 @@
 
 static const char help[] =
     "usage: texsample lookup (--raw FILE --w W --h H | --image FILE) --queries FILE\n"
-    "                        [--out FILE] [--text] [sampler options]\n\n"
+    "                        [--out FILE] [--text] [sampler options]\n"
+    "       texsample lookup (--cube FILE --size N | --latlong FILE --w W --h H)\n"
+    "                        --queries FILE [--out FILE] [--text] [sampler options]\n\n"
     "Samples a texture at every query of a query file and writes the results.\n\n"
     "Texture:\n"
     "  --raw FILE --w W --h H  little-endian float32 RGBA texels, row 0 (t = 0) first\n"
@@ -29,12 +31,23 @@ static const char help[] =
     "  --levels PREFIX         explicit mip levels PREFIX.1.raw, PREFIX.2.raw, ... (raw\n"
     "                          float32 RGBA, sizes max(1, W>>k) x max(1, H>>k)); as many\n"
     "                          as exist are used, and no pyramid is generated\n"
+    "  --cube FILE --size N    a cube map: six N x N faces of float32 RGBA in OpenGL's\n"
+    "                          order +X -X +Y -Y +Z -Z, each row 0 (t = 0) first; with\n"
+    "                          --levels, PREFIX.L.raw holds the six faces of level L.\n"
+    "                          Queries are directions (below); filtering is seamless\n"
+    "                          across faces, wrap modes are ignored\n"
+    "  --latlong FILE --w W --h H\n"
+    "                          a lat-long (equirectangular) map, float32 RGBA, row 0\n"
+    "                          (t = 0, up = +y) first, sampled by direction with\n"
+    "                          OpenImageIO's convention (doc/environment-maps.md);\n"
+    "                          --levels as for --raw\n"
     "  --mipgen box|lanczos3|kaiser|none\n"
     "                          how to build the pyramid otherwise (default box)\n"
     "  An --image file's stored wrap modes (wrapmodes, as mip writes them) are used\n"
     "  unless --wrap, --wrap-s or --wrap-t is given.\n\n"
     "Queries:\n"
     "  --queries FILE          float32, 6 per query: s t ds/dx dt/dx ds/dy dt/dy\n"
+    "                          (--cube, --latlong: 9 per query: x y z, dR/dx, dR/dy)\n"
     "  --corners FILE          float32, 8 per query: the (s,t) images of the pixel's 2x2\n"
     "                          footprint corners (-1,-1) (+1,-1) (+1,+1) (-1,+1)\n"
     "                          (used by --filter blinn-newell)\n"
@@ -44,6 +57,26 @@ static const char help[] =
     "  --reference-path        sample through the reference path (the same results,\n"
     "                          slower; sample/testing.h)\n\n";
 
+/* Whether arg is option `name`, as NAME or NAME=VALUE. */
+static int is_option(const char *arg, const char *name)
+{
+    size_t n = strlen(name);
+    return strncmp(arg, name, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
+}
+
+/* Direction queries of an environment map through its entry point. */
+static sample_status lookup_env(const tl_source *src, const sample_texture *tex, const sample_sampler *smp,
+                                const void *queries, size_t n, float *out, sample_stats *stats)
+{
+    sample_batch3_args a;
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.queries = (const sample_query3 *)queries;
+    a.rgba = out;
+    a.stats = stats;
+    return (src->cube ? sample_batch_cube : sample_batch_latlong)(tex, smp, &a);
+}
+
 int cmd_lookup(int argc, char **argv)
 {
     const char *sub = "lookup";
@@ -52,6 +85,7 @@ int cmd_lookup(int argc, char **argv)
     sample_mip_params mip;
     const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v, *why;
     int text = 0, want_stats = 0, reference = 0, wrap_s_given = 0, wrap_t_given = 0, i, r, rc = EXIT_RUNTIME;
+    int textures = 0, qfloats;
     void *qdata = NULL, *cdata = NULL;
     size_t qsize = 0, csize = 0, n;
     sample_texture *tex = NULL;
@@ -79,12 +113,30 @@ int cmd_lookup(int argc, char **argv)
             wrap_s_given |= argv[i][6] != '-' || argv[i][7] == 's';
             wrap_t_given |= argv[i][6] != '-' || argv[i][7] == 't';
         }
+        if (is_option(argv[i], "--raw") || is_option(argv[i], "--image")) ++textures;
         if ((r = cli_sampler_flag(sub, argc, argv, &i, &smp)) != 0) {
             if (r < 0) return EXIT_USAGE;
             continue;
         }
         if ((r = tl_source_flag(sub, argc, argv, &i, &src)) != 0) {
             if (r < 0) return EXIT_USAGE;
+            continue;
+        }
+        if (cli_opt(argc, argv, &i, "--cube", &v)) {
+            src.raw = v;
+            src.cube = 1;
+            ++textures;
+            continue;
+        }
+        if (cli_opt(argc, argv, &i, "--latlong", &v)) {
+            src.raw = v;
+            src.latlong = 1;
+            ++textures;
+            continue;
+        }
+        if (cli_opt(argc, argv, &i, "--size", &v)) {
+            if (!cli_parse_int(v, &src.size) || src.size <= 0 || src.size > SAMPLE_MAX_SIZE)
+                return cli_usage_error(sub, "--size needs a size from 1 to %d, not '%s'", SAMPLE_MAX_SIZE, v);
             continue;
         }
         if (cli_opt(argc, argv, &i, "--queries", &qpath)) continue;
@@ -103,7 +155,12 @@ int cmd_lookup(int argc, char **argv)
         return cli_usage_error(sub, "unknown option '%s'", argv[i]);
     }
     if (!qpath) return cli_usage_error(sub, "--queries FILE is required");
-    if (!tl_source_given(&src)) return cli_usage_error(sub, "a texture is required (--raw or --image)");
+    if (!tl_source_given(&src)) return cli_usage_error(sub, "a texture is required (--raw, --image, --cube or --latlong)");
+    if (textures > 1) return cli_usage_error(sub, "give one texture: --raw, --image, --cube or --latlong");
+    if (src.cube && (src.w || src.h)) return cli_usage_error(sub, "--cube takes --size N, not --w/--h");
+    if (src.size && !src.cube) return cli_usage_error(sub, "--size is for --cube");
+    if ((src.cube || src.latlong) && cpath) return cli_usage_error(sub, "--corners is for 2D queries (--raw, --image)");
+    qfloats = (src.cube || src.latlong) ? 9 : 6;
     if (sample_sampler_validate(&smp) != SAMPLE_OK)
         return cli_usage_error(sub, "inconsistent sampler state (min-lod > max-lod, base-level > max-level, or aniso < 1)");
 
@@ -127,11 +184,12 @@ int cmd_lookup(int argc, char **argv)
         cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, why);
         goto done;
     }
-    if (qsize % (6 * sizeof(float)) != 0) {
-        cli_runtime_error(sub, "query file '%s' is %zu bytes, not a multiple of 24 (6 floats)", qpath, qsize);
+    if (qsize % (qfloats * sizeof(float)) != 0) {
+        cli_runtime_error(sub, "query file '%s' is %zu bytes, not a multiple of %zu (%d floats)", qpath, qsize,
+                          qfloats * sizeof(float), qfloats);
         goto done;
     }
-    n = qsize / (6 * sizeof(float));
+    n = qsize / (qfloats * sizeof(float));
     if (cpath) {
         if (!cli_read_file(cpath, &cdata, &csize, &why)) {
             cli_runtime_error(sub, "cannot read corner file '%s': %s", cpath, why);
@@ -155,7 +213,10 @@ int cmd_lookup(int argc, char **argv)
     a.corners = (const sample_quad *)cdata;
     a.rgba = out;
     a.stats = stats;
-    if ((st = (reference ? sample_batch_reference : sample_batch)(tex, &smp, &a)) != SAMPLE_OK) {
+    /* Environment maps always run the reference path. */
+    st = qfloats == 9 ? lookup_env(&src, tex, &smp, qdata, n, out, stats)
+                      : (reference ? sample_batch_reference : sample_batch)(tex, &smp, &a);
+    if (st != SAMPLE_OK) {
         cli_runtime_error(sub, "sampling failed: %s", sample_strerror(st));
         goto done;
     }
@@ -164,11 +225,13 @@ int cmd_lookup(int argc, char **argv)
         goto done;
     }
     if (text) {
-        const sample_query *q = a.queries;
+        const float *q = (const float *)qdata;
         size_t k;
-        for (k = 0; k < n; ++k)
-            printf("%.9g %.9g -> %.9g %.9g %.9g %.9g\n", q[k].s, q[k].t, out[4 * k], out[4 * k + 1],
-                   out[4 * k + 2], out[4 * k + 3]);
+        for (k = 0; k < n; ++k) {
+            if (qfloats == 9) printf("%.9g %.9g %.9g", q[9 * k], q[9 * k + 1], q[9 * k + 2]);
+            else printf("%.9g %.9g", q[6 * k], q[6 * k + 1]);
+            printf(" -> %.9g %.9g %.9g %.9g\n", out[4 * k], out[4 * k + 1], out[4 * k + 2], out[4 * k + 3]);
+        }
     }
     if (want_stats) {
         size_t k;

@@ -33,8 +33,9 @@ int tl_source_flag(const char *sub, int argc, char **argv, int *i, tl_source *sr
     return 1;
 }
 
-/* Read one raw float32 RGBA level of w × h into *data. */
-static int read_raw(const char *sub, const char *path, int w, int h, void **data)
+/* Read one raw float32 RGBA level of w × h into *data (a cube map's level:
+ * `faces` = 6 faces of w × w, h = 6w). */
+static int read_raw(const char *sub, const char *path, int w, int h, int faces, void **data)
 {
     size_t size, want = (size_t)w * (size_t)h * 4 * sizeof(float);
     const char *why;
@@ -43,7 +44,11 @@ static int read_raw(const char *sub, const char *path, int w, int h, void **data
         return -1;
     }
     if (size != want) {
-        cli_runtime_error(sub, "'%s' holds %zu bytes; %d x %d float32 RGBA needs %zu", path, size, w, h, want);
+        if (faces == 6)
+            cli_runtime_error(sub, "'%s' holds %zu bytes; six %d x %d faces of float32 RGBA need %zu", path, size, w,
+                              w, want);
+        else
+            cli_runtime_error(sub, "'%s' holds %zu bytes; %d x %d float32 RGBA needs %zu", path, size, w, h, want);
         free(*data);
         *data = NULL;
         return -1;
@@ -51,42 +56,59 @@ static int read_raw(const char *sub, const char *path, int w, int h, void **data
     return 0;
 }
 
-static int load_raw(const char *sub, const tl_source *src, const sample_mip_params *mip, sample_texture **out)
+/* The images of level k of a raw texture: one w × h image, or for a cube
+ * map six n × n faces, which a raw file holds one after the other — read
+ * as one n × 6n image. */
+static int raw_images(const tl_source *src, void *data, int k, sample_image *im)
 {
-    sample_image lv[SAMPLE_MAX_LEVELS];
+    const int w = src->w >> k > 0 ? src->w >> k : 1, h = src->h >> k > 0 ? src->h >> k : 1;
+    int f, faces = src->cube ? 6 : 1;
+    for (f = 0; f < faces; ++f) {
+        im[f].width = w;
+        im[f].height = h;
+        im[f].channels = 4;
+        im[f].format = SAMPLE_FORMAT_F32;
+        im[f].row_stride = 0;
+        im[f].data = (const float *)data + (size_t)f * w * h * 4;
+    }
+    return faces;
+}
+
+static int load_raw(const char *sub, tl_source *src, const sample_mip_params *mip, sample_texture **out)
+{
+    sample_image lv[6 * SAMPLE_MAX_LEVELS];
     void *data[SAMPLE_MAX_LEVELS] = {0};
-    int count = 1, k, rc = -1;
+    int count = 1, k, rc = -1, faces = src->cube ? 6 : 1;
     sample_error err;
+    sample_status st;
+    if (src->cube) {
+        if (src->size <= 0) return cli_usage_error(sub, "--cube needs --size"), -1;
+        src->w = src->h = src->size;
+    }
     if (src->w <= 0 || src->h <= 0) return cli_usage_error(sub, "--raw needs --w and --h"), -1;
-    if (read_raw(sub, src->raw, src->w, src->h, &data[0]) != 0) return -1;
+    if (read_raw(sub, src->raw, src->w, faces * src->h, faces, &data[0]) != 0) return -1;
     memset(lv, 0, sizeof lv);
-    lv[0].width = src->w;
-    lv[0].height = src->h;
-    lv[0].channels = 4;
-    lv[0].format = SAMPLE_FORMAT_F32;
-    lv[0].data = data[0];
+    raw_images(src, data[0], 0, lv);
     if (src->levels) {
         /* As many PREFIX.k.raw as exist, in order. */
         for (k = 1; k < SAMPLE_MAX_LEVELS; ++k) {
             char path[4096];
             FILE *f;
             int w = src->w >> k > 0 ? src->w >> k : 1, h = src->h >> k > 0 ? src->h >> k : 1;
-            if (w == 1 && h == 1 && (lv[k - 1].width == 1 && lv[k - 1].height == 1)) break;
+            if (w == 1 && h == 1 && (lv[faces * (k - 1)].width == 1 && lv[faces * (k - 1)].height == 1)) break;
             snprintf(path, sizeof path, "%s.%d.raw", src->levels, k);
             if (!(f = fopen(path, "rb"))) break;
             fclose(f);
-            if (read_raw(sub, path, w, h, &data[k]) != 0) goto done;
-            lv[k] = lv[0];
-            lv[k].width = w;
-            lv[k].height = h;
-            lv[k].data = data[k];
+            if (read_raw(sub, path, w, faces * h, faces, &data[k]) != 0) goto done;
+            raw_images(src, data[k], k, lv + faces * k);
             count = k + 1;
         }
-        if (sample_texture_create_levels(lv, count, out, &err) != SAMPLE_OK) {
-            cli_runtime_error(sub, "%s", err.message);
-            goto done;
-        }
-    } else if (sample_texture_create(&lv[0], mip, out, &err) != SAMPLE_OK) {
+        st = src->cube ? sample_texture_create_cube_levels(lv, count, out, &err)
+                       : sample_texture_create_levels(lv, count, out, &err);
+    } else {
+        st = src->cube ? sample_texture_create_cube(lv, mip, out, &err) : sample_texture_create(&lv[0], mip, out, &err);
+    }
+    if (st != SAMPLE_OK) {
         cli_runtime_error(sub, "%s", err.message);
         goto done;
     }

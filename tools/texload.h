@@ -8,8 +8,12 @@
 #endif
 
 typedef struct tl_source {
-    const char *raw;        /* --raw FILE: float32 RGBA */
+    const char *raw;        /* --raw FILE: float32 RGBA (also --cube, --latlong) */
     int w, h;               /* --w, --h */
+    /* Environment maps (lookup's --cube, --latlong; doc/environment-maps.md):
+     * raw holds six size x size faces in GL order (a cube map), or a 2D
+     * texture sampled by direction (latlong). */
+    int cube, size, latlong;
     const char *levels;     /* --levels PREFIX: PREFIX.k.raw for k ≥ 1 */
     const char *image;      /* --image FILE (libsample_io) */
     const char *colorspace; /* --colorspace NAME for --image */

@@ -16,4 +16,6 @@ void ls_ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler 
     c->maxlev = smp->max_level < tex->nlevels - 1 ? smp->max_level : tex->nlevels - 1;
     if (c->maxlev < c->base) c->maxlev = c->base;
     c->isa = k;
+    c->env = LS_ENV_NONE;
+    c->face = 0;
 }

@@ -7,6 +7,7 @@
 #ifndef SAMPLE_CTX_H
 #define SAMPLE_CTX_H
 
+#include "env_addr.h"
 #include "texel.h"
 #include "wrap.h"
 
@@ -20,6 +21,11 @@ typedef struct sample_ctx {
     /* The kernels of this batch, chosen once when the batch starts (as
      * zstd's dctx->bmi2): every loop below reads this, never a global. */
     const struct isa_kernels *isa;
+    /* Environment maps (env_addr.h): how texels past an edge are found
+     * instead of the wrap modes, and the cube face a query selected (the
+     * layer every read of the query is on; 0 for other kinds). */
+    ls_env_mode env;
+    int face;
 } sample_ctx;
 
 /* The context of a batch: level_base and q (GL 4.6 §8.14.3) from the
@@ -38,7 +44,11 @@ static inline void ctx_texel(const sample_ctx *c, int lv, double i, double j, in
     /* Every wrap mode maps an in-range index to itself (ls_wrap_index's own
      * first test); checking here saves two calls on most reads. */
     if (i >= 0.0 && i < (double)L->w && j >= 0.0 && j < (double)L->h) {
-        tex_read(c->tex, lv, (int)i, (int)j, out);
+        tex_read_layer(c->tex, lv, (int)i, (int)j, c->face, out);
+        return;
+    }
+    if (c->env != LS_ENV_NONE) {
+        ls_env_texel(c->tex, lv, c->face, c->env, i, j, linear, out);
         return;
     }
     x = ls_wrap_index(c->smp->wrap_s, i, L->w, linear);

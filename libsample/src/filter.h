@@ -25,4 +25,10 @@ uint32_t ls_filter_gl_levels(const sample_ctx *c, const sample_query *q, float l
  * filter. */
 void ls_filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, size_t i, const fp_plan *pl);
 
+/* Query i of a batch through the reference path (sampler.c): the border
+ * colour for non-finite input, else λ, then the footprint filter or the
+ * OpenGL filters' levels. The environment maps' loops (env_batch.c) hand
+ * it the 2D query their direction maps to. */
+void ls_reference_query(const sample_ctx *c, const sample_batch_args *a, size_t i);
+
 #endif /* SAMPLE_FILTER_H */

@@ -235,7 +235,9 @@ SAMPLE_FORCE_INLINE double fp_level_rows_init(fp_level_rows *lr, const sample_ct
     lr->v0 = vw;
     lr->wlim = (double)(tr ? L->h : L->w);
     lr->hlim = tex_resident(c->tex) ? (double)(tr ? L->w : L->h) : 0.0;
-    lr->data = tex_resident(c->tex) ? L->data : NULL;
+    /* A cube map's query reads its face (sample_ctx.face): in-face spans
+     * are addressed in that layer, the rest through ctx_texel. */
+    lr->data = tex_resident(c->tex) ? L->data + (size_t)c->face * L->slice : NULL;
     lr->k = c->isa;
     lr->pitch = tr ? L->stride : tb;
     lr->lstride = tr ? tb : L->stride;

@@ -6,6 +6,9 @@
  *   base.h      public API, vector types, portable maths, macros
  *   texel.h     storage and texel decode (texture.c, color.c)
  *   wrap.h      texel addressing (wrap.c)
+ *   cube.h      cube-map faces and their coordinates (cube.c)
+ *   env_addr.h  environment maps' addressing past edges (env_addr.c)
+ *   latlong.h   lat-long maps' direction → (s, t) (latlong.c)
  *   ctx.h       the per-batch context, texel reads through the wraps
  *   kernels.h   the kernel tables per instruction set (isa.c, reference.c)
  *   recon.h     reconstruction on one level (reconstruct.c)
@@ -21,6 +24,9 @@
 #include "base.h"
 #include "texel.h"
 #include "wrap.h"
+#include "cube.h"
+#include "env_addr.h"
+#include "latlong.h"
 #include "ctx.h"
 #include "kernels.h"
 #include "recon.h"

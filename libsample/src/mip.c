@@ -28,12 +28,6 @@
  * texels, plus one for the rounding of its ends. */
 #define MIP_MAX_TAPS 20
 
-typedef struct mip_axis {
-    int n_src, n_dst, taps; /* taps per output texel (unused ones weigh 0) */
-    int *idx;               /* n_dst × taps source indices */
-    float *w;               /* n_dst × taps weights, each row sums to 1 */
-} mip_axis;
-
 /* ---- Kernels ------------------------------------------------------------- */
 
 static double sinc(double x)
@@ -130,7 +124,7 @@ static void fill_box(mip_axis *ax)
  * constant whatever the edges do. Returns 0 when the kept weights cancel
  * (cannot happen for these kernels, whose central lobe always lands on an
  * in-range texel; checked rather than assumed). */
-static int fill_kernel(mip_axis *ax, sample_mipgen f, sample_wrap wrap)
+static int fill_kernel(mip_axis *ax, sample_mipgen f, sample_wrap wrap, int unwrapped)
 {
     int i, n = ax->n_src, m = ax->n_dst;
     double r = (double)n / (double)m;
@@ -145,9 +139,9 @@ static int fill_kernel(mip_axis *ax, sample_mipgen f, sample_wrap wrap)
         }
         j0 = (int)ceil(c - MIP_KERNEL_RADIUS * r);
         for (j = j0; t < ax->taps && (double)j < c + MIP_KERNEL_RADIUS * r; ++j) {
-            int s = tap_index(wrap, j, n);
+            int s = unwrapped ? j : tap_index(wrap, j, n);
             double k = kernel_eval(f, ((double)j - c) / r);
-            if (s < 0 || k == 0.0) continue;
+            if ((s < 0 && !unwrapped) || k == 0.0) continue;
             ix[t] = s;
             wd[t] = k;
             sum += k;
@@ -167,7 +161,7 @@ static void axis_free(mip_axis *ax)
     ax->w = NULL;
 }
 
-static int axis_make(mip_axis *ax, int n_src, int n_dst, sample_mipgen f, sample_wrap wrap)
+static int axis_make(mip_axis *ax, int n_src, int n_dst, sample_mipgen f, sample_wrap wrap, int unwrapped)
 {
     size_t cells;
     ax->n_src = n_src;
@@ -185,7 +179,7 @@ static int axis_make(mip_axis *ax, int n_src, int n_dst, sample_mipgen f, sample
         fill_box(ax);
         return 1;
     }
-    if (!fill_kernel(ax, f, wrap)) {
+    if (!fill_kernel(ax, f, wrap, unwrapped)) {
         axis_free(ax);
         return 0;
     }
@@ -319,8 +313,8 @@ static sample_status build_level(sample_texture *tex, int k, const sample_mip_pa
     tex->nlevels = k + 1;
     memset(&ax, 0, sizeof ax);
     memset(&ay, 0, sizeof ay);
-    if (!axis_make(&ax, S->w, tex->level[k].w, p->filter, p->wrap_s) ||
-        !axis_make(&ay, S->h, tex->level[k].h, p->filter, p->wrap_t)) {
+    if (!axis_make(&ax, S->w, tex->level[k].w, p->filter, p->wrap_s, 0) ||
+        !axis_make(&ay, S->h, tex->level[k].h, p->filter, p->wrap_t, 0)) {
         axis_free(&ax);
         axis_free(&ay);
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate filter taps for level %d", k);
@@ -347,3 +341,11 @@ sample_status ls_mip_build(sample_texture *tex, const sample_mip_params *p, samp
     if (st != SAMPLE_OK) drop_levels(tex);
     return st;
 }
+
+int ls_mip_axis_unwrapped(mip_axis *ax, int n_src, int n_dst, sample_mipgen f)
+{
+    memset(ax, 0, sizeof *ax);
+    return axis_make(ax, n_src, n_dst, f, SAMPLE_WRAP_CLAMP_TO_EDGE, 1);
+}
+
+void ls_mip_axis_free(mip_axis *ax) { axis_free(ax); }

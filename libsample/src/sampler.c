@@ -57,7 +57,7 @@ sample_status sample_sampler_validate(const sample_sampler *s)
  * input (DESIGN §10), else λ (GL 4.6 §8.14.1), then the footprint filter
  * when one is set and λ > 0, else the level choice of §8.14.2–8.14.3 and
  * the reconstruction of each chosen level. */
-static void reference_query(const sample_ctx *c, const sample_batch_args *a, size_t i)
+void ls_reference_query(const sample_ctx *c, const sample_batch_args *a, size_t i)
 {
     const sample_query *q = &a->queries[i];
     float *out = a->rgba + 4 * i;
@@ -100,7 +100,7 @@ static sample_status batch_check(const sample_texture *tex, const sample_sampler
 static void reference_batch(const sample_ctx *c, const sample_batch_args *a)
 {
     size_t i;
-    for (i = 0; i < a->count; ++i) reference_query(c, a, i);
+    for (i = 0; i < a->count; ++i) ls_reference_query(c, a, i);
 }
 
 sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,

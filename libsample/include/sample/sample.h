@@ -215,6 +215,24 @@ SAMPLE_API sample_status sample_texture_create(const sample_image *image,
 SAMPLE_API sample_status sample_texture_create_levels(const sample_image *levels, int count,
                                            sample_texture **out, sample_error *err);
 
+/* A cube map (GL_TEXTURE_CUBE_MAP, GL 4.6 §8.13) from its six faces in
+ * OpenGL's order +X, −X, +Y, −Y, +Z, −Z, each a square N × N image of the
+ * same size, channel count and format, row 0 at t = 0 as glTexImage2D
+ * takes a face (so a face's (s, t) is table 8.19's). Unless mip is NULL or
+ * mip->filter is SAMPLE_MIPGEN_NONE the pyramid is built face by face, the
+ * kernels reading across face edges from the adjacent faces (seamless, as
+ * sampling reads them) so that every level is continuous across edges;
+ * mip->wrap_s/wrap_t are not used. Sampled by direction with
+ * sample_batch_cube(); doc/environment-maps.md. */
+SAMPLE_API sample_status sample_texture_create_cube(const sample_image faces[6], const sample_mip_params *mip,
+                                                    sample_texture **out, sample_error *err);
+
+/* A cube map from caller-supplied levels: count × 6 images, level-major
+ * (faces[6k + f] is face f of level k), level k's faces max(1, ⌊N/2^k⌋)
+ * square. A partial chain is allowed, as sample_texture_create_levels. */
+SAMPLE_API sample_status sample_texture_create_cube_levels(const sample_image *faces, int count,
+                                                           sample_texture **out, sample_error *err);
+
 SAMPLE_API void sample_texture_destroy(sample_texture *tex); /* accepts NULL */
 
 typedef struct sample_texture_info {
@@ -230,6 +248,10 @@ SAMPLE_API int sample_texture_level_size(const sample_texture *tex, int level, i
 /* Decoded linear RGBA float of texel (i, j) of a level, no wrapping: for
  * tests and tools, not for sampling loops. Out-of-range gives 0. */
 SAMPLE_API void sample_texture_texel(const sample_texture *tex, int level, int i, int j, float rgba[4]);
+/* The same for layer `layer` of a level: the face of a cube map (0 … 5,
+ * GL order). Out-of-range gives 0. */
+SAMPLE_API void sample_texture_texel_layer(const sample_texture *tex, int level, int layer, int i, int j,
+                                           float rgba[4]);
 
 /* ---- Sampler state (mirrors an OpenGL sampler object) ------------------- */
 
@@ -362,6 +384,36 @@ typedef struct sample_batch3_args {
     float *rgba;                  /* count × 4 results; required */
     sample_stats *stats;          /* optional: count entries */
 } sample_batch3_args;
+
+/* Sample a cube map (sample_texture_create_cube) by direction, as GLSL's
+ * textureGrad(samplerCube, R, dRdx, dRdy) with GL_TEXTURE_CUBE_MAP_SEAMLESS
+ * (doc/environment-maps.md). Query p is the direction R (any length),
+ * dpdx and dpdy its screen derivatives. The face and its (s, t) are GL 4.6
+ * table 8.19's; λ comes from the derivatives of the face coordinates
+ * (the quotient rule of §8.13, with the ma term), then bias, clamps and
+ * base/max level as for 2D. Every filter reads texels past a face edge
+ * from the adjacent face, and a corner texel is the mean of the three
+ * texels beside it (§8.13.1). The sampler's wrap modes are ignored, as
+ * GL ignores them for seamless cube maps. A NaN, infinite or zero
+ * direction, or a non-finite derivative or bias, gives the border colour.
+ * Cube maps run the reference path (one query at a time). Refuses a
+ * texture of another kind (SAMPLE_E_INVALID_ARGUMENT). */
+SAMPLE_API sample_status sample_batch_cube(const sample_texture *tex, const sample_sampler *sampler,
+                                           const sample_batch3_args *args);
+
+/* Sample a 2D texture as a lat-long (equirectangular) environment map by
+ * direction (doc/environment-maps.md), with OpenImageIO's convention for
+ * lat-long maps whose up direction is +y:
+ *   s = atan2(−x, z)/2π + ½,  t = ½ − atan2(y, √(x² + z²))/π
+ * (+y is row 0, +z the middle column, the seam s = 0 = 1 towards −z).
+ * Texels past s = 0 or 1 wrap (REPEAT); a row past t = 0 or t = 1 is read
+ * over the pole, from the other half of the map (s + ½, the row mirrored),
+ * so no filter shows the seam or the poles. λ and the footprint filters
+ * take the Jacobian of (s, t) from the exact derivatives of the two
+ * angles, strongly anisotropic near the poles (where it is held finite).
+ * The sampler's wrap modes are not used. Bad input as sample_batch_cube. */
+SAMPLE_API sample_status sample_batch_latlong(const sample_texture *tex, const sample_sampler *sampler,
+                                              const sample_batch3_args *args);
 
 /* One query; a thin wrapper over sample_batch(). */
 SAMPLE_API sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,
