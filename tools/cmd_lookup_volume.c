@@ -1,0 +1,227 @@
+/*
+ * texsample lookup --volume: evaluate a file of 9-float queries against a
+ * 3D texture held as raw float32 RGBA (doc/volumes.md, README). The same
+ * sampler options as a 2D lookup, and --wrap-r for the third axis; the
+ * check against Mesa's 3D textures goes through this.
+ */
+#include "cli.h"
+#include "lookup_volume.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char lookup_volume_help[] =
+    "3D textures (lookup --volume):\n"
+    "  --volume FILE --w W --h H --d D\n"
+    "                          little-endian float32 RGBA texels, x fastest, then y,\n"
+    "                          then z (slice 0, r = 0, first)\n"
+    "  --levels PREFIX         explicit levels PREFIX.1.raw, PREFIX.2.raw, ... of\n"
+    "                          max(1, W>>k) x max(1, H>>k) x max(1, D>>k); as many as\n"
+    "                          exist are used, and no pyramid is generated\n"
+    "  --mipgen box|lanczos3|kaiser|none       the pyramid otherwise (default box)\n"
+    "  --wrap-r MODE           wrap mode on r (default repeat; --wrap sets s and t)\n"
+    "  --queries FILE          float32, 9 per query: s t r, ds/dx dt/dx dr/dx,\n"
+    "                          ds/dy dt/dy dr/dy\n"
+    "  --out FILE, --text, --stats             as for 2D queries\n"
+    "  Volumes are always sampled one query at a time (--reference-path is accepted).\n\n";
+
+void lookup_stats_print(const sample_stats *stats, size_t n)
+{
+    double sum = 0;
+    uint32_t mx = 0;
+    size_t k;
+    for (k = 0; k < n; ++k) {
+        sum += stats[k].texels;
+        if (stats[k].texels > mx) mx = stats[k].texels;
+    }
+    fprintf(stderr, "queries %zu, texels/query mean %.2f max %u (cap %d)\n", n, n ? sum / (double)n : 0.0, mx,
+            SAMPLE_MAX_FOOTPRINT_TEXELS);
+}
+
+int lookup_is_volume(int argc, char **argv)
+{
+    int i;
+    for (i = 1; i < argc; ++i)
+        if (strcmp(argv[i], "--volume") == 0 || strncmp(argv[i], "--volume=", 9) == 0) return 1;
+    return 0;
+}
+
+/* --w, --h or --d: a size from 1 to SAMPLE_MAX_SIZE. Returns 1 if consumed,
+ * 0 if not one of them, −1 on a bad value (reported). */
+static int size_flag(const char *sub, int argc, char **argv, int *i, int dims[3])
+{
+    static const char *const names[3] = {"--w", "--h", "--d"};
+    const char *v;
+    int a;
+    for (a = 0; a < 3; ++a)
+        if (cli_opt(argc, argv, i, names[a], &v)) {
+            if (!cli_parse_int(v, &dims[a]) || dims[a] <= 0 || dims[a] > SAMPLE_MAX_SIZE) {
+                cli_usage_error(sub, "%s needs a size from 1 to %d, not '%s'", names[a], SAMPLE_MAX_SIZE, v);
+                return -1;
+            }
+            return 1;
+        }
+    return 0;
+}
+
+/* Read the raw float32 RGBA volume of dims at path into *data. */
+static int read_volume(const char *sub, const char *path, const int dims[3], void **data)
+{
+    size_t size, want = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2] * 4 * sizeof(float);
+    const char *why;
+    if (!cli_read_file(path, data, &size, &why)) {
+        cli_runtime_error(sub, "cannot read '%s': %s", path, why);
+        return -1;
+    }
+    if (size != want) {
+        cli_runtime_error(sub, "'%s' holds %zu bytes; %d x %d x %d float32 RGBA needs %zu", path, size, dims[0],
+                          dims[1], dims[2], want);
+        free(*data);
+        *data = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+/* The volume and its levels (PREFIX.k.raw, as many as exist), or its
+ * pyramid built by `mip`. */
+static int load_volume(const char *sub, const char *path, const char *prefix, const int dims[3],
+                       const sample_mip_params *mip, sample_texture **out)
+{
+    sample_volume lv[SAMPLE_MAX_LEVELS];
+    void *data[SAMPLE_MAX_LEVELS] = {0};
+    sample_error err;
+    int count = 1, k, a, rc = -1;
+    if (read_volume(sub, path, dims, &data[0]) != 0) return -1;
+    memset(lv, 0, sizeof lv);
+    lv[0] = (sample_volume){dims[0], dims[1], dims[2], 4, SAMPLE_FORMAT_F32, data[0], 0, 0};
+    for (k = 1; prefix && k < SAMPLE_MAX_LEVELS; ++k) {
+        char name[4096];
+        int d[3];
+        FILE *f;
+        if (lv[k - 1].width == 1 && lv[k - 1].height == 1 && lv[k - 1].depth == 1) break;
+        for (a = 0; a < 3; ++a) d[a] = dims[a] >> k > 0 ? dims[a] >> k : 1;
+        snprintf(name, sizeof name, "%s.%d.raw", prefix, k);
+        if (!(f = fopen(name, "rb"))) break;
+        fclose(f);
+        if (read_volume(sub, name, d, &data[k]) != 0) goto done;
+        lv[k] = (sample_volume){d[0], d[1], d[2], 4, SAMPLE_FORMAT_F32, data[k], 0, 0};
+        count = k + 1;
+    }
+    if ((prefix ? sample_texture_create_3d_levels(lv, count, out, &err)
+                : sample_texture_create_3d(&lv[0], mip, out, &err)) != SAMPLE_OK) {
+        cli_runtime_error(sub, "%s", err.message);
+        goto done;
+    }
+    rc = 0;
+done:
+    for (k = 0; k < SAMPLE_MAX_LEVELS; ++k) free(data[k]);
+    return rc;
+}
+
+int cmd_lookup_volume(int argc, char **argv)
+{
+    const char *sub = "lookup", *vpath = NULL, *prefix = NULL, *qpath = NULL, *opath = NULL, *v, *why;
+    int dims[3] = {0, 0, 0}, text = 0, want_stats = 0, i, r, rc = EXIT_RUNTIME;
+    sample_sampler smp;
+    sample_mip_params mip;
+    sample_texture *tex = NULL;
+    void *qdata = NULL;
+    size_t qsize = 0, n, k;
+    float *out = NULL;
+    sample_stats *stats = NULL;
+    sample_batch3_args a;
+    sample_status st;
+
+    sample_sampler_init(&smp);
+    sample_mip_params_init(&mip);
+    for (i = 1; i < argc; ++i) {
+        if (cli_is_help(argv[i])) {
+            fputs(lookup_volume_help, stdout);
+            cli_sampler_help_print();
+            return EXIT_OK;
+        }
+        if (cli_opt(argc, argv, &i, "--reference-path", NULL)) continue;
+        if (cli_opt(argc, argv, &i, "--wrap-r", &v)) {
+            int m = sample_wrap_parse(v);
+            if (m < 0) return cli_usage_error(sub, "--wrap-r: unknown wrap mode '%s'", v);
+            smp.wrap_r = (sample_wrap)m;
+            continue;
+        }
+        if ((r = cli_sampler_flag(sub, argc, argv, &i, &smp)) != 0) {
+            if (r < 0) return EXIT_USAGE;
+            continue;
+        }
+        if ((r = size_flag(sub, argc, argv, &i, dims)) != 0) {
+            if (r < 0) return EXIT_USAGE;
+            continue;
+        }
+        if (cli_opt(argc, argv, &i, "--volume", &vpath)) continue;
+        if (cli_opt(argc, argv, &i, "--levels", &prefix)) continue;
+        if (cli_opt(argc, argv, &i, "--queries", &qpath)) continue;
+        if (cli_opt(argc, argv, &i, "--out", &opath)) continue;
+        if (cli_opt(argc, argv, &i, "--text", NULL)) { text = 1; continue; }
+        if (cli_opt(argc, argv, &i, "--stats", NULL)) { want_stats = 1; continue; }
+        if (cli_opt(argc, argv, &i, "--mipgen", &v)) {
+            int m = sample_mipgen_parse(v);
+            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v);
+            mip.filter = (sample_mipgen)m;
+            continue;
+        }
+        if (argv[i][0] != '-')
+            return cli_usage_error(sub, "unexpected argument '%s' (files are given by options)", argv[i]);
+        return cli_usage_error(sub, "unknown option '%s' (with --volume)", argv[i]);
+    }
+    if (!vpath) return cli_usage_error(sub, "--volume needs a file");
+    if (!dims[0] || !dims[1] || !dims[2]) return cli_usage_error(sub, "--volume needs --w, --h and --d");
+    if (!qpath) return cli_usage_error(sub, "--queries FILE is required");
+    if (sample_sampler_validate(&smp) != SAMPLE_OK)
+        return cli_usage_error(sub, "inconsistent sampler state (min-lod > max-lod, base-level > max-level, or aniso < 1)");
+    /* The pyramid's edges follow the sampler's wrap modes. */
+    mip.wrap_s = smp.wrap_s;
+    mip.wrap_t = smp.wrap_t;
+    mip.wrap_r = smp.wrap_r;
+    if (load_volume(sub, vpath, prefix, dims, &mip, &tex) != 0) return EXIT_RUNTIME;
+
+    if (!cli_read_file(qpath, &qdata, &qsize, &why)) {
+        cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, why);
+        goto done;
+    }
+    if (qsize % sizeof(sample_query3) != 0) {
+        cli_runtime_error(sub, "query file '%s' is %zu bytes, not a multiple of 36 (9 floats)", qpath, qsize);
+        goto done;
+    }
+    n = qsize / sizeof(sample_query3);
+    out = (float *)malloc((n ? n : 1) * 4 * sizeof(float));
+    stats = (sample_stats *)malloc((n ? n : 1) * sizeof(sample_stats));
+    if (!out || !stats) {
+        cli_runtime_error(sub, "out of memory for %zu queries", n);
+        goto done;
+    }
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.queries = (const sample_query3 *)qdata;
+    a.rgba = out;
+    a.stats = stats;
+    if ((st = sample_batch_3d(tex, &smp, &a)) != SAMPLE_OK) {
+        cli_runtime_error(sub, "sampling failed: %s", sample_strerror(st));
+        goto done;
+    }
+    if (opath && !cli_write_file(opath, out, n * 4 * sizeof(float))) {
+        cli_runtime_error(sub, "cannot write '%s': %s", opath, strerror(errno));
+        goto done;
+    }
+    for (k = 0; text && k < n; ++k)
+        printf("%.9g %.9g %.9g -> %.9g %.9g %.9g %.9g\n", a.queries[k].p[0], a.queries[k].p[1], a.queries[k].p[2],
+               out[4 * k], out[4 * k + 1], out[4 * k + 2], out[4 * k + 3]);
+    if (want_stats) lookup_stats_print(stats, n);
+    rc = EXIT_OK;
+done:
+    free(qdata);
+    free(out);
+    free(stats);
+    sample_texture_destroy(tex);
+    return rc;
+}
