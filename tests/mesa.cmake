@@ -3,7 +3,7 @@
 find_library(SAMPLE_OSMESA_LIBRARY OSMesa)
 find_path(SAMPLE_OSMESA_INCLUDE GL/osmesa.h)
 if(SAMPLE_OSMESA_LIBRARY AND SAMPLE_OSMESA_INCLUDE)
-  add_executable(mesa_check ${CMAKE_CURRENT_SOURCE_DIR}/mesa_check.c)
+  add_executable(mesa_check ${CMAKE_CURRENT_SOURCE_DIR}/mesa_check.c ${CMAKE_CURRENT_SOURCE_DIR}/mesa_gl.c)
   target_link_libraries(mesa_check PRIVATE sample ${SAMPLE_OSMESA_LIBRARY})
   target_include_directories(mesa_check PRIVATE ${SAMPLE_OSMESA_INCLUDE})
   target_compile_options(mesa_check PRIVATE ${SAMPLE_WARNINGS})

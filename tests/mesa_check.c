@@ -16,10 +16,7 @@
  * Exit 0: agreement; 1: a difference over the bound; 77: no usable OSMesa
  * context (ctest SKIP).
  */
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/osmesa.h>
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "mesa_gl.h"
 
 #include "sample/sample.h"
 
@@ -60,12 +57,7 @@ static uint32_t rnd_u32(void)
 }
 static float rnd01(void) { return (float)(rnd_u32() >> 8) * (1.0f / 16777216.0f); }
 
-/* ---- GL plumbing -------------------------------------------------------- */
-
-static const char *vs_src =
-    "#version 330 core\n"
-    "layout(location = 0) in vec2 pos;\n"
-    "void main() { gl_Position = vec4(pos, 0.0, 1.0); }\n";
+/* ---- GL plumbing (mesa_gl.h) ---------------------------------------------- */
 
 /* Query i sits at fragment (i mod QW, i / QW); its two RGBA32F texels are
  * (s, t, ds/dx, dt/dx) and (ds/dy, dt/dy, lod, 0). */
@@ -84,130 +76,25 @@ static const char *fs_src =
     "}\n";
 
 typedef struct gl_state {
-    OSMesaContext ctx;
-    unsigned char dummy[4];
-    GLuint prog, vao, vbo, fbo, rt, qtex, tex;
+    mesa_gl m;
+    GLuint tex;
 } gl_state;
 
-static GLuint compile(GLenum kind, const char *src)
-{
-    GLuint s = glCreateShader(kind);
-    GLint ok = 0;
-    glShaderSource(s, 1, &src, NULL);
-    glCompileShader(s);
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024];
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        fprintf(stderr, "mesa_check: shader: %s\n", log);
-        return 0;
-    }
-    return s;
-}
-
-/* 0 when OSMesa cannot give a GL 3.3 context (the caller skips). The
- * compatibility profile is asked for because it is the one that still has
- * GL_CLAMP; softpipe gives 3.3 either way. */
 static int gl_init(gl_state *g)
 {
-    static const int attr[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,
-                               OSMESA_COMPAT_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                               OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-    static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
-    GLuint vs, fs;
-    GLint ok = 0;
-    memset(g, 0, sizeof *g);
-    g->ctx = OSMesaCreateContextAttribs(attr, NULL);
-    if (!g->ctx) {
-        fprintf(stderr, "mesa_check: OSMesaCreateContextAttribs (3.3 compatibility) failed\n");
-        return 0;
-    }
-    if (!OSMesaMakeCurrent(g->ctx, g->dummy, GL_UNSIGNED_BYTE, 1, 1)) {
-        fprintf(stderr, "mesa_check: OSMesaMakeCurrent failed\n");
-        return 0;
-    }
-    fprintf(stderr, "mesa_check: %s, %s\n", (const char *)glGetString(GL_RENDERER),
-            (const char *)glGetString(GL_VERSION));
-    if (!(vs = compile(GL_VERTEX_SHADER, vs_src)) || !(fs = compile(GL_FRAGMENT_SHADER, fs_src))) return 0;
-    g->prog = glCreateProgram();
-    glAttachShader(g->prog, vs);
-    glAttachShader(g->prog, fs);
-    glLinkProgram(g->prog);
-    glGetProgramiv(g->prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        fprintf(stderr, "mesa_check: program link failed\n");
-        return 0;
-    }
-    glGenVertexArrays(1, &g->vao);
-    glBindVertexArray(g->vao);
-    glGenBuffers(1, &g->vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, g->vbo);
-    glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, NULL);
-    glEnableVertexAttribArray(0);
-
-    glGenTextures(1, &g->rt);
-    glBindTexture(GL_TEXTURE_2D, g->rt);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, QW, NQ / QW, 0, GL_RGBA, GL_FLOAT, NULL);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glGenFramebuffers(1, &g->fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, g->rt, 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        fprintf(stderr, "mesa_check: RGBA32F framebuffer incomplete\n");
-        return 0;
-    }
-    /* No colour clamping anywhere (compatibility profile). */
-    glClampColor(GL_CLAMP_READ_COLOR, GL_FALSE);
-    glViewport(0, 0, QW, NQ / QW);
-
-    glGenTextures(1, &g->qtex);
+    if (!mesa_gl_init(&g->m, "mesa_check", fs_src, QW, NQ / QW)) return 0;
     glGenTextures(1, &g->tex);
-    glUseProgram(g->prog);
-    glUniform1i(glGetUniformLocation(g->prog, "tex"), 0);
-    glUniform1i(glGetUniformLocation(g->prog, "qtex"), 1);
     return glGetError() == GL_NO_ERROR;
 }
 
 static void gl_upload_levels(gl_state *g, const sample_texture *tex)
 {
     sample_texture_info info;
-    int k, i, j;
+    int k;
     sample_texture_info_get(tex, &info);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, g->tex);
-    for (k = 0; k < info.levels; ++k) {
-        int w, h;
-        float *d;
-        sample_texture_level_size(tex, k, &w, &h);
-        d = (float *)malloc((size_t)w * h * 4 * sizeof(float));
-        for (j = 0; j < h; ++j)
-            for (i = 0; i < w; ++i) sample_texture_texel(tex, k, i, j, d + 4 * ((size_t)j * w + i));
-        glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, d);
-        free(d);
-    }
-}
-
-static GLenum gl_wrap(sample_wrap w)
-{
-    static const GLenum m[SAMPLE_WRAP_COUNT] = {
-        [SAMPLE_WRAP_REPEAT] = GL_REPEAT,
-        [SAMPLE_WRAP_MIRRORED_REPEAT] = GL_MIRRORED_REPEAT,
-        [SAMPLE_WRAP_CLAMP_TO_EDGE] = GL_CLAMP_TO_EDGE,
-        [SAMPLE_WRAP_CLAMP_TO_BORDER] = GL_CLAMP_TO_BORDER,
-        [SAMPLE_WRAP_MIRROR_CLAMP_TO_EDGE] = GL_MIRROR_CLAMP_TO_EDGE_EXT,
-        [SAMPLE_WRAP_CLAMP] = GL_CLAMP,
-        [SAMPLE_WRAP_MIRROR_CLAMP] = GL_MIRROR_CLAMP_EXT,
-        [SAMPLE_WRAP_MIRROR_CLAMP_TO_BORDER] = GL_MIRROR_CLAMP_TO_BORDER_EXT,
-    };
-    return m[w];
-}
-
-static GLenum gl_filter(sample_filter f)
-{
-    static const GLenum m[6] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
-                                GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
-    return m[f];
+    for (k = 0; k < info.levels; ++k) mesa_gl_upload(GL_TEXTURE_2D, tex, k, 0);
 }
 
 /* Render the NQ queries (7 floats each: s t dsdx dtdx dsdy dtdy lod). */
@@ -220,34 +107,11 @@ static int gl_render(gl_state *g, const sample_sampler *s, const float *q7, int 
         qt[8 * i + 6] = q7[7 * i + 6];
         qt[8 * i + 7] = 0.0f;
     }
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, g->qtex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 2 * QW, NQ / QW, 0, GL_RGBA, GL_FLOAT, qt);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, g->tex);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)gl_wrap(s->wrap_s));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)gl_wrap(s->wrap_t));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)gl_filter(s->min_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)gl_filter(s->mag_filter));
-    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, s->border_color);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, s->lod_bias);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, s->min_lod);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, s->max_lod);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, s->base_level);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, s->max_level);
-
-    glUniform1i(glGetUniformLocation(g->prog, "use_lod"), use_lod);
-    glBindFramebuffer(GL_FRAMEBUFFER, g->fbo);
-    glDrawArrays(GL_TRIANGLES, 0, 6);
-    glReadPixels(0, 0, QW, NQ / QW, GL_RGBA, GL_FLOAT, out);
-    if (glGetError() != GL_NO_ERROR) {
-        fprintf(stderr, "mesa_check: GL error while rendering\n");
-        return 0;
-    }
-    return 1;
+    mesa_gl_sampler(GL_TEXTURE_2D, s);
+    glUniform1i(glGetUniformLocation(g->m.prog, "use_lod"), use_lod);
+    return mesa_gl_render(&g->m, qt, 2, out);
 }
 
 /* ---- Queries --------------------------------------------------------------- */
@@ -545,6 +409,6 @@ int main(int argc, char **argv)
     if (tool_runs) printf("; %d texsample lookup runs, max |mesa - texsample| = %.3g", tool_runs, (double)worst_tool);
     printf("; %d over the bound\n", failures);
     sample_texture_destroy(tex);
-    OSMesaDestroyContext(g.ctx);
+    mesa_gl_destroy(&g.m);
     return failures ? 1 : 0;
 }

@@ -1,0 +1,52 @@
+/*
+ * The OSMesa plumbing of the Mesa cross-checks (mesa_check.c,
+ * mesa_cube.c): a GL 3.3 compatibility context, a program of the shared
+ * full-screen vertex shader and the caller's fragment shader, an RGBA32F
+ * framebuffer of qw × rows fragments (one query each), and the query
+ * texture on unit 1 (uniform "qtex"), from which fragment (x, y) fetches
+ * its query's `per` RGBA32F texels at (per·x … per·x + per − 1, y)
+ * exactly, no interpolation. The texture under test is the caller's, on
+ * unit 0 (uniform "tex").
+ */
+#ifndef SAMPLE_TEST_MESA_GL_H
+#define SAMPLE_TEST_MESA_GL_H
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "sample/sample.h"
+
+typedef struct mesa_gl {
+    OSMesaContext ctx;
+    unsigned char dummy[4];
+    GLuint prog, vao, vbo, fbo, rt, qtex;
+    int qw, rows;
+    const char *who; /* the program's name, for messages */
+} mesa_gl;
+
+/* 0 when OSMesa cannot give a GL 3.3 context or the shader does not
+ * compile (the caller skips, exit 77). The compatibility profile is asked
+ * for because it is the one that still has GL_CLAMP; softpipe gives 3.3
+ * either way. Prints the renderer. */
+int mesa_gl_init(mesa_gl *g, const char *who, const char *fs_src, int qw, int rows);
+
+/* Upload qw·rows queries of `per` RGBA32F texels each (4·per floats per
+ * query, query i at fragment (i mod qw, i / qw)), draw, and read the
+ * qw·rows RGBA float results into out. 0 on a GL error. */
+int mesa_gl_render(mesa_gl *g, const float *queries, int per, float *out);
+
+/* Set the sampler state s on the texture bound to `target` of the
+ * active unit: wrap s, t, r, the filters (OpenGL's six), border colour,
+ * GL_TEXTURE_LOD_BIAS, min/max lod, base/max level. */
+void mesa_gl_sampler(GLenum target, const sample_sampler *s);
+
+/* glTexImage2D(image_target, level) of layer `layer` (a cube face) of
+ * level `level` of tex, as RGBA32F: the texels libsample reads
+ * (sample_texture_texel_layer), so that both sides sample the same. */
+void mesa_gl_upload(GLenum image_target, const sample_texture *tex, int level, int layer);
+
+void mesa_gl_destroy(mesa_gl *g);
+
+#endif /* SAMPLE_TEST_MESA_GL_H */
