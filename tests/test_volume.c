@@ -78,16 +78,16 @@ static void pyramid_sizes_and_box(void)
     CHECK(sample_texture_level_size3(tex, 1, &w, &h, &d) && w == 2 && h == 1 && d == 1, "level 1 %d %d %d", w, h, d);
     CHECK(!sample_texture_level_size3(tex, 3, &w, &h, &d) && w == 0 && d == 0, "level 3 out of range");
     /* Block x ∈ {0,1}: texels 0,1,4,5 (z 0) and 8,9,12,13 (z 1). */
-    sample_texture_texel3(tex, 1, 0, 0, 0, rgba);
+    sample_texture_texel_layer(tex, 1, 0, 0, 0, rgba);
     CHECK_EQF(rgba[0], (0 + 1 + 4 + 5 + 8 + 9 + 12 + 13) / 64.0f);
-    sample_texture_texel3(tex, 1, 1, 0, 0, rgba);
+    sample_texture_texel_layer(tex, 1, 0, 1, 0, rgba);
     CHECK_EQF(rgba[0], (2 + 3 + 6 + 7 + 10 + 11 + 14 + 15) / 64.0f);
-    sample_texture_texel3(tex, 2, 0, 0, 0, rgba);
+    sample_texture_texel_layer(tex, 2, 0, 0, 0, rgba);
     CHECK_EQF(rgba[0], 120.0f / 16.0f / 8.0f);
-    sample_texture_texel3(tex, 0, 3, 1, 1, rgba);
+    sample_texture_texel_layer(tex, 0, 1, 3, 1, rgba);
     CHECK_EQF(rgba[0], 15.0f / 8.0f);
     CHECK_EQF(rgba[3], 1.0f);
-    sample_texture_texel3(tex, 0, 0, 0, 2, rgba);
+    sample_texture_texel_layer(tex, 0, 2, 0, 0, rgba);
     CHECK_EQF(rgba[0], 0.0f);
     sample_texture_destroy(tex);
 
@@ -114,13 +114,13 @@ static void pyramid_odd_polyphase(void)
     sample_texture *tex;
     sample_mip_params_init(&mp);
     tex = vol_f32(1, 1, 3, 1, d3, &mp);
-    sample_texture_texel3(tex, 1, 0, 0, 0, rgba);
+    sample_texture_texel_layer(tex, 1, 0, 0, 0, rgba);
     CHECK_NEAR(rgba[0], 3.0, 1e-6);
     sample_texture_destroy(tex);
     tex = vol_f32(1, 1, 5, 1, d5, &mp);
-    sample_texture_texel3(tex, 1, 0, 0, 0, rgba);
+    sample_texture_texel_layer(tex, 1, 0, 0, 0, rgba);
     CHECK_NEAR(rgba[0], 0.4 * 5 + 0.4 * 10 + 0.2 * 0, 1e-6);
-    sample_texture_texel3(tex, 1, 0, 0, 1, rgba);
+    sample_texture_texel_layer(tex, 1, 1, 0, 0, rgba);
     CHECK_NEAR(rgba[0], 0.2 * 0 + 0.4 * 0 + 0.4 * 5, 1e-6);
     sample_texture_destroy(tex);
 }
@@ -136,7 +136,7 @@ static void pyramid_srgb_linear(void)
     float rgba[4];
     sample_mip_params_init(&mp);
     CHECK(sample_texture_create_3d(&v, &mp, &tex, NULL) == SAMPLE_OK, "create");
-    sample_texture_texel3(tex, 1, 0, 0, 0, rgba);
+    sample_texture_texel_layer(tex, 1, 0, 0, 0, rgba);
     CHECK_EQF(rgba[0], ls_srgb_table[ls_srgb_encode8(0.5f)]);
     sample_texture_destroy(tex);
 }
@@ -450,7 +450,7 @@ static void non_finite_gives_border(void)
 static void every_format(void)
 {
     /* 2 × 2 × 2 of random texels in every format and channel count: NEAREST
-     * at each centre is the decoded texel (sample_texture_texel3, with GL's
+     * at each centre is the decoded texel (sample_texture_texel_layer, GL's
      * channel expansion), LINEAR at the centre of the block the mean. */
     int fmt, nc, n, c;
     for (fmt = 0; fmt < SAMPLE_FORMAT_COUNT; ++fmt)
@@ -474,7 +474,7 @@ static void every_format(void)
                 float p[3] = {(n & 1) ? 0.75f : 0.25f, (n & 2) ? 0.75f : 0.25f, (n & 4) ? 0.75f : 0.25f};
                 s.mag_filter = SAMPLE_NEAREST;
                 look(tex, &s, p, NULL, NULL, out, NULL);
-                sample_texture_texel3(tex, 0, n & 1, n >> 1 & 1, n >> 2, t);
+                sample_texture_texel_layer(tex, 0, n >> 2, n & 1, n >> 1 & 1, t);
                 for (c = 0; c < 4; ++c) {
                     CHECK(out[c] == t[c], "%s x%d texel %d [%d]", sample_format_name((sample_format)fmt), nc, n, c);
                     mean[c] += t[c];

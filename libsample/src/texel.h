@@ -198,4 +198,13 @@ sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int 
  * layers); tex->bytes updated. */
 sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err);
 
+/* The checks sample_texture_create makes of an image and of mip
+ * parameters (texture.c), for the creators of other kinds; `what` names
+ * the image in the message. */
+sample_status ls_tex_check_image(const sample_image *im, const char *what, sample_error *err);
+sample_status ls_tex_check_mip(const sample_mip_params *mip, sample_error *err);
+
+/* Copy an image of level k's size into layer `layer` of level k. */
+void ls_tex_copy_layer(sample_texture *tex, int k, int layer, const sample_image *im);
+
 #endif /* SAMPLE_TEXEL_H */

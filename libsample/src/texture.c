@@ -105,6 +105,30 @@ static void copy_image(struct sample_level *L, size_t texel_bytes, const sample_
         memcpy(L->data + (size_t)j * L->stride, (const unsigned char *)im->data + (size_t)j * src_stride, row);
 }
 
+sample_status ls_tex_check_image(const sample_image *im, const char *what, sample_error *err)
+{
+    return check_image(im, what, err);
+}
+
+sample_status ls_tex_check_mip(const sample_mip_params *mip, sample_error *err)
+{
+    if (!mip) return SAMPLE_OK;
+    RETURN_ERROR_IF((unsigned)mip->filter >= SAMPLE_MIPGEN_COUNT, err, SAMPLE_E_INVALID_ARGUMENT,
+                    "unknown mip filter %d", (int)mip->filter);
+    RETURN_ERROR_IF((unsigned)mip->wrap_s >= SAMPLE_WRAP_COUNT || (unsigned)mip->wrap_t >= SAMPLE_WRAP_COUNT,
+                    err, SAMPLE_E_INVALID_ARGUMENT, "unknown wrap mode in mip parameters");
+    RETURN_ERROR_IF(mip->max_levels < 0, err, SAMPLE_E_INVALID_ARGUMENT, "max_levels %d is negative",
+                    mip->max_levels);
+    return SAMPLE_OK;
+}
+
+void ls_tex_copy_layer(sample_texture *tex, int k, int layer, const sample_image *im)
+{
+    struct sample_level L = tex->level[k];
+    L.data += (size_t)layer * L.slice;
+    copy_image(&L, tex->texel_bytes, im);
+}
+
 sample_texture *ls_tex_new(sample_texture_kind kind, int width, int height, int channels, sample_format format)
 {
     sample_texture *tex = (sample_texture *)calloc(1, sizeof *tex);
@@ -132,15 +156,7 @@ sample_status sample_texture_create(const sample_image *image, const sample_mip_
     RETURN_ERROR_IF(!out, err, SAMPLE_E_INVALID_ARGUMENT, "output pointer is NULL");
     *out = NULL;
     if ((st = check_image(image, "texture", err)) != SAMPLE_OK) return st;
-    if (mip) {
-        RETURN_ERROR_IF((unsigned)mip->filter >= SAMPLE_MIPGEN_COUNT, err, SAMPLE_E_INVALID_ARGUMENT,
-                        "unknown mip filter %d", (int)mip->filter);
-        RETURN_ERROR_IF((unsigned)mip->wrap_s >= SAMPLE_WRAP_COUNT ||
-                            (unsigned)mip->wrap_t >= SAMPLE_WRAP_COUNT,
-                        err, SAMPLE_E_INVALID_ARGUMENT, "unknown wrap mode in mip parameters");
-        RETURN_ERROR_IF(mip->max_levels < 0, err, SAMPLE_E_INVALID_ARGUMENT,
-                        "max_levels %d is negative", mip->max_levels);
-    }
+    if ((st = ls_tex_check_mip(mip, err)) != SAMPLE_OK) return st;
     tex = tex_new(image);
     RETURN_ERROR_IF(!tex, err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture object");
     if ((st = ls_tex_alloc_level(tex, 0, err)) != SAMPLE_OK) {
@@ -244,6 +260,16 @@ void sample_texture_texel(const sample_texture *tex, int level, int i, int j, fl
         return;
     }
     tex_read(tex, level, i, j, rgba);
+}
+
+void sample_texture_texel_layer(const sample_texture *tex, int level, int layer, int i, int j, float rgba[4])
+{
+    if (!tex || level < 0 || level >= tex->nlevels || layer < 0 || layer >= tex->level[level].d || i < 0 ||
+        j < 0 || i >= tex->level[level].w || j >= tex->level[level].h) {
+        rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
+        return;
+    }
+    tex_read_layer(tex, level, i, j, layer, rgba);
 }
 
 static unsigned char to_u8(float v)

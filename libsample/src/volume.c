@@ -1,7 +1,8 @@
 /*
  * 3D textures: creation from caller volumes, their pyramids (mip.c's
- * resampler with its third axis) and texel access for tools and tests
- * (DESIGN §11, doc/volumes.md).
+ * resampler with its third axis) and their level sizes (DESIGN §11,
+ * doc/volumes.md). A slice is a layer of its level (texel.h), read by
+ * sample_texture_texel_layer.
  */
 #include "mip.h"
 #include "volume.h"
@@ -47,18 +48,18 @@ static sample_status check_volume(const sample_volume *v, const char *what, samp
     return SAMPLE_OK;
 }
 
-/* Copy a volume into level k (allocated, of the volume's size). */
+/* Copy a volume into level k (allocated, of the volume's size), slice by
+ * slice as layers. */
 static void copy_volume(sample_texture *tex, int k, const sample_volume *v)
 {
-    struct sample_level *L = &tex->level[k];
-    size_t row = (size_t)L->w * tex->texel_bytes;
-    size_t rs = v->row_stride ? v->row_stride : row;
-    size_t ss = v->slice_stride ? v->slice_stride : rs * (size_t)L->h;
-    int j, z;
-    for (z = 0; z < L->d; ++z)
-        for (j = 0; j < L->h; ++j)
-            memcpy(L->data + (size_t)z * L->slice + (size_t)j * L->stride,
-                   (const unsigned char *)v->data + (size_t)z * ss + (size_t)j * rs, row);
+    sample_image im = vol_slice_image(v);
+    size_t rs = v->row_stride ? v->row_stride : (size_t)v->width * tex->texel_bytes;
+    size_t ss = v->slice_stride ? v->slice_stride : rs * (size_t)v->height;
+    int z;
+    for (z = 0; z < v->depth; ++z) {
+        im.data = (const unsigned char *)v->data + (size_t)z * ss;
+        ls_tex_copy_layer(tex, k, z, &im);
+    }
 }
 
 static sample_texture *vol_new(const sample_volume *v)
@@ -76,15 +77,9 @@ sample_status sample_texture_create_3d(const sample_volume *volume, const sample
     RETURN_ERROR_IF(!out, err, SAMPLE_E_INVALID_ARGUMENT, "output pointer is NULL");
     *out = NULL;
     if ((st = check_volume(volume, "volume", err)) != SAMPLE_OK) return st;
-    if (mip) {
-        RETURN_ERROR_IF((unsigned)mip->filter >= SAMPLE_MIPGEN_COUNT, err, SAMPLE_E_INVALID_ARGUMENT,
-                        "unknown mip filter %d", (int)mip->filter);
-        RETURN_ERROR_IF((unsigned)mip->wrap_s >= SAMPLE_WRAP_COUNT || (unsigned)mip->wrap_t >= SAMPLE_WRAP_COUNT ||
-                            (unsigned)mip->wrap_r >= SAMPLE_WRAP_COUNT,
-                        err, SAMPLE_E_INVALID_ARGUMENT, "unknown wrap mode in mip parameters");
-        RETURN_ERROR_IF(mip->max_levels < 0, err, SAMPLE_E_INVALID_ARGUMENT, "max_levels %d is negative",
-                        mip->max_levels);
-    }
+    if ((st = ls_tex_check_mip(mip, err)) != SAMPLE_OK) return st;
+    RETURN_ERROR_IF(mip && (unsigned)mip->wrap_r >= SAMPLE_WRAP_COUNT, err, SAMPLE_E_INVALID_ARGUMENT,
+                    "unknown wrap mode %d on r in mip parameters", (int)mip->wrap_r);
     tex = vol_new(volume);
     RETURN_ERROR_IF(!tex, err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture object");
     if ((st = ls_tex_alloc_level(tex, 0, err)) != SAMPLE_OK) {
@@ -153,19 +148,4 @@ int sample_texture_level_size3(const sample_texture *tex, int level, int *w, int
     if (h) *h = ok ? tex->level[level].h : 0;
     if (d) *d = ok ? tex->level[level].d : 0;
     return ok;
-}
-
-void sample_texture_texel3(const sample_texture *tex, int level, int i, int j, int k, float rgba[4])
-{
-    const struct sample_level *L;
-    if (!tex || level < 0 || level >= tex->nlevels) {
-        rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
-        return;
-    }
-    L = &tex->level[level];
-    if (i < 0 || j < 0 || k < 0 || i >= L->w || j >= L->h || k >= L->d) {
-        rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
-        return;
-    }
-    tex_read_layer(tex, level, i, j, k, rgba);
 }

@@ -231,6 +231,10 @@ SAMPLE_API int sample_texture_level_size(const sample_texture *tex, int level, i
 /* Decoded linear RGBA float of texel (i, j) of a level, no wrapping: for
  * tests and tools, not for sampling loops. Out-of-range gives 0. */
 SAMPLE_API void sample_texture_texel(const sample_texture *tex, int level, int i, int j, float rgba[4]);
+/* The same for layer `layer` of a level: the face of a cube map (0 … 5,
+ * GL order). Out-of-range gives 0. */
+SAMPLE_API void sample_texture_texel_layer(const sample_texture *tex, int level, int layer, int i, int j,
+                                           float rgba[4]);
 
 /* ---- Sampler state (mirrors an OpenGL sampler object) ------------------- */
 
@@ -406,9 +410,8 @@ SAMPLE_API sample_status sample_texture_create_3d_levels(const sample_volume *le
 /* Size of level k of any texture (d is 1 for 2D); 0 and zeros if k is out
  * of range. */
 SAMPLE_API int sample_texture_level_size3(const sample_texture *tex, int level, int *w, int *h, int *d);
-/* Decoded linear RGBA of texel (i, j) of slice k of a level, no wrapping
- * (tests and tools); out of range gives 0. */
-SAMPLE_API void sample_texture_texel3(const sample_texture *tex, int level, int i, int j, int k, float rgba[4]);
+/* A volume's texel (i, j) of slice k is sample_texture_texel_layer's
+ * layer k. */
 
 /* Sample `count` queries of a 3D texture (SAMPLE_E_INVALID_ARGUMENT for
  * another kind). A query whose p, dpdx, dpdy or bias holds NaN or ±inf
