@@ -8,3 +8,25 @@ if(TARGET texsample_cli)
   add_test(NAME cli_volume COMMAND cli_volume $<TARGET_FILE:texsample_cli>)
   set_tests_properties(cli_volume PROPERTIES TIMEOUT 60)
 endif()
+# 3D textures against Mesa's softpipe (GL_TEXTURE_3D, textureGrad and
+# textureLod): skips (77) where no OSMesa 3.3 context can be made, as
+# mesa_check (tests/mesa.cmake finds OSMesa). Every 8th configuration also
+# through `texsample lookup --volume` (the front program).
+if(SAMPLE_OSMESA_LIBRARY AND SAMPLE_OSMESA_INCLUDE)
+  add_executable(mesa_volume ${CMAKE_CURRENT_SOURCE_DIR}/mesa_volume.c ${CMAKE_CURRENT_SOURCE_DIR}/mesa_gl.c)
+  target_link_libraries(mesa_volume PRIVATE sample ${SAMPLE_OSMESA_LIBRARY})
+  target_include_directories(mesa_volume PRIVATE ${SAMPLE_OSMESA_INCLUDE} ${CMAKE_CURRENT_SOURCE_DIR})
+  target_compile_options(mesa_volume PRIVATE ${SAMPLE_WARNINGS})
+  # POSIX mkdtemp.
+  target_compile_definitions(mesa_volume PRIVATE _POSIX_C_SOURCE=200809L)
+  if(TARGET texsample_cli)
+    add_test(NAME mesa_volume COMMAND mesa_volume --texsample $<TARGET_FILE:texsample_cli> --texsample-stride 8)
+  else()
+    add_test(NAME mesa_volume COMMAND mesa_volume)
+  endif()
+  set_tests_properties(mesa_volume PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300
+    ENVIRONMENT "GALLIUM_DRIVER=softpipe;ASAN_OPTIONS=detect_leaks=0")
+else()
+  add_test(NAME mesa_volume COMMAND sh -c "echo 'SKIP: OSMesa (libosmesa6-dev) was not found when CMake configured this build'; exit 77")
+  set_tests_properties(mesa_volume PROPERTIES SKIP_RETURN_CODE 77)
+endif()
