@@ -2,7 +2,8 @@
  * texsample lookup --volume end to end (doc/volumes.md): writes a raw
  * volume, explicit levels and a query file, runs the front program, and
  * checks its output against sample_batch_3d on the same texels, bit for
- * bit; and the exit codes of bad command lines (2) and bad files (1).
+ * bit; `texsample info --volume` (depth and levels); and the exit codes of
+ * bad command lines (2) and bad files (1).
  *
  *   cli_volume TEXSAMPLE
  */
@@ -100,6 +101,21 @@ static void matches_library(void)
     CHECK(cli_holds(dir, "out.txt", " -> ") && cli_holds(dir, "err.txt", "texels/query"), "text and stats printed");
 }
 
+static void info_depth(void)
+{
+    /* info runs in the image program (the front program starts it). */
+    CHECK(run("info --volume vol.raw --w 8 --h 4 --d 2") == 0, "info exit 0");
+    CHECK(cli_holds(dir, "out.txt", "kind      3d\nsize      8 x 4 x 2\n"), "kind and size with depth");
+    CHECK(cli_holds(dir, "out.txt", "levels    4 (box)"), "levels");
+    CHECK(cli_holds(dir, "out.txt", "level  1  4 x 2 x 1\n  level  2  2 x 1 x 1\n  level  3  1 x 1 x 1"),
+          "every level w x h x d");
+    CHECK(run("info --volume vol.raw --w 8 --h 4 --d 2 --levels vol") == 0 &&
+              cli_holds(dir, "out.txt", "levels    2 (from the files)"),
+          "given levels");
+    CHECK(run("info --volume vol.raw --w 8 --h 4 --d 5") == 1, "info: wrong size");
+    CHECK(run("info --help") == 0 && cli_holds(dir, "out.txt", "--volume FILE"), "info --help lists --volume");
+}
+
 static void bad_command_lines(void)
 {
     CHECK(run("lookup --volume vol.raw --w 8 --h 4 --queries q.raw") == 2, "no --d: usage");
@@ -126,6 +142,7 @@ int main(int argc, char **argv)
     snprintf(dir, sizeof dir, "/tmp/cli_volume_XXXXXX");
     if (!mkdtemp(dir)) return 1;
     RUN(matches_library);
+    RUN(info_depth);
     RUN(bad_command_lines);
     cli_remove_dir(dir);
     return check_finish();

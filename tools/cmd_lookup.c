@@ -61,7 +61,7 @@ int cmd_lookup(int argc, char **argv)
     sample_batch_args a;
     sample_status st;
 
-    if (lookup_is_volume(argc, argv)) return cmd_lookup_volume(argc, argv);
+    if (vl_given(argc, argv)) return cmd_lookup_volume(argc, argv);
     tl_source_init(&src);
     sample_sampler_init(&smp);
     sample_mip_params_init(&mip);

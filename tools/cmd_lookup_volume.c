@@ -6,6 +6,7 @@
  */
 #include "cli.h"
 #include "lookup_volume.h"
+#include "volload.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -40,91 +41,11 @@ void lookup_stats_print(const sample_stats *stats, size_t n)
             SAMPLE_MAX_FOOTPRINT_TEXELS);
 }
 
-int lookup_is_volume(int argc, char **argv)
-{
-    int i;
-    for (i = 1; i < argc; ++i)
-        if (strcmp(argv[i], "--volume") == 0 || strncmp(argv[i], "--volume=", 9) == 0) return 1;
-    return 0;
-}
-
-/* --w, --h or --d: a size from 1 to SAMPLE_MAX_SIZE. Returns 1 if consumed,
- * 0 if not one of them, −1 on a bad value (reported). */
-static int size_flag(const char *sub, int argc, char **argv, int *i, int dims[3])
-{
-    static const char *const names[3] = {"--w", "--h", "--d"};
-    const char *v;
-    int a;
-    for (a = 0; a < 3; ++a)
-        if (cli_opt(argc, argv, i, names[a], &v)) {
-            if (!cli_parse_int(v, &dims[a]) || dims[a] <= 0 || dims[a] > SAMPLE_MAX_SIZE) {
-                cli_usage_error(sub, "%s needs a size from 1 to %d, not '%s'", names[a], SAMPLE_MAX_SIZE, v);
-                return -1;
-            }
-            return 1;
-        }
-    return 0;
-}
-
-/* Read the raw float32 RGBA volume of dims at path into *data. */
-static int read_volume(const char *sub, const char *path, const int dims[3], void **data)
-{
-    size_t size, want = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2] * 4 * sizeof(float);
-    const char *why;
-    if (!cli_read_file(path, data, &size, &why)) {
-        cli_runtime_error(sub, "cannot read '%s': %s", path, why);
-        return -1;
-    }
-    if (size != want) {
-        cli_runtime_error(sub, "'%s' holds %zu bytes; %d x %d x %d float32 RGBA needs %zu", path, size, dims[0],
-                          dims[1], dims[2], want);
-        free(*data);
-        *data = NULL;
-        return -1;
-    }
-    return 0;
-}
-
-/* The volume and its levels (PREFIX.k.raw, as many as exist), or its
- * pyramid built by `mip`. */
-static int load_volume(const char *sub, const char *path, const char *prefix, const int dims[3],
-                       const sample_mip_params *mip, sample_texture **out)
-{
-    sample_volume lv[SAMPLE_MAX_LEVELS];
-    void *data[SAMPLE_MAX_LEVELS] = {0};
-    sample_error err;
-    int count = 1, k, a, rc = -1;
-    if (read_volume(sub, path, dims, &data[0]) != 0) return -1;
-    memset(lv, 0, sizeof lv);
-    lv[0] = (sample_volume){dims[0], dims[1], dims[2], 4, SAMPLE_FORMAT_F32, data[0], 0, 0};
-    for (k = 1; prefix && k < SAMPLE_MAX_LEVELS; ++k) {
-        char name[4096];
-        int d[3];
-        FILE *f;
-        if (lv[k - 1].width == 1 && lv[k - 1].height == 1 && lv[k - 1].depth == 1) break;
-        for (a = 0; a < 3; ++a) d[a] = dims[a] >> k > 0 ? dims[a] >> k : 1;
-        snprintf(name, sizeof name, "%s.%d.raw", prefix, k);
-        if (!(f = fopen(name, "rb"))) break;
-        fclose(f);
-        if (read_volume(sub, name, d, &data[k]) != 0) goto done;
-        lv[k] = (sample_volume){d[0], d[1], d[2], 4, SAMPLE_FORMAT_F32, data[k], 0, 0};
-        count = k + 1;
-    }
-    if ((prefix ? sample_texture_create_3d_levels(lv, count, out, &err)
-                : sample_texture_create_3d(&lv[0], mip, out, &err)) != SAMPLE_OK) {
-        cli_runtime_error(sub, "%s", err.message);
-        goto done;
-    }
-    rc = 0;
-done:
-    for (k = 0; k < SAMPLE_MAX_LEVELS; ++k) free(data[k]);
-    return rc;
-}
-
 int cmd_lookup_volume(int argc, char **argv)
 {
-    const char *sub = "lookup", *vpath = NULL, *prefix = NULL, *qpath = NULL, *opath = NULL, *v, *why;
-    int dims[3] = {0, 0, 0}, text = 0, want_stats = 0, i, r, rc = EXIT_RUNTIME;
+    const char *sub = "lookup", *qpath = NULL, *opath = NULL, *v, *why;
+    int text = 0, want_stats = 0, i, r, rc = EXIT_RUNTIME;
+    vl_source src = {NULL, NULL, {0, 0, 0}};
     sample_sampler smp;
     sample_mip_params mip;
     sample_texture *tex = NULL;
@@ -154,12 +75,10 @@ int cmd_lookup_volume(int argc, char **argv)
             if (r < 0) return EXIT_USAGE;
             continue;
         }
-        if ((r = size_flag(sub, argc, argv, &i, dims)) != 0) {
+        if ((r = vl_source_flag(sub, argc, argv, &i, &src)) != 0) {
             if (r < 0) return EXIT_USAGE;
             continue;
         }
-        if (cli_opt(argc, argv, &i, "--volume", &vpath)) continue;
-        if (cli_opt(argc, argv, &i, "--levels", &prefix)) continue;
         if (cli_opt(argc, argv, &i, "--queries", &qpath)) continue;
         if (cli_opt(argc, argv, &i, "--out", &opath)) continue;
         if (cli_opt(argc, argv, &i, "--text", NULL)) { text = 1; continue; }
@@ -174,8 +93,7 @@ int cmd_lookup_volume(int argc, char **argv)
             return cli_usage_error(sub, "unexpected argument '%s' (files are given by options)", argv[i]);
         return cli_usage_error(sub, "unknown option '%s' (with --volume)", argv[i]);
     }
-    if (!vpath) return cli_usage_error(sub, "--volume needs a file");
-    if (!dims[0] || !dims[1] || !dims[2]) return cli_usage_error(sub, "--volume needs --w, --h and --d");
+    if (vl_source_check(sub, &src) != 0) return EXIT_USAGE;
     if (!qpath) return cli_usage_error(sub, "--queries FILE is required");
     if (sample_sampler_validate(&smp) != SAMPLE_OK)
         return cli_usage_error(sub, "inconsistent sampler state (min-lod > max-lod, base-level > max-level, or aniso < 1)");
@@ -183,7 +101,7 @@ int cmd_lookup_volume(int argc, char **argv)
     mip.wrap_s = smp.wrap_s;
     mip.wrap_t = smp.wrap_t;
     mip.wrap_r = smp.wrap_r;
-    if (load_volume(sub, vpath, prefix, dims, &mip, &tex) != 0) return EXIT_RUNTIME;
+    if (vl_load(sub, &src, &mip, &tex) != 0) return EXIT_RUNTIME;
 
     if (!cli_read_file(qpath, &qdata, &qsize, &why)) {
         cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, why);
