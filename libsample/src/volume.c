@@ -69,26 +69,22 @@ static sample_texture *vol_new(const sample_volume *v)
     return tex;
 }
 
-sample_status sample_texture_create_3d(const sample_volume *volume, const sample_mip_params *mip,
-                                       sample_texture **out, sample_error *err)
+/* A 3D texture of `count` given levels and, when mip asks for one, the
+ * pyramid below them (sample_texture_create_3d gives one level). */
+static sample_status vol_create(const sample_volume *levels, int count, const sample_mip_params *mip,
+                                sample_texture **out, sample_error *err)
 {
-    sample_texture *tex;
-    sample_status st;
-    RETURN_ERROR_IF(!out, err, SAMPLE_E_INVALID_ARGUMENT, "output pointer is NULL");
-    *out = NULL;
-    if ((st = check_volume(volume, "volume", err)) != SAMPLE_OK) return st;
-    if ((st = ls_tex_check_mip(mip, err)) != SAMPLE_OK) return st;
-    RETURN_ERROR_IF(mip && (unsigned)mip->wrap_r >= SAMPLE_WRAP_COUNT, err, SAMPLE_E_INVALID_ARGUMENT,
-                    "unknown wrap mode %d on r in mip parameters", (int)mip->wrap_r);
-    tex = vol_new(volume);
+    sample_texture *tex = vol_new(&levels[0]);
+    sample_status st = SAMPLE_OK;
+    int k;
     RETURN_ERROR_IF(!tex, err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture object");
-    if ((st = ls_tex_alloc_level(tex, 0, err)) != SAMPLE_OK) {
-        sample_texture_destroy(tex);
-        return st;
-    }
-    tex->nlevels = 1;
-    copy_volume(tex, 0, volume);
-    if (mip && mip->filter != SAMPLE_MIPGEN_NONE && (st = ls_mip_build(tex, mip, err)) != SAMPLE_OK) {
+    for (k = 0; k < count && st == SAMPLE_OK; ++k)
+        if ((st = ls_tex_alloc_level(tex, k, err)) == SAMPLE_OK) {
+            tex->nlevels = k + 1;
+            copy_volume(tex, k, &levels[k]);
+        }
+    if (st == SAMPLE_OK && mip && mip->filter != SAMPLE_MIPGEN_NONE) st = ls_mip_build(tex, mip, err);
+    if (st != SAMPLE_OK) {
         sample_texture_destroy(tex);
         return st;
     }
@@ -96,10 +92,22 @@ sample_status sample_texture_create_3d(const sample_volume *volume, const sample
     return SAMPLE_OK;
 }
 
+sample_status sample_texture_create_3d(const sample_volume *volume, const sample_mip_params *mip,
+                                       sample_texture **out, sample_error *err)
+{
+    sample_status st;
+    RETURN_ERROR_IF(!out, err, SAMPLE_E_INVALID_ARGUMENT, "output pointer is NULL");
+    *out = NULL;
+    if ((st = check_volume(volume, "volume", err)) != SAMPLE_OK) return st;
+    if ((st = ls_tex_check_mip(mip, err)) != SAMPLE_OK) return st;
+    RETURN_ERROR_IF(mip && (unsigned)mip->wrap_r >= SAMPLE_WRAP_COUNT, err, SAMPLE_E_INVALID_ARGUMENT,
+                    "unknown wrap mode %d on r in mip parameters", (int)mip->wrap_r);
+    return vol_create(volume, 1, mip, out, err);
+}
+
 sample_status sample_texture_create_3d_levels(const sample_volume *levels, int count, sample_texture **out,
                                               sample_error *err)
 {
-    sample_texture *tex;
     sample_status st;
     int k, full = 1, m;
     RETURN_ERROR_IF(!out, err, SAMPLE_E_INVALID_ARGUMENT, "output pointer is NULL");
@@ -127,18 +135,7 @@ sample_status sample_texture_create_3d_levels(const sample_volume *levels, int c
         RETURN_ERROR_IF(v->channels != b->channels || v->format != b->format, err, SAMPLE_E_INVALID_ARGUMENT,
                         "level %d has a different channel count or format from level 0", k);
     }
-    tex = vol_new(&levels[0]);
-    RETURN_ERROR_IF(!tex, err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture object");
-    for (k = 0; k < count; ++k) {
-        if ((st = ls_tex_alloc_level(tex, k, err)) != SAMPLE_OK) {
-            sample_texture_destroy(tex);
-            return st;
-        }
-        tex->nlevels = k + 1;
-        copy_volume(tex, k, &levels[k]);
-    }
-    *out = tex;
-    return SAMPLE_OK;
+    return vol_create(levels, count, NULL, out, err);
 }
 
 int sample_texture_level_size3(const sample_texture *tex, int level, int *w, int *h, int *d)
