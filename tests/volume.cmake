@@ -30,3 +30,21 @@ else()
   add_test(NAME mesa_volume COMMAND sh -c "echo 'SKIP: OSMesa (libosmesa6-dev) was not found when CMake configured this build'; exit 77")
   set_tests_properties(mesa_volume PROPERTIES SKIP_RETURN_CODE 77)
 endif()
+# Volume images through libsample_io (oiiotool makes them: skipped, 77,
+# without it; tests/io.cmake finds it).
+if(TARGET sample_io)
+  add_executable(io_volume ${CMAKE_CURRENT_SOURCE_DIR}/io_volume.c)
+  target_link_libraries(io_volume PRIVATE sample_io sample m)
+  target_include_directories(io_volume PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  target_compile_options(io_volume PRIVATE ${SAMPLE_WARNINGS})
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/io_volume_scratch)
+  if(TARGET texsample_cli)
+    set(_texsample $<TARGET_FILE:texsample_cli>)
+  else()
+    set(_texsample "")
+  endif()
+  add_test(NAME io_volume COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec \"$0\" \"$@\""
+    $<TARGET_FILE:io_volume> ${scratch} "${SAMPLE_OIIOTOOL_ARG}" "${_texsample}")
+  set_tests_properties(io_volume PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 60
+    ENVIRONMENT "OCIO=;${SAMPLE_IO_SAN_ENV}")
+endif()

@@ -9,7 +9,10 @@ const char info_volume_help[] =
     "\nVolumes (3D textures):\n"
     "  texsample info --volume FILE --w W --h H --d D [--levels PREFIX] [--mipgen KERNEL]\n"
     "                          raw float32 RGBA, x fastest, then y, then z; prints the\n"
-    "                          texture's kind, size w x h x d (depth) and every level\n";
+    "                          texture's kind, size w x h x d (depth) and every level\n"
+    "  texsample info --volume FILE [--mipgen KERNEL]\n"
+    "                          the same of a volume image (TIFF pages or OpenEXR parts\n"
+    "                          as slices, or a volumetric TIFF)\n";
 
 int cmd_info_volume(int argc, char **argv)
 {
@@ -41,6 +44,7 @@ int cmd_info_volume(int argc, char **argv)
     if (vl_source_check(sub, &src) != 0) return EXIT_USAGE;
     if (vl_load(sub, &src, &mip, &tex) != 0) return EXIT_RUNTIME;
     sample_texture_info_get(tex, &inf);
+    if (!src.dims[0]) printf("file      %s\n", src.path);
     vl_print_texture(tex, src.levels ? "from the files" : inf.levels > 1 ? sample_mipgen_name(mip.filter) : "base only");
     sample_texture_destroy(tex);
     return EXIT_OK;

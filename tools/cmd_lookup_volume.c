@@ -6,7 +6,11 @@
  */
 #include "cli.h"
 #include "lookup_volume.h"
+#include "texload.h"
 #include "volload.h"
+#ifdef TEXSAMPLE_FRONT
+#include "image_program.h"
+#endif
 
 #include <errno.h>
 #include <stdio.h>
@@ -18,7 +22,10 @@ const char lookup_volume_help[] =
     "  --volume FILE --w W --h H --d D\n"
     "                          little-endian float32 RGBA texels, x fastest, then y,\n"
     "                          then z (slice 0, r = 0, first)\n"
-    "  --levels PREFIX         explicit levels PREFIX.1.raw, PREFIX.2.raw, ... of\n"
+    "  --volume FILE           a volume image: the pages of a TIFF or the parts of an\n"
+    "                          OpenEXR as slices, or a volumetric TIFF; first 4\n"
+    "                          channels as stored (no colour conversion)\n"
+    "  --levels PREFIX         raw volumes: explicit levels PREFIX.1.raw, PREFIX.2.raw, ... of\n"
     "                          max(1, W>>k) x max(1, H>>k) x max(1, D>>k); as many as\n"
     "                          exist are used, and no pyramid is generated\n"
     "  --mipgen box|lanczos3|kaiser|none       the pyramid otherwise (default box)\n"
@@ -101,7 +108,12 @@ int cmd_lookup_volume(int argc, char **argv)
     mip.wrap_s = smp.wrap_s;
     mip.wrap_t = smp.wrap_t;
     mip.wrap_r = smp.wrap_r;
-    if (vl_load(sub, &src, &mip, &tex) != 0) return EXIT_RUNTIME;
+    if ((r = vl_load(sub, &src, &mip, &tex)) != 0) {
+#ifdef TEXSAMPLE_FRONT
+        if (r == TL_IMAGE_PROGRAM) return image_program_run(argc, argv);
+#endif
+        return EXIT_RUNTIME;
+    }
 
     if (!cli_read_file(qpath, &qdata, &qsize, &why)) {
         cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, why);

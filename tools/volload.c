@@ -1,6 +1,7 @@
 /* Volumes from raw files (volload.h). */
 #include "volload.h"
 #include "cli.h"
+#include "texload.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,11 +33,33 @@ int vl_source_flag(const char *sub, int argc, char **argv, int *i, vl_source *sr
     return 0;
 }
 
+/* A raw volume has its size on the command line; an image file has it in
+ * its header. */
+static int vl_raw(const vl_source *src) { return src->dims[0] || src->dims[1] || src->dims[2]; }
+
 int vl_source_check(const char *sub, const vl_source *src)
 {
     if (!src->path) return cli_usage_error(sub, "--volume needs a file");
-    if (!src->dims[0] || !src->dims[1] || !src->dims[2]) return cli_usage_error(sub, "--volume needs --w, --h and --d");
+    if (vl_raw(src) && (!src->dims[0] || !src->dims[1] || !src->dims[2]))
+        return cli_usage_error(sub, "a raw --volume needs all of --w, --h and --d");
+    if (!vl_raw(src) && src->levels) return cli_usage_error(sub, "--levels is for raw volumes (--w, --h, --d)");
     return 0;
+}
+
+/* A volume image through libsample_io. */
+static int load_image(const char *sub, const vl_source *src, const sample_mip_params *mip, sample_texture **out)
+{
+#ifdef TEXSAMPLE_HAVE_IO
+    sample_error err;
+    if (sample_io_read_volume(src->path, mip, out, &err) != SAMPLE_OK) return cli_runtime_error(sub, "%s", err.message), -1;
+    return 0;
+#elif defined(TEXSAMPLE_FRONT)
+    (void)sub, (void)src, (void)mip, (void)out;
+    return TL_IMAGE_PROGRAM;
+#else
+    (void)src, (void)mip, (void)out;
+    return cli_runtime_error(sub, "this build has no image support (libsample_io); give a raw volume"), -1;
+#endif
 }
 
 /* Read the raw float32 RGBA volume of dims at path into *data. */
@@ -65,6 +88,7 @@ int vl_load(const char *sub, const vl_source *src, const sample_mip_params *mip,
     sample_error err;
     int count = 1, k, a, rc = -1;
     const int *dims = src->dims;
+    if (!vl_raw(src)) return load_image(sub, src, mip, out);
     if (read_volume(sub, src->path, dims, &data[0]) != 0) return -1;
     memset(lv, 0, sizeof lv);
     lv[0] = (sample_volume){dims[0], dims[1], dims[2], 4, SAMPLE_FORMAT_F32, data[0], 0, 0};

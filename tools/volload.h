@@ -1,12 +1,14 @@
-/* Volumes (3D textures) from raw files, for the subcommands that take
- * --volume (lookup, info): the options, the loading and a description. */
+/* Volumes (3D textures) from raw files or volume images, for the
+ * subcommands that take --volume (lookup, info): the options, the loading
+ * and a description. */
 #ifndef TEXSAMPLE_VOLLOAD_H
 #define TEXSAMPLE_VOLLOAD_H
 
 #include "sample/sample.h"
 
 typedef struct vl_source {
-    const char *path;   /* --volume FILE: float32 RGBA, x fastest, then y, then z */
+    const char *path;   /* --volume FILE: raw float32 RGBA, x fastest, then y, then
+                         * z, with --w --h --d; without them a volume image */
     const char *levels; /* --levels PREFIX: PREFIX.k.raw for k ≥ 1 */
     int dims[3];        /* --w, --h, --d */
 } vl_source;
@@ -19,8 +21,10 @@ int vl_source_flag(const char *sub, int argc, char **argv, int *i, vl_source *sr
 /* Usage errors of an incomplete source (reported): EXIT_USAGE, else 0. */
 int vl_source_check(const char *sub, const vl_source *src);
 /* The volume and its levels (as many PREFIX.k.raw as exist), or its
- * pyramid built by `mip`; errors reported. 0 on success, −1 after an
- * error. */
+ * pyramid built by `mip`; a volume image (sample_io_read_volume) where no
+ * size is given. Errors reported. 0 on success, −1 after an error, and in
+ * the front program (no image support) TL_IMAGE_PROGRAM for a volume
+ * image (texload.h). */
 int vl_load(const char *sub, const vl_source *src, const sample_mip_params *mip, sample_texture **out);
 /* What `info` prints of a 3D texture: kind, size, format, channels,
  * levels (each w x h x d) and bytes; origin says where the levels came
