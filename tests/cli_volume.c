@@ -23,22 +23,8 @@ enum { W = 8, H = 4, D = 2, NQ = 64 };
 static char *exe;
 static char dir[256];
 
-static void put(const char *name, const void *data, size_t n)
-{
-    char p[512];
-    FILE *f;
-    snprintf(p, sizeof p, "%s/%s", dir, name);
-    f = fopen(p, "wb");
-    CHECK(f && fwrite(data, 1, n, f) == n, "write %s", p);
-    if (f) fclose(f);
-}
-
-static int run(const char *args)
-{
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, "cd %s && timeout 10 %s %s >out.txt 2>err.txt", dir, exe, args);
-    return check_shell(cmd);
-}
+static void put(const char *name, const void *data, size_t n) { cli_put(dir, name, data, n); }
+static int run(const char *args) { return cli_run_in(dir, exe, args); }
 
 static uint32_t rng = 7u;
 static float urand(void)

@@ -16,7 +16,7 @@ const char info_volume_help[] =
 
 int cmd_info_volume(int argc, char **argv)
 {
-    const char *sub = "info", *v;
+    const char *sub = "info";
     vl_source src = {NULL, NULL, {0, 0, 0}};
     sample_mip_params mip;
     sample_texture *tex;
@@ -32,10 +32,8 @@ int cmd_info_volume(int argc, char **argv)
             if (r < 0) return EXIT_USAGE;
             continue;
         }
-        if (cli_opt(argc, argv, &i, "--mipgen", &v)) {
-            int m = sample_mipgen_parse(v);
-            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v);
-            mip.filter = (sample_mipgen)m;
+        if ((r = vl_mipgen_flag(sub, argc, argv, &i, &mip)) != 0) {
+            if (r < 0) return EXIT_USAGE;
             continue;
         }
         if (argv[i][0] != '-') return cli_usage_error(sub, "unexpected argument '%s' (one texture)", argv[i]);

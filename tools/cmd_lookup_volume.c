@@ -90,10 +90,8 @@ int cmd_lookup_volume(int argc, char **argv)
         if (cli_opt(argc, argv, &i, "--out", &opath)) continue;
         if (cli_opt(argc, argv, &i, "--text", NULL)) { text = 1; continue; }
         if (cli_opt(argc, argv, &i, "--stats", NULL)) { want_stats = 1; continue; }
-        if (cli_opt(argc, argv, &i, "--mipgen", &v)) {
-            int m = sample_mipgen_parse(v);
-            if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v);
-            mip.filter = (sample_mipgen)m;
+        if ((r = vl_mipgen_flag(sub, argc, argv, &i, &mip)) != 0) {
+            if (r < 0) return EXIT_USAGE;
             continue;
         }
         if (argv[i][0] != '-')

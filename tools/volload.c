@@ -33,6 +33,16 @@ int vl_source_flag(const char *sub, int argc, char **argv, int *i, vl_source *sr
     return 0;
 }
 
+int vl_mipgen_flag(const char *sub, int argc, char **argv, int *i, sample_mip_params *mip)
+{
+    const char *v;
+    int m;
+    if (!cli_opt(argc, argv, i, "--mipgen", &v)) return 0;
+    if ((m = sample_mipgen_parse(v)) < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v), -1;
+    mip->filter = (sample_mipgen)m;
+    return 1;
+}
+
 /* A raw volume has its size on the command line; an image file has it in
  * its header. */
 static int vl_raw(const vl_source *src) { return src->dims[0] || src->dims[1] || src->dims[2]; }

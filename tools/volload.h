@@ -18,6 +18,9 @@ int vl_given(int argc, char **argv);
 /* Consumes --volume, --levels, --w, --h, --d. Returns 1 if consumed, 0 if
  * not ours, −1 on a bad value (reported). */
 int vl_source_flag(const char *sub, int argc, char **argv, int *i, vl_source *src);
+/* Consumes --mipgen KERNEL into mip->filter: 1 if consumed, 0 if not
+ * ours, −1 on an unknown kernel (reported). */
+int vl_mipgen_flag(const char *sub, int argc, char **argv, int *i, sample_mip_params *mip);
 /* Usage errors of an incomplete source (reported): EXIT_USAGE, else 0. */
 int vl_source_check(const char *sub, const vl_source *src);
 /* The volume and its levels (as many PREFIX.k.raw as exist), or its
