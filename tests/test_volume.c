@@ -504,13 +504,19 @@ static float smooth_fn(int i, int j, int k, int c)
     return (float)(0.5 + 0.2 * sin(w * i + 0.3 * c) * cos(w * j + 0.1) + 0.15 * cos(w * (k + i) + 0.7 * c));
 }
 
-static sample_texture *smooth_volume(void)
+static void smooth_fill(void)
 {
     int i, j, k, c;
     for (k = 0; k < FN; ++k)
         for (j = 0; j < FN; ++j)
             for (i = 0; i < FN; ++i)
                 for (c = 0; c < 4; ++c) smooth_data[4 * (i + FN * (j + FN * k)) + c] = smooth_fn(i, j, k, c);
+}
+
+/* smooth_data as a one-level volume. */
+static sample_texture *smooth_volume(void)
+{
+    smooth_fill();
     return vol_f32(FN, FN, FN, 4, smooth_data, NULL);
 }
 
@@ -694,7 +700,7 @@ static void aniso_probes(void)
     sample_sampler s, t;
     sample_stats st;
     int n, i, c, k;
-    smooth_volume();
+    smooth_fill();
     sample_mip_params_init(&mp);
     tex = vol_f32(FN, FN, FN, 4, smooth_data, &mp);
     sample_sampler_init(&s);
