@@ -3,6 +3,7 @@
  */
 #include "mesa_gl.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -162,4 +163,20 @@ void mesa_gl_destroy(mesa_gl *g)
 {
     if (g->ctx) OSMesaDestroyContext(g->ctx);
     g->ctx = NULL;
+}
+
+uint32_t mesa_rnd_u32(uint32_t *state)
+{
+    *state ^= *state << 13;
+    *state ^= *state >> 17;
+    *state ^= *state << 5;
+    return *state;
+}
+
+float mesa_rnd01(uint32_t *state) { return (float)(mesa_rnd_u32(state) >> 8) * (1.0f / 16777216.0f); }
+
+float mesa_grad_scale(uint32_t *state, int emin, int emax)
+{
+    int e = (int)(mesa_rnd_u32(state) % (uint32_t)(emax - emin + 1)) + emin, m = (int)(mesa_rnd_u32(state) % 256);
+    return ldexpf(1.0f + (float)m / 256.0f, e);
 }

@@ -18,6 +18,8 @@
 
 #include "sample/sample.h"
 
+#include <stdint.h>
+
 typedef struct mesa_gl {
     OSMesaContext ctx;
     unsigned char dummy[4];
@@ -48,5 +50,13 @@ void mesa_gl_sampler(GLenum target, const sample_sampler *s);
 void mesa_gl_upload(GLenum image_target, const sample_texture *tex, int level, int layer);
 
 void mesa_gl_destroy(mesa_gl *g);
+
+/* The checks' random numbers: xorshift32 on *state, a float in [0, 1)
+ * from its top 24 bits, and a texel-space scale 2^e·(1 + m/256) with e in
+ * [emin, emax] — 8 mantissa bits, so that ρ and its logarithm are exact in
+ * softpipe's 16-bit log2 table as well. */
+uint32_t mesa_rnd_u32(uint32_t *state);
+float mesa_rnd01(uint32_t *state);
+float mesa_grad_scale(uint32_t *state, int emin, int emax);
 
 #endif /* SAMPLE_TEST_MESA_GL_H */

@@ -42,14 +42,8 @@
 
 static int verbose;
 static uint32_t rng = 424242u;
-static float rnd01(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return (float)(rng >> 8) * (1.0f / 16777216.0f);
-}
-static int rnd_int(int n) { return (int)(rnd01() * (float)n); }
+static float rnd01(void) { return mesa_rnd01(&rng); }
+static int rnd_int(int n) { return (int)(mesa_rnd_u32(&rng) % (uint32_t)n); }
 
 /* Query i's three texels: (s, t, r, lod), dP/dx, dP/dy. */
 static const char *fs_src =
@@ -99,8 +93,6 @@ static float coord(sample_wrap w)
     return -1.25f + 3.5f * rnd01();
 }
 
-/* 2^e·(1 + m/256) texels: exact in softpipe's log2 table. */
-static float grad_scale(void) { return ldexpf(1.0f + (float)rnd_int(256) / 256.0f, rnd_int(8) - 2); }
 
 /* NQ queries: q[i] with, for textureLod, lod[i]. textureGrad's columns
  * each lie along one texel axis (any of s, t, r, chosen at random):
@@ -122,8 +114,8 @@ static void make_queries(const sample_sampler *s, int use_lod, sample_query3 *q,
             lod[i] = (i % 2) ? pts[(i / 2) % (int)(sizeof pts / sizeof pts[0])] : -1.0f + 6.0f * rnd01();
         } else {
             int ax = rnd_int(3), ay = rnd_int(3);
-            q[i].dpdx[ax] = grad_scale() / (float)(n[ax] > 0 ? n[ax] : 1) * (rnd01() < 0.5f ? -1.0f : 1.0f);
-            q[i].dpdy[ay] = grad_scale() / (float)(n[ay] > 0 ? n[ay] : 1);
+            q[i].dpdx[ax] = mesa_grad_scale(&rng, -2, 5) / (float)(n[ax] > 0 ? n[ax] : 1) * (rnd01() < 0.5f ? -1.0f : 1.0f);
+            q[i].dpdy[ay] = mesa_grad_scale(&rng, -2, 5) / (float)(n[ay] > 0 ? n[ay] : 1);
         }
     }
 }
