@@ -22,15 +22,7 @@ static char *exe;
 static const char *source; /* the source tree: testimages/ */
 static char dir[256];
 
-static void put(const char *name, const void *data, size_t n)
-{
-    char p[512];
-    FILE *f;
-    snprintf(p, sizeof p, "%s/%s", dir, name);
-    f = fopen(p, "wb");
-    CHECK(f && fwrite(data, 1, n, f) == n, "write %s", p);
-    if (f) fclose(f);
-}
+static void put(const char *name, const void *data, size_t n) { cli_put(dir, name, data, n); }
 
 static size_t get(const char *name, void *data, size_t n)
 {

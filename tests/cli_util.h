@@ -19,6 +19,27 @@ static inline int cli_holds(const char *dir, const char *name, const char *text)
     return r;
 }
 
+/* Write n bytes of data to the file `name` in `dir` (a failure is a
+ * failed CHECK). */
+static inline void cli_put(const char *dir, const char *name, const void *data, size_t n)
+{
+    char p[512];
+    FILE *f;
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    f = fopen(p, "wb");
+    CHECK(f && fwrite(data, 1, n, f) == n, "write %s", p);
+    if (f) fclose(f);
+}
+
+/* Run `texsample ARGS` (exe) in dir with a 10 s limit, its stdout and
+ * stderr in out.txt and err.txt there; its exit status. */
+static inline int cli_run_in(const char *dir, const char *exe, const char *args)
+{
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "cd %s && timeout 10 %s %s >out.txt 2>err.txt", dir, exe, args);
+    return check_shell(cmd);
+}
+
 static inline void cli_remove_dir(const char *dir)
 {
     char cmd[512];

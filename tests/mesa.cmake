@@ -9,11 +9,12 @@ if(SAMPLE_OSMESA_LIBRARY AND SAMPLE_OSMESA_INCLUDE)
   target_compile_options(mesa_check PRIVATE ${SAMPLE_WARNINGS})
   # POSIX mkdtemp, system.
   target_compile_definitions(mesa_check PRIVATE _POSIX_C_SOURCE=200809L)
-  if(TARGET texsample)
+  if(TARGET texsample_cli)
     # Every configuration through the library; every 10th also through
-    # `texsample lookup` (a process start each; the full run is
+    # `texsample lookup` (a start of the front program each, which reads
+    # raw files without loading the image libraries; the full run is
     # `mesa_check --texsample build/tools/texsample`).
-    add_test(NAME mesa_check COMMAND mesa_check --texsample $<TARGET_FILE:texsample> --texsample-stride 10)
+    add_test(NAME mesa_check COMMAND mesa_check --texsample $<TARGET_FILE:texsample_cli> --texsample-stride 10)
   else()
     add_test(NAME mesa_check COMMAND mesa_check)
   endif()

@@ -1,6 +1,7 @@
 /* texsample info: what a file holds, and what libsample makes of it. */
 #include "cli.h"
 #include "commands.h"
+#include "lookup_volume.h"
 #include "texload.h"
 
 #include <stdio.h>
@@ -101,12 +102,13 @@ int cmd_info(int argc, char **argv)
     sample_texture *tex;
     sample_texture_info inf;
     int i;
+    if (vl_given(argc, argv)) return cmd_info_volume(argc, argv);
     tl_source_init(&src);
     sample_mip_params_init(&mip);
     for (i = 1; i < argc; ++i) {
         int r;
         if (cli_is_help(argv[i])) {
-            printf("%s", help);
+            printf("%s%s", help, info_volume_help);
             return EXIT_OK;
         }
         if ((r = tl_source_flag(sub, argc, argv, &i, &src)) != 0) {

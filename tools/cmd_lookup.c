@@ -6,6 +6,7 @@
 #include "cli.h"
 #include "sample/testing.h"
 #include "commands.h"
+#include "lookup_volume.h"
 #include "texload.h"
 #ifdef TEXSAMPLE_FRONT
 #include "image_program.h"
@@ -94,12 +95,14 @@ int cmd_lookup(int argc, char **argv)
     sample_batch_args a;
     sample_status st;
 
+    if (vl_given(argc, argv)) return cmd_lookup_volume(argc, argv);
     tl_source_init(&src);
     sample_sampler_init(&smp);
     sample_mip_params_init(&mip);
     for (i = 1; i < argc; ++i) {
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
+            fputs(lookup_volume_help, stdout);
             cli_sampler_help_print();
             return EXIT_OK;
         }
@@ -233,17 +236,7 @@ int cmd_lookup(int argc, char **argv)
             printf(" -> %.9g %.9g %.9g %.9g\n", out[4 * k], out[4 * k + 1], out[4 * k + 2], out[4 * k + 3]);
         }
     }
-    if (want_stats) {
-        size_t k;
-        double sum = 0;
-        uint32_t mx = 0;
-        for (k = 0; k < n; ++k) {
-            sum += stats[k].texels;
-            if (stats[k].texels > mx) mx = stats[k].texels;
-        }
-        fprintf(stderr, "queries %zu, texels/query mean %.2f max %u (cap %d)\n", n, n ? sum / (double)n : 0.0,
-                mx, SAMPLE_MAX_FOOTPRINT_TEXELS);
-    }
+    if (want_stats) lookup_stats_print(stats, n);
     rc = EXIT_OK;
 done:
     free(qdata);

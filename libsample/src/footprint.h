@@ -495,6 +495,10 @@ typedef struct fp_run_state {
     fp_level_fn level;
     float s, t, lam, f;
     int l0, l1, ok;
+    /* The value at the centre on level lv when no level fits (NULL: the
+     * bilinear value at (s, t)); a kind whose levels are not 2D (a
+     * volume's trilinear) sets it after ls_fp_run_count. */
+    uint32_t (*fallback)(const sample_ctx *c, const void *geom, int lv, float out[4]);
 } fp_run_state;
 void ls_fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, double minor_base, float s,
                   float t, float call_bias, fp_run_state *rs);
@@ -531,5 +535,8 @@ void ls_fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias,
  * reflected the centre, which mirrors the footprint too. */
 void ls_fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
                int *flip_t);
+/* One axis of ls_fp_center: the centre u0 on an axis of n texels under
+ * wrap mode m, *flip set where a mirror-clamp reflected it. */
+double ls_fp_center_axis(sample_wrap m, float s, int n, int *flip);
 
 #endif /* SAMPLE_FOOTPRINT_H */

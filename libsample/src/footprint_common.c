@@ -140,19 +140,21 @@ static double reduce_period(sample_wrap m, double u, int n)
     return p > 0.0 ? u - p * fp_floor(u / p) : u;
 }
 
+double ls_fp_center_axis(sample_wrap m, float s, int n, int *flip)
+{
+    *flip = mirror_clamp(m) && s < 0.0f;
+    /* A float times an int below 2^17 is exact in double. Texel centres sit
+     * at integers after the −½ (DESIGN §2). */
+    if (wrap_transforms_coord(m)) s = ls_wrap_coord(m, s, n);
+    return reduce_period(m, (double)s * n, n) - 0.5;
+}
+
 void ls_fp_center(const sample_ctx *c, int lv, float s, float t, double *u0, double *v0, int *flip_s,
                int *flip_t)
 {
     const struct sample_level *L = &c->tex->level[lv];
-    sample_wrap ms = c->smp->wrap_s, mt = c->smp->wrap_t;
-    *flip_s = mirror_clamp(ms) && s < 0.0f;
-    *flip_t = mirror_clamp(mt) && t < 0.0f;
-    /* A float times an int below 2^17 is exact in double. Texel centres sit
-     * at integers after the −½ (DESIGN §2). */
-    if (wrap_transforms_coord(ms)) s = ls_wrap_coord(ms, s, L->w);
-    if (wrap_transforms_coord(mt)) t = ls_wrap_coord(mt, t, L->h);
-    *u0 = reduce_period(ms, (double)s * L->w, L->w) - 0.5;
-    *v0 = reduce_period(mt, (double)t * L->h, L->h) - 0.5;
+    *u0 = ls_fp_center_axis(c->smp->wrap_s, s, L->w, flip_s);
+    *v0 = ls_fp_center_axis(c->smp->wrap_t, t, L->h, flip_t);
 }
 
 static void store(float *dst, const double *v)
@@ -201,6 +203,7 @@ void ls_fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, d
     rs->l0 = l0;
     rs->l1 = l1;
     rs->ok = ok;
+    rs->fallback = NULL;
 }
 
 uint32_t ls_fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
@@ -248,6 +251,7 @@ uint32_t ls_fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4
             st->level1 = -1;
             st->level_frac = 0.0f;
         }
+        if (rs->fallback) return n + rs->fallback(c, geom, c->maxlev, out);
         return n + ls_recon_level(c, c->maxlev, SAMPLE_LINEAR, rs->s, rs->t, out, dds, ddt);
     }
     store(out, r0);

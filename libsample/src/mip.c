@@ -4,7 +4,9 @@
  * Every level is made from the stored level above it by a separable
  * resampler: one tap table per axis (source indices and weights for each
  * output texel), a horizontal pass into a small cache of float rows, a
- * vertical pass that encodes into the level. The box, the odd-axis polyphase box and the
+ * pass across rows — vertical, and for a volume across slices too, with
+ * the product of the two axes' weights — that encodes into the level. A
+ * 2D level is a volume of one slice whose depth axis copies (weight 1). The box, the odd-axis polyphase box and the
  * windowed-sinc kernels differ only in how the tap table is filled, so the
  * resampling loop exists once.
  *
@@ -202,7 +204,7 @@ static int axis_make(mip_axis *ax, int n_src, int n_dst, sample_mipgen f, sample
 typedef struct mip_scratch {
     float *row;    /* one decoded source row: n_src(x) RGBA floats */
     float *rows;   /* slots × n_dst(x) RGBA floats, horizontally filtered */
-    int *tag;      /* source row held by each slot, −1 for none */
+    int64_t *tag;  /* source row (slice·h + row) held by each slot, −1 for none */
     double *acc;   /* n_dst(x) RGBA sums of the output row being built */
     int slots;
 } mip_scratch;
@@ -212,7 +214,7 @@ typedef struct mip_scratch {
 size_t ls_mip_scratch_bytes(int w, sample_mipgen f)
 {
     size_t dst = (size_t)(w > 1 ? w / 2 : 1), slots = MIP_ROW_SLOTS(f == SAMPLE_MIPGEN_BOX ? 3 : MIP_MAX_TAPS);
-    return (size_t)w * 4 * sizeof(float) + slots * (dst * 4 * sizeof(float) + sizeof(int)) +
+    return (size_t)w * 4 * sizeof(float) + slots * (dst * 4 * sizeof(float) + sizeof(int64_t)) +
            dst * 4 * sizeof(double);
 }
 
@@ -232,7 +234,7 @@ static int scratch_make(mip_scratch *s, int w, sample_mipgen f)
     s->slots = MIP_ROW_SLOTS(f == SAMPLE_MIPGEN_BOX ? 3 : MIP_MAX_TAPS);
     s->row = (float *)malloc((size_t)w * 4 * sizeof(float));
     s->rows = (float *)malloc((size_t)s->slots * dst * 4 * sizeof(float));
-    s->tag = (int *)malloc((size_t)s->slots * sizeof(int));
+    s->tag = (int64_t *)malloc((size_t)s->slots * sizeof(int64_t));
     s->acc = (double *)malloc(dst * 4 * sizeof(double));
     if (!s->row || !s->rows || !s->tag || !s->acc) {
         scratch_free(s);
@@ -241,15 +243,19 @@ static int scratch_make(mip_scratch *s, int w, sample_mipgen f)
     return 1;
 }
 
-/* Source row y of level k − 1, filtered horizontally, from the cache. Sums
- * run in double and round once to float. */
-static const float *filtered_row(sample_texture *tex, int k, const mip_axis *ax, mip_scratch *s, int y)
+/* Source row y of slice z of level k − 1, filtered horizontally, from the
+ * cache. Sums run in double and round once to float. */
+static const float *filtered_row(sample_texture *tex, int k, const mip_axis *ax, mip_scratch *s, int y, int z)
 {
     const struct sample_level *S = &tex->level[k - 1];
-    int slot = y % s->slots, i, t, c;
+    const int64_t key = (int64_t)z * S->h + y;
+    int slot = (int)(key % s->slots), i, t, c;
     float *out = s->rows + (size_t)slot * (size_t)ax->n_dst * 4;
-    if (s->tag[slot] == y) return out;
-    for (i = 0; i < S->w; ++i) tex_decode(tex, S, i, y, s->row + 4 * (size_t)i);
+    const unsigned char *src = S->data + (size_t)z * S->slice;
+    if (s->tag[slot] == key) return out;
+    for (i = 0; i < S->w; ++i)
+        v4_store(s->row + 4 * (size_t)i,
+                 tex_decode_v4(tex->format, tex->channels, src + (size_t)y * S->stride + (size_t)i * tex->texel_bytes));
     for (i = 0; i < ax->n_dst; ++i) {
         const int *ix = ax->idx + (size_t)i * ax->taps;
         const float *w = ax->w + (size_t)i * ax->taps;
@@ -258,33 +264,45 @@ static const float *filtered_row(sample_texture *tex, int k, const mip_axis *ax,
             for (c = 0; c < 4; ++c) acc[c] += (double)w[t] * s->row[4 * (size_t)ix[t] + c];
         for (c = 0; c < 4; ++c) out[4 * (size_t)i + c] = (float)acc[c];
     }
-    s->tag[slot] = y;
+    s->tag[slot] = key;
     return out;
 }
 
-/* Level k from level k − 1 through the two tap tables, one output row at a
- * time: horizontal pass (filtered_row), then the vertical taps summed in
- * double in tap order and rounded once, so each pass adds one float
- * rounding per value. */
-static void resample(sample_texture *tex, int k, const mip_axis *ax, const mip_axis *ay, mip_scratch *s)
+/* Level k from level k − 1 through the three tap tables (x, y, and z
+ * across the slices of a volume), one output row at a time: horizontal
+ * pass (filtered_row), then the row taps — each the product of a z and a y
+ * weight, in double — summed in double in tap order and rounded once, so
+ * each pass adds one float rounding per value. A 2D level's z axis is one
+ * tap of weight 1, so its sums are the plain vertical pass's bit for bit. */
+static void resample(sample_texture *tex, int k, const mip_axis *ax, const mip_axis *ay, const mip_axis *az,
+                     mip_scratch *s)
 {
     struct sample_level *D = &tex->level[k];
-    int i, j, t, c;
+    int i, j, t, c, z, tz;
     for (t = 0; t < s->slots; ++t) s->tag[t] = -1;
-    for (j = 0; j < ay->n_dst; ++j) {
-        const int *iy = ay->idx + (size_t)j * ay->taps;
-        const float *w = ay->w + (size_t)j * ay->taps;
-        for (i = 0; i < 4 * ax->n_dst; ++i) s->acc[i] = 0.0;
-        for (t = 0; t < ay->taps; ++t) {
-            const float *r;
-            if (w[t] == 0.0f) continue; /* unused taps: adding 0·x changes no sum */
-            r = filtered_row(tex, k, ax, s, iy[t]);
-            for (i = 0; i < 4 * ax->n_dst; ++i) s->acc[i] += (double)w[t] * r[i];
-        }
-        for (i = 0; i < ax->n_dst; ++i) {
-            float v[4];
-            for (c = 0; c < 4; ++c) v[c] = (float)s->acc[4 * (size_t)i + c];
-            ls_tex_encode(tex, v, D->data + (size_t)j * D->stride + (size_t)i * tex->texel_bytes);
+    for (z = 0; z < az->n_dst; ++z) {
+        const int *iz = az->idx + (size_t)z * az->taps;
+        const float *wz = az->w + (size_t)z * az->taps;
+        unsigned char *dst = D->data + (size_t)z * D->slice;
+        for (j = 0; j < ay->n_dst; ++j) {
+            const int *iy = ay->idx + (size_t)j * ay->taps;
+            const float *w = ay->w + (size_t)j * ay->taps;
+            for (i = 0; i < 4 * ax->n_dst; ++i) s->acc[i] = 0.0;
+            for (tz = 0; tz < az->taps; ++tz) {
+                if (wz[tz] == 0.0f) continue; /* unused taps: adding 0·x changes no sum */
+                for (t = 0; t < ay->taps; ++t) {
+                    const float *r;
+                    double wt = (double)wz[tz] * (double)w[t];
+                    if (w[t] == 0.0f) continue;
+                    r = filtered_row(tex, k, ax, s, iy[t], iz[tz]);
+                    for (i = 0; i < 4 * ax->n_dst; ++i) s->acc[i] += wt * r[i];
+                }
+            }
+            for (i = 0; i < ax->n_dst; ++i) {
+                float v[4];
+                for (c = 0; c < 4; ++c) v[c] = (float)s->acc[4 * (size_t)i + c];
+                ls_tex_encode(tex, v, dst + (size_t)j * D->stride + (size_t)i * tex->texel_bytes);
+            }
         }
     }
 }
@@ -295,7 +313,7 @@ static void drop_levels(sample_texture *tex)
     int k;
     for (k = 1; k < tex->nlevels; ++k) {
         struct sample_level *L = &tex->level[k];
-        tex->bytes -= L->stride * (size_t)L->h;
+        tex->bytes -= L->slice * (size_t)L->d;
         free(L->data);
         memset(L, 0, sizeof *L);
     }
@@ -307,21 +325,27 @@ static sample_status build_level(sample_texture *tex, int k, const sample_mip_pa
                                  sample_error *err)
 {
     const struct sample_level *S = &tex->level[k - 1];
-    mip_axis ax, ay;
+    mip_axis ax, ay, az;
     sample_status st = ls_tex_alloc_level(tex, k, err);
     if (st != SAMPLE_OK) return st;
     tex->nlevels = k + 1;
     memset(&ax, 0, sizeof ax);
     memset(&ay, 0, sizeof ay);
+    memset(&az, 0, sizeof az);
+    /* A one-slice (2D) level's z axis copies (n_src = n_dst = 1), whatever
+     * wrap_r says: only a volume reads it. */
     if (!axis_make(&ax, S->w, tex->level[k].w, p->filter, p->wrap_s, 0) ||
-        !axis_make(&ay, S->h, tex->level[k].h, p->filter, p->wrap_t, 0)) {
+        !axis_make(&ay, S->h, tex->level[k].h, p->filter, p->wrap_t, 0) ||
+        !axis_make(&az, S->d, tex->level[k].d, p->filter, S->d > 1 ? p->wrap_r : SAMPLE_WRAP_CLAMP_TO_EDGE, 0)) {
         axis_free(&ax);
         axis_free(&ay);
+        axis_free(&az);
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate filter taps for level %d", k);
     }
-    resample(tex, k, &ax, &ay, s);
+    resample(tex, k, &ax, &ay, &az, s);
     axis_free(&ax);
     axis_free(&ay);
+    axis_free(&az);
     return SAMPLE_OK;
 }
 
@@ -330,6 +354,7 @@ sample_status ls_mip_build(sample_texture *tex, const sample_mip_params *p, samp
     int k, full = 1, m = tex->width > tex->height ? tex->width : tex->height;
     sample_status st = SAMPLE_OK;
     mip_scratch s;
+    if (tex->depth > m) m = tex->depth; /* a volume's levels go on until its depth is 1 too */
     while (m > 1) { m >>= 1; ++full; }
     if (p->max_levels > 0 && p->max_levels < full) full = p->max_levels;
     if (full < 2) return SAMPLE_OK;

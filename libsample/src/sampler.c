@@ -32,6 +32,7 @@ void sample_mip_params_init(sample_mip_params *p)
     p->filter = SAMPLE_MIPGEN_BOX;
     p->wrap_s = p->wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
     p->max_levels = 0;
+    p->wrap_r = SAMPLE_WRAP_CLAMP_TO_EDGE;
 }
 
 sample_status sample_sampler_validate(const sample_sampler *s)

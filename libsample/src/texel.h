@@ -176,6 +176,7 @@ static inline int tex_level_layers(const sample_texture *tex, int k)
     (void)k;
     switch (tex->kind) {
     case SAMPLE_TEXTURE_CUBE: return 6;
+    case SAMPLE_TEXTURE_3D: return (tex->depth >> k) > 0 ? tex->depth >> k : 1;
     case SAMPLE_TEXTURE_2D:
     default: return 1;
     }
@@ -184,6 +185,11 @@ static inline int tex_level_layers(const sample_texture *tex, int k)
 /* Encode linear RGBA (first `channels` values) into one texel of the
  * texture's format; used by the pyramid builder. */
 void ls_tex_encode(const sample_texture *tex, const float in[4], unsigned char *dst);
+
+/* Checks an image description of `layers` layers (each as `im`: a
+ * volume's slices), the texel bytes of all of them and their pyramid
+ * against the size limit; `what` names it in the message. */
+sample_status ls_tex_check_layers(const sample_image *im, int layers, const char *what, sample_error *err);
 
 /* A texture with no levels yet (no source: resident), its texel size set;
  * NULL if out of memory. */

@@ -45,9 +45,10 @@ static void *tex_level_malloc(size_t bytes) { return malloc(bytes); }
 
 static int level_dim(int n, int k) { return (n >> k) > 0 ? (n >> k) : 1; }
 
-/* Checks an image description; sizes are checked in 64-bit so that no
- * product can overflow before it is compared with the limit. */
-static sample_status check_image(const sample_image *im, const char *what, sample_error *err)
+/* Checks an image description (of `layers` layers); sizes are checked in
+ * 64-bit so that no product can overflow before it is compared with the
+ * limit. */
+sample_status ls_tex_check_layers(const sample_image *im, int layers, const char *what, sample_error *err)
 {
     uint64_t row, total;
     RETURN_ERROR_IF(!im, err, SAMPLE_E_INVALID_ARGUMENT, "%s: image is NULL", what);
@@ -65,12 +66,17 @@ static sample_status check_image(const sample_image *im, const char *what, sampl
     RETURN_ERROR_IF(im->row_stride != 0 && im->row_stride < row, err, SAMPLE_E_BAD_SIZE,
                     "%s: row stride %zu is less than a row (%llu bytes)", what,
                     im->row_stride, (unsigned long long)row);
-    total = row * (uint64_t)im->height;
+    total = row * (uint64_t)im->height * (uint64_t)(layers > 0 ? layers : 1);
     /* A full pyramid adds at most a third of the base level. */
     RETURN_ERROR_IF(total + total / 3 + 64 > SAMPLE_MAX_TEXTURE_BYTES, err, SAMPLE_E_TOO_LARGE,
                     "%s: %llu bytes of texels exceeds the limit of %llu", what,
                     (unsigned long long)total, (unsigned long long)SAMPLE_MAX_TEXTURE_BYTES);
     return SAMPLE_OK;
+}
+
+static sample_status check_image(const sample_image *im, const char *what, sample_error *err)
+{
+    return ls_tex_check_layers(im, 1, what, err);
 }
 
 sample_status ls_tex_alloc_level(sample_texture *tex, int k, sample_error *err)
@@ -235,6 +241,7 @@ void sample_texture_info_get(const sample_texture *tex, sample_texture_info *inf
     info->format = tex->format;
     info->bytes = tex->bytes;
     info->kind = tex->kind;
+    info->depth = tex->depth;
 }
 
 int sample_texture_level_size(const sample_texture *tex, int level, int *w, int *h)

@@ -181,7 +181,8 @@ typedef enum sample_mipgen {
 typedef struct sample_mip_params {
     sample_mipgen filter; /* default SAMPLE_MIPGEN_BOX */
     sample_wrap wrap_s, wrap_t; /* default CLAMP_TO_EDGE */
-    int max_levels;       /* 0 = all the way to 1×1 */
+    int max_levels;       /* 0 = all the way to 1×1 (1×1×1 for a volume) */
+    sample_wrap wrap_r;   /* across a volume's slices; default CLAMP_TO_EDGE */
 } sample_mip_params;
 
 SAMPLE_API void sample_mip_params_init(sample_mip_params *params);
@@ -240,6 +241,7 @@ typedef struct sample_texture_info {
     sample_format format;
     size_t bytes; /* texel memory held, all levels */
     sample_texture_kind kind;
+    int depth; /* slices of level 0: 1 but for a 3D texture */
 } sample_texture_info;
 
 SAMPLE_API void sample_texture_info_get(const sample_texture *tex, sample_texture_info *info);
@@ -414,6 +416,57 @@ SAMPLE_API sample_status sample_batch_cube(const sample_texture *tex, const samp
  * The sampler's wrap modes are not used. Bad input as sample_batch_cube. */
 SAMPLE_API sample_status sample_batch_latlong(const sample_texture *tex, const sample_sampler *sampler,
                                               const sample_batch3_args *args);
+/* ---- 3D textures (doc/volumes.md) --------------------------------------
+ *
+ * A 3D texture (SAMPLE_TEXTURE_3D, GL_TEXTURE_3D) is w × h × d texels:
+ * texel (i, j, k) has its centre at ((i + ½)/w, (j + ½)/h, (k + ½)/d) in
+ * (s, t, r); slice k = 0 is at r = 0. Level k is max(1, ⌊w/2^k⌋) ×
+ * max(1, ⌊h/2^k⌋) × max(1, ⌊d/2^k⌋), down to 1 × 1 × 1, built on linear
+ * values as 2D pyramids are (box; polyphase box on odd axes; the sinc
+ * kernels), mip->wrap_r deciding what a kernel reads past r's edges.
+ *
+ * Queries are sample_query3: p = (s, t, r), dpdx and dpdy the columns of
+ * the 3 × 2 Jacobian (GLSL textureGrad(sampler3D, P, dPdx, dPdy)). λ uses
+ * ρ over all three components (GL 4.6 §8.14.1: the longer of the
+ * texel-space columns (w·ds, h·dt, d·dr)); every min and mag filter,
+ * bias, clamp, base/max level and border colour is the sampler's, with
+ * wrap_r on r. LINEAR is trilinear within a level (eq. 8.11), CUBIC
+ * tricubic (4 × 4 × 4 texels). The footprint filters integrate over the
+ * flat patch a pixel's footprint is inside the volume (the parallelogram
+ * spanned by dpdx and dpdy). 3D textures are sampled one query at a time
+ * (no vector fast path); results are deterministic as in section 6. */
+
+/* A caller-owned volume: `depth` slices of width × height texels. */
+typedef struct sample_volume {
+    int width, height, depth;
+    int channels;          /* 1 to 4 */
+    sample_format format;
+    const void *data;      /* slice 0 (r = 0) first, each slice row 0 first */
+    size_t row_stride;     /* bytes between rows; 0 means tightly packed */
+    size_t slice_stride;   /* bytes between slices; 0 means row_stride × height */
+} sample_volume;
+
+/* Copy `volume` into a new 3D texture and, unless mip is NULL or
+ * mip->filter is SAMPLE_MIPGEN_NONE, build its pyramid. */
+SAMPLE_API sample_status sample_texture_create_3d(const sample_volume *volume, const sample_mip_params *mip,
+                                                  sample_texture **out, sample_error *err);
+/* A 3D texture from caller-supplied levels: levels[k] must be
+ * max(1, ⌊w/2^k⌋) × max(1, ⌊h/2^k⌋) × max(1, ⌊d/2^k⌋), the channel count
+ * and format of levels[0]; a partial chain is allowed. */
+SAMPLE_API sample_status sample_texture_create_3d_levels(const sample_volume *levels, int count,
+                                                         sample_texture **out, sample_error *err);
+/* Size of level k of any texture (d is 1 for 2D); 0 and zeros if k is out
+ * of range. */
+SAMPLE_API int sample_texture_level_size3(const sample_texture *tex, int level, int *w, int *h, int *d);
+/* A volume's texel (i, j) of slice k is sample_texture_texel_layer's
+ * layer k. */
+
+/* Sample `count` queries of a 3D texture (SAMPLE_E_INVALID_ARGUMENT for
+ * another kind). A query whose p, dpdx, dpdy or bias holds NaN or ±inf
+ * returns the border colour; footprint filters read at most
+ * SAMPLE_MAX_FOOTPRINT_TEXELS texels. */
+SAMPLE_API sample_status sample_batch_3d(const sample_texture *tex, const sample_sampler *sampler,
+                                         const sample_batch3_args *args);
 
 /* One query; a thin wrapper over sample_batch(). */
 SAMPLE_API sample_status sample_one(const sample_texture *tex, const sample_sampler *sampler,

@@ -11,6 +11,7 @@
  *   ocio.cpp        OpenColorIO: config, name resolution, conversions
  *   exr_mip.cpp     OpenEXR: tiled mip-mapped writer
  *   exr_read.cpp    OpenEXR: direct reader of tiled mip-mapped files
+ *   io_volume.c, oiio_volume.cpp  volume images (3D textures)
  */
 #ifndef SAMPLE_IO_INTERNAL_H
 #define SAMPLE_IO_INTERNAL_H
@@ -25,6 +26,16 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* ---- Volumes (oiio_volume.cpp) ------------------------------------------- */
+
+/* A volume image's texels as float, slice after slice (x fastest, then y,
+ * then z), its first `channels` (≤ 4) channels; data malloc'd (free it). */
+typedef struct io_volume {
+    int width, height, depth, channels;
+    float *data;
+} io_volume;
+sample_status io_oiio_read_volume(const char *path, io_volume *v, sample_error *err);
 
 /* ---- Reader (oiio_read.cpp) --------------------------------------------- */
 

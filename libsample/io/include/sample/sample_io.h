@@ -133,6 +133,17 @@ SAMPLE_IO_API sample_status sample_io_read_memory(const void *data, size_t size,
                                     const sample_io_options *o, const sample_mip_params *mip,
                                     sample_texture **out, sample_error *err);
 
+/* Read a volume image into a new 3D texture (doc/volumes.md): the
+ * subimages of a multi-page TIFF or a multi-part OpenEXR, all of one size,
+ * are its slices (subimage k is slice k, at r = (k + ½)/d), or an image
+ * with a depth of its own (a volumetric TIFF) its z extent. Its first four
+ * channels are read as float32 as stored — volumes hold data (densities,
+ * noise, baked solid textures), so no colour conversion is made; 8- and
+ * 16-bit files read as value / (2^n − 1). `mip` builds the pyramid (NULL:
+ * the base level only). */
+SAMPLE_IO_API sample_status sample_io_read_volume(const char *path, const sample_mip_params *mip,
+                                                  sample_texture **out, sample_error *err);
+
 /* Is `path` a regular file that can be opened for reading? SAMPLE_OK, or
  * SAMPLE_E_IO with a message naming `what` ("image", "scene", "OCIO
  * config"; NULL: "file"), the path and what it is instead (a directory, a
