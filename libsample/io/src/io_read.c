@@ -196,31 +196,39 @@ static void premultiply(float *px, size_t n, int nchan, int alpha)
             if (c != alpha) px[c] *= px[alpha];
 }
 
-/* Read level k into a fresh buffer in the texture's storage format. */
-static sample_status read_level(io_source *r, const io_colour *col, const io_plan *p, int k, int w, int h,
-                                void **out, sample_error *err)
+sample_status io_plan_apply(const io_colour *col, const io_plan *p, void *buf, size_t n, sample_error *err)
 {
-    size_t n = (size_t)w * (size_t)h, values = n * (size_t)p->nchan, i;
-    size_t bytes = values * (p->read_as == IO_U8 ? 1 : p->read_as == IO_HALF ? 2 : 4);
-    unsigned char *buf = malloc(bytes ? bytes : 1);
-    sample_status st;
-    *out = NULL;
-    if (!buf) return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
-    st = src_read(r, k, p->read_as, p->nchan, buf, err);
-    if (st == SAMPLE_OK && p->convert)
-        st = io_colour_apply(col, p->colorspace, 1, (float *)(void *)buf, n, p->nchan, err);
-    if (st == SAMPLE_OK && p->premultiply) premultiply((float *)(void *)buf, n, p->nchan, p->alpha);
+    unsigned char *b = (unsigned char *)buf;
+    size_t values = n * (size_t)p->nchan, i;
+    sample_status st = SAMPLE_OK;
+    if (p->convert) st = io_colour_apply(col, p->colorspace, 1, (float *)buf, n, p->nchan, err);
+    if (st == SAMPLE_OK && p->premultiply) premultiply((float *)buf, n, p->nchan, p->alpha);
     if (st == SAMPLE_OK && p->read_as == IO_FLOAT && p->format == SAMPLE_FORMAT_F16) {
         /* Narrow in place: half i (bytes 2i, 2i+1) never overwrites a float
          * not yet read (bytes 4j.. for j ≥ i). */
         for (i = 0; i < values; ++i) {
             float f;
             uint16_t hv;
-            memcpy(&f, buf + 4 * i, 4);
+            memcpy(&f, b + 4 * i, 4);
             hv = sample_float_to_half(f);
-            memcpy(buf + 2 * i, &hv, 2);
+            memcpy(b + 2 * i, &hv, 2);
         }
     }
+    return st;
+}
+
+/* Read level k into a fresh buffer in the texture's storage format. */
+static sample_status read_level(io_source *r, const io_colour *col, const io_plan *p, int k, int w, int h,
+                                void **out, sample_error *err)
+{
+    size_t n = (size_t)w * (size_t)h, values = n * (size_t)p->nchan;
+    size_t bytes = values * (p->read_as == IO_U8 ? 1 : p->read_as == IO_HALF ? 2 : 4);
+    unsigned char *buf = malloc(bytes ? bytes : 1);
+    sample_status st;
+    *out = NULL;
+    if (!buf) return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
+    st = src_read(r, k, p->read_as, p->nchan, buf, err);
+    if (st == SAMPLE_OK) st = io_plan_apply(col, p, buf, n, err);
     if (st != SAMPLE_OK) {
         free(buf);
         return st;
