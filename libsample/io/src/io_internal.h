@@ -98,6 +98,11 @@ sample_status io_read_plan(const io_colour *col, const io_reader_info *inf, cons
  * premultiplication and the narrowing to half the plan asks for. Whole
  * levels (io_read.c) and single tiles (texsys.c) go through it alike. */
 sample_status io_plan_apply(const io_colour *col, const io_plan *p, void *buf, size_t n, sample_error *err);
+/* sample_io_read_texture with an OCIO config already loaded (the
+ * texture system reads files whole with its own); o->ocio_config is not
+ * used. */
+sample_status io_read_texture_col(const char *path, const io_colour *col, const sample_io_options *o,
+                                  const sample_mip_params *mip, sample_texture **out, sample_error *err);
 /* io_describe.c: what the file says (inf) and what the plan made of it,
  * into info; the level sizes are left 0 and texture_file_levels 1. */
 void io_file_info_fill(const io_reader_info *inf, const io_plan *p, sample_io_file_info *info);

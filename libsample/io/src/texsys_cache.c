@@ -260,13 +260,10 @@ static ts_tile *load_whole(ts_file *f, int lv, int tx, int ty, sample_error *err
     ts_tile *want = NULL;
     int k, x, y;
     sample_io_options_init(&o);
-    o.ocio_config = sys->ocio_config;
     o.colorspace = sys->colorspace;
     o.mip_wrap_from_file = 1;
     sample_mip_params_init(&mip);
-    if (sample_io_check_regular_file(f->path, "texture", err) != SAMPLE_OK ||
-        sample_io_read_texture(f->path, &o, &mip, &tex, err) != SAMPLE_OK)
-        return NULL;
+    if (io_read_texture_col(f->path, sys->col, &o, &mip, &tex, err) != SAMPLE_OK) return NULL;
     pthread_mutex_lock(&sys->lock);
     sys->st.files_opened++;
     pthread_mutex_unlock(&sys->lock);
