@@ -10,8 +10,11 @@ if(TARGET sample_io)
       ${PROJECT_SOURCE_DIR}/libsample/src)
     target_compile_options(${name} PRIVATE ${SAMPLE_WARNINGS})
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/${name}_scratch)
+    # texsys_cache also runs `texsample lookup --cache-mb` (an empty
+    # argument where texsample is not built: that part skipped).
     add_test(NAME ${name} COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec \"$0\" \"$@\""
-      $<TARGET_FILE:${name}> ${PROJECT_SOURCE_DIR}/testimages ${scratch})
-    set_tests_properties(${name} PROPERTIES TIMEOUT 120 ENVIRONMENT "OCIO=;${SAMPLE_IO_SAN_ENV}")
+      $<TARGET_FILE:${name}> ${PROJECT_SOURCE_DIR}/testimages ${scratch}
+      "$<$<TARGET_EXISTS:texsample>:$<TARGET_FILE:texsample>>")
+    set_tests_properties(${name} PROPERTIES TIMEOUT 120 SKIP_RETURN_CODE 77 ENVIRONMENT "OCIO=;${SAMPLE_IO_SAN_ENV}")
   endforeach()
 endif()

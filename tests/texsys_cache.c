@@ -14,6 +14,9 @@
 #include "texsys_internal.h" /* io_texsys_fail_allocs */
 
 #include <fcntl.h>
+#include <sys/wait.h>
+
+static const char *texsample; /* the image program, or NULL (that part skipped) */
 
 enum { NQ = 96 };
 
@@ -459,11 +462,55 @@ static void test_bad_arguments(void)
     sample_texsys_destroy(NULL);
 }
 
+static int run_texsample(const char *args)
+{
+    char cmd[4096];
+    int st;
+    snprintf(cmd, sizeof cmd, "cd '%s' && OCIO= timeout 20 '%s' %s >out.txt 2>err.txt", io_scratch, texsample, args);
+    st = system(cmd);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* texsample lookup --cache-mb: the results of the whole texture loaded,
+ * bit for bit, through a cache of a fraction of it; usage errors exit 2. */
+static void test_lookup_cli(void)
+{
+    static float q[NQ * 6], a[NQ * 4], b[NQ * 4];
+    char path[1024];
+    FILE *f;
+    size_t i;
+    sample_texture *src;
+    if (!texsample) {
+        check_skip("texsample is not built");
+        return;
+    }
+    src = io_test_texture(100, 70, 4, SAMPLE_FORMAT_F16, 5, SAMPLE_MIPGEN_BOX, 0);
+    ts_write(io_path(path, sizeof path, io_scratch, "cli.exr"), src, 16, SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_CLAMP_TO_EDGE,
+             0);
+    sample_texture_destroy(src);
+    ts_queries((sample_query *)(void *)q, NQ);
+    f = fopen(io_path(path, sizeof path, io_scratch, "cli_q.raw"), "wb");
+    CHECK(f && fwrite(q, sizeof q, 1, f) == 1, "queries");
+    if (f) fclose(f);
+    CHECK(run_texsample("lookup --image cli.exr --queries cli_q.raw --out a.raw --filter trilinear") == 0, "plain");
+    CHECK(run_texsample("lookup --image cli.exr --queries cli_q.raw --out b.raw --filter trilinear --cache-mb 0.02 "
+                        "--stats") == 0,
+          "cached");
+    for (i = 0; i < 2; ++i) {
+        f = fopen(io_path(path, sizeof path, io_scratch, i ? "b.raw" : "a.raw"), "rb");
+        CHECK(f && fread(i ? b : a, sizeof a, 1, f) == 1, "read results");
+        if (f) fclose(f);
+    }
+    CHECK(!memcmp(a, b, sizeof a), "lookup --cache-mb differs from lookup");
+    CHECK(run_texsample("lookup --raw x.raw --w 1 --h 1 --queries cli_q.raw --cache-mb 1") == 2, "--raw refused");
+}
+
 int main(int argc, char **argv)
 {
-    if (argc < 3) return fprintf(stderr, "usage: texsys_cache TESTIMAGES SCRATCH\n"), 2;
+    if (argc < 3) return fprintf(stderr, "usage: texsys_cache TESTIMAGES SCRATCH [TEXSAMPLE]\n"), 2;
     io_images = argv[1];
     io_scratch = argv[2];
+    texsample = argc > 3 && argv[3][0] ? argv[3] : NULL;
     RUN(test_same_bits);
     RUN(test_truncated);
     RUN(test_gone_and_unreadable);
@@ -472,5 +519,6 @@ int main(int argc, char **argv)
     RUN(test_independent_systems);
     RUN(test_udim);
     RUN(test_bad_arguments);
+    RUN(test_lookup_cli);
     return check_finish();
 }
