@@ -493,7 +493,7 @@ static void test_lookup_cli(void)
     CHECK(f && fwrite(q, sizeof q, 1, f) == 1, "queries");
     if (f) fclose(f);
     CHECK(run_texsample("lookup --image cli.exr --queries cli_q.raw --out a.raw --filter trilinear") == 0, "plain");
-    CHECK(run_texsample("lookup --image cli.exr --queries cli_q.raw --out b.raw --filter trilinear --cache-mb 0.02 "
+    CHECK(run_texsample("lookup --image cli.exr --queries cli_q.raw --out b.raw --filter trilinear --cache-mb 0.004 "
                         "--stats") == 0,
           "cached");
     for (i = 0; i < 2; ++i) {

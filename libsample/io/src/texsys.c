@@ -171,7 +171,7 @@ static sample_status open_new(sample_texsys *sys, const char *path, ts_file **ou
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture entry");
     }
     f->h.sys = sys;
-    pthread_mutex_init(&f->io_lock, NULL);
+    io_ts_lock_init(&f->io_lock);
     st = sample_io_check_regular_file(path, "texture", err);
     if (st == SAMPLE_OK) st = io_preflight(path, NULL, 0, err);
     if (st == SAMPLE_OK) st = io_reader_open(path, NULL, 0, NULL, &r, err);

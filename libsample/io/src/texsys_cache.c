@@ -12,6 +12,46 @@
  * its texels read as the fill colour (texel.h: NULL). */
 static ts_tile ts_failed;
 
+void io_ts_lock_init(ts_lock *l)
+{
+    pthread_mutex_init(&l->m, NULL);
+    pthread_cond_init(&l->c, NULL);
+    l->next = l->serving = 0;
+}
+
+void io_ts_lock_destroy(ts_lock *l)
+{
+    pthread_mutex_destroy(&l->m);
+    pthread_cond_destroy(&l->c);
+}
+
+void io_ts_lock(ts_lock *l)
+{
+    unsigned long mine;
+    pthread_mutex_lock(&l->m);
+    mine = l->next++;
+    while (l->serving != mine) pthread_cond_wait(&l->c, &l->m);
+    pthread_mutex_unlock(&l->m);
+}
+
+int io_ts_trylock(ts_lock *l)
+{
+    int taken;
+    pthread_mutex_lock(&l->m);
+    taken = l->next == l->serving;
+    if (taken) l->next++;
+    pthread_mutex_unlock(&l->m);
+    return taken;
+}
+
+void io_ts_unlock(ts_lock *l)
+{
+    pthread_mutex_lock(&l->m);
+    l->serving++;
+    pthread_cond_broadcast(&l->c);
+    pthread_mutex_unlock(&l->m);
+}
+
 /* The memory held now, and the most ever held (sys->lock held). */
 static void note_memory(sample_texsys *sys)
 {
@@ -184,8 +224,8 @@ static int close_lru_reader(sample_texsys *sys, const ts_file *f)
     for (g = sys->files; g; g = g->next) {
         if (g == f || !g->open) continue;
         if (best && g->last_open >= best->last_open) continue;
-        if (pthread_mutex_trylock(&g->io_lock) != 0) continue;
-        if (best) pthread_mutex_unlock(&best->io_lock);
+        if (!io_ts_trylock(&g->io_lock)) continue;
+        if (best) io_ts_unlock(&best->io_lock);
         best = g;
     }
     if (!best) return 0;
@@ -193,7 +233,7 @@ static int close_lru_reader(sample_texsys *sys, const ts_file *f)
     best->reader = NULL;
     best->open = 0;
     sys->open_files--;
-    pthread_mutex_unlock(&best->io_lock);
+    io_ts_unlock(&best->io_lock);
     return 1;
 }
 
@@ -347,7 +387,7 @@ static SAMPLE_NOINLINE ts_tile *ts_miss(ts_file *f, int lv, int tx, int ty, size
     pthread_mutex_lock(&sys->lock);
     sys->st.misses++;
     pthread_mutex_unlock(&sys->lock);
-    pthread_mutex_lock(&f->io_lock);
+    io_ts_lock(&f->io_lock);
     t = atomic_load_explicit(&f->slots[lv][slot], memory_order_acquire);
     if (!t) {
         memset(&err, 0, sizeof err);
@@ -358,7 +398,7 @@ static SAMPLE_NOINLINE ts_tile *ts_miss(ts_file *f, int lv, int tx, int ty, size
             atomic_store_explicit(&f->slots[lv][slot], t, memory_order_release);
         }
     }
-    pthread_mutex_unlock(&f->io_lock);
+    io_ts_unlock(&f->io_lock);
     return t;
 }
 
@@ -421,7 +461,7 @@ void ts_file_free(ts_file *f)
     if (f->open) sys->open_files--;
     io_reader_close(f->reader);
     if (f->tex) sample_texture_destroy(f->tex);
-    pthread_mutex_destroy(&f->io_lock);
+    io_ts_lock_destroy(&f->io_lock);
     free(f->path);
     free(f);
 }

@@ -35,6 +35,23 @@
 
 typedef struct ts_file ts_file;
 
+/* A first-come, first-served lock (a ticket lock over a mutex and a
+ * condition): a thread that misses waits behind at most one load per
+ * other thread. With an unfair mutex one thread can load tile after tile
+ * while another, its batch's epoch still open, waits — and every tile the
+ * first evicts meanwhile stays allocated (doc/texture-system.md,
+ * "Memory"). */
+typedef struct ts_lock {
+    pthread_mutex_t m;
+    pthread_cond_t c;
+    unsigned long next, serving;
+} ts_lock;
+void io_ts_lock_init(ts_lock *l);
+void io_ts_lock_destroy(ts_lock *l);
+void io_ts_lock(ts_lock *l);
+int io_ts_trylock(ts_lock *l); /* 1: taken */
+void io_ts_unlock(ts_lock *l);
+
 /* What every texture of a system has first: its texel source, the system
  * (the epoch hooks find it here) and whether it is a UDIM set. */
 typedef struct ts_head {
@@ -66,7 +83,7 @@ struct ts_file {
     io_plan plan;
     int has_wrap;
     sample_wrap wrap_s, wrap_t;
-    pthread_mutex_t io_lock;
+    ts_lock io_lock;
     io_reader *reader;  /* io_lock; NULL: closed */
     int open;           /* sys->lock: counted among the open files */
     uint64_t last_open; /* sys->lock: when its reader was last used */
