@@ -36,12 +36,14 @@
  *
  * 3. UDIM
  *
- *   A name holding <UDIM>, <u>_<v>, <U>_<V> or <uvtile> names a set of
- *   files, tile (u, v) (0-based, u < 10) being 1001 + u + 10 v, "u(u+1)_v(v+1)",
- *   "u(u)_v(v)" or "u(u+1)_v(v+1)" respectively. sample_texsys_batch resolves
- *   each query's tile from floor(s), floor(t) (OpenImageIO's rule); a
+ *   A name holding <UDIM>, <u>, <v>, <U>, <V> or <uvtile> names a set of
+ *   files: tile (u, v) (0-based, u and v below 10) has <UDIM> = 1001 + u +
+ *   10 v, <u> = "u" u and <v> = "v" v (0-based), <U> = "u" (u + 1) and
+ *   <V> = "v" (v + 1) (1-based), <uvtile> = <U>_<V>. sample_texsys_batch
+ *   resolves each query's tile from floor(s), floor(t) (OpenImageIO's
+ *   rule): the set is one virtual texture of its tiles side by side, so a
  *   footprint that crosses a tile's edge continues into the neighbouring
- *   tile; a query in a tile the set lacks reads the fill colour.
+ *   tile, and a tile the set lacks reads the fill colour.
  *
  * 4. FAILURES
  *
@@ -51,11 +53,13 @@
  *   (sample_texsys_texture_error, sample_texsys_stats_get) and the tile is
  *   not tried again. Nothing crashes; sampling never fails for it.
  *
- * 5. THREADS
+ * 5. MEMORY AND THREADS
  *
- *   Every function may be called from any thread at once, except
- *   sample_texsys_destroy, which must run alone. Two systems share
- *   nothing.
+ *   Tiles held never exceed max_memory_mb; above it lie only tiles evicted
+ *   while a batch that may still read them runs (doc/texture-system.md,
+ *   "Memory": sample_texsys_batch keeps them few). Every function may be
+ *   called from any thread at once, except sample_texsys_destroy, which
+ *   must run alone. Two systems share nothing.
  */
 #ifndef SAMPLE_TEXSYS_H
 #define SAMPLE_TEXSYS_H
