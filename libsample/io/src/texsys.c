@@ -68,12 +68,12 @@ void sample_texsys_destroy(sample_texsys *sys)
 {
     ts_file *f, *next;
     if (!sys) return;
-    ts_udim_free_all(sys);
+    io_ts_udim_free_all(sys);
     for (f = sys->files; f; f = next) {
         next = f->next;
-        ts_file_free(f);
+        io_ts_file_free(f);
     }
-    ts_cache_drain(sys);
+    io_ts_cache_drain(sys);
     io_colour_close(sys->col);
     pthread_mutex_destroy(&sys->lock);
     pthread_mutex_destroy(&sys->open_lock);
@@ -156,7 +156,7 @@ static sample_status describe(ts_file *f, io_reader *r, sample_error *err)
     }
     tex->source = &f->h.base;
     f->tex = tex;
-    return ts_file_source_init(f, err);
+    return io_ts_file_source_init(f, err);
 }
 
 /* A new file entry for path: header read, reader closed again (tiles
@@ -182,7 +182,7 @@ static sample_status open_new(sample_texsys *sys, const char *path, ts_file **ou
     io_reader_close(r);
     if (st != SAMPLE_OK) {
         pthread_mutex_lock(&sys->lock);
-        ts_file_free(f);
+        io_ts_file_free(f);
         pthread_mutex_unlock(&sys->lock);
         return st;
     }
@@ -196,7 +196,7 @@ static sample_status open_new(sample_texsys *sys, const char *path, ts_file **ou
 }
 
 /* open_lock held. */
-sample_status ts_open_file(sample_texsys *sys, const char *path, ts_file **out, sample_error *err)
+sample_status io_ts_open_file(sample_texsys *sys, const char *path, ts_file **out, sample_error *err)
 {
     ts_file *f;
     for (f = sys->files; f; f = f->next)
@@ -217,10 +217,10 @@ sample_status sample_texsys_open(sample_texsys *sys, const char *filename, const
     if (!sys || !filename || !*filename)
         return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_open: no system or no name");
     pthread_mutex_lock(&sys->open_lock);
-    if (ts_udim_pattern(filename)) {
-        st = ts_udim_open(sys, filename, tex, err);
+    if (io_ts_udim_pattern(filename)) {
+        st = io_ts_udim_open(sys, filename, tex, err);
     } else {
-        st = ts_open_file(sys, filename, &f, err);
+        st = io_ts_open_file(sys, filename, &f, err);
         if (st == SAMPLE_OK) *tex = f->tex;
     }
     pthread_mutex_unlock(&sys->open_lock);
@@ -231,7 +231,7 @@ sample_status sample_texsys_open(sample_texsys *sys, const char *filename, const
 static ts_file *file_of(const sample_texsys *sys, const sample_texture *tex)
 {
     const ts_head *h;
-    if (!sys || !tex || !tex->source || tex->source->reads_begin != ts_reads_begin) return NULL;
+    if (!sys || !tex || !tex->source || tex->source->reads_begin != io_ts_reads_begin) return NULL;
     h = (const ts_head *)tex->source;
     return h->sys == sys && !h->udim ? (ts_file *)(uintptr_t)h : NULL;
 }
@@ -240,7 +240,7 @@ sample_status sample_texsys_texture_info(sample_texsys *sys, const sample_textur
                                          sample_error *err)
 {
     ts_file *f = file_of(sys, tex);
-    ts_udim *u = f ? NULL : ts_udim_of(sys, tex);
+    ts_udim *u = f ? NULL : io_ts_udim_of(sys, tex);
     if (!info) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_texture_info: info is NULL");
     memset(info, 0, sizeof *info);
     if (!f && !u) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "not a texture of this texture system");
@@ -251,7 +251,7 @@ sample_status sample_texsys_texture_info(sample_texsys *sys, const sample_textur
     info->format = tex->format;
     info->kind = tex->kind;
     if (u) {
-        ts_udim_info(u, info);
+        io_ts_udim_info(u, info);
         return SAMPLE_OK;
     }
     info->tile_size = 1 << f->log2;
@@ -271,13 +271,13 @@ void sample_texsys_sampler_init(sample_texsys *sys, const sample_texture *tex, s
     if (f && f->has_wrap) {
         s->wrap_s = f->wrap_s;
         s->wrap_t = f->wrap_t;
-    } else if (!f && ts_udim_of(sys, tex)) {
+    } else if (!f && io_ts_udim_of(sys, tex)) {
         s->wrap_s = s->wrap_t = SAMPLE_WRAP_CLAMP_TO_BORDER;
         memcpy(s->border_color, sys->o.fill, sizeof s->border_color);
     }
 }
 
-sample_status ts_batch_chunks(const sample_texture *tex, const sample_sampler *s, const sample_batch_args *a,
+sample_status io_ts_batch_chunks(const sample_texture *tex, const sample_sampler *s, const sample_batch_args *a,
                               void (*map)(void *ctx, sample_batch_args *b, size_t i0), void *ctx)
 {
     size_t i0;
@@ -304,21 +304,21 @@ sample_status sample_texsys_batch(sample_texsys *sys, const sample_texture *tex,
                                   const sample_batch_args *args)
 {
     ts_udim *u;
-    if (file_of(sys, tex)) return ts_batch_chunks(tex, s, args, NULL, NULL);
-    if ((u = ts_udim_of(sys, tex)) != NULL) return ts_udim_batch(u, s, args);
+    if (file_of(sys, tex)) return io_ts_batch_chunks(tex, s, args, NULL, NULL);
+    if ((u = io_ts_udim_of(sys, tex)) != NULL) return io_ts_udim_batch(u, s, args);
     return SAMPLE_E_INVALID_ARGUMENT;
 }
 
 unsigned long sample_texsys_texture_error(sample_texsys *sys, const sample_texture *tex, sample_error *first)
 {
     ts_file *f = file_of(sys, tex);
-    ts_udim *u = f ? NULL : ts_udim_of(sys, tex);
+    ts_udim *u = f ? NULL : io_ts_udim_of(sys, tex);
     unsigned long n = 0;
     if (first) memset(first, 0, sizeof *first);
     if (!f && !u) return 0;
     pthread_mutex_lock(&sys->lock);
     if (u) {
-        n = ts_udim_errors(u, first);
+        n = io_ts_udim_errors(u, first);
     } else {
         n = f->nerrors;
         if (first && n) *first = f->first_error;

@@ -19,13 +19,13 @@ void io_ts_lock_init(ts_lock *l)
     l->next = l->serving = 0;
 }
 
-void io_ts_lock_destroy(ts_lock *l)
+static void ts_lock_destroy(ts_lock *l)
 {
     pthread_mutex_destroy(&l->m);
     pthread_cond_destroy(&l->c);
 }
 
-void io_ts_lock(ts_lock *l)
+static void ts_lock_take(ts_lock *l)
 {
     unsigned long mine;
     pthread_mutex_lock(&l->m);
@@ -34,7 +34,7 @@ void io_ts_lock(ts_lock *l)
     pthread_mutex_unlock(&l->m);
 }
 
-int io_ts_trylock(ts_lock *l)
+static int ts_trylock(ts_lock *l)
 {
     int taken;
     pthread_mutex_lock(&l->m);
@@ -44,7 +44,7 @@ int io_ts_trylock(ts_lock *l)
     return taken;
 }
 
-void io_ts_unlock(ts_lock *l)
+static void ts_unlock(ts_lock *l)
 {
     pthread_mutex_lock(&l->m);
     l->serving++;
@@ -93,7 +93,7 @@ static void ts_advance(sample_texsys *sys)
     note_memory(sys);
 }
 
-uintptr_t ts_reads_begin(const struct ls_texel_source *src)
+uintptr_t io_ts_reads_begin(const struct ls_texel_source *src)
 {
     sample_texsys *sys = ((const ts_head *)src)->sys;
     uint64_t ticket;
@@ -104,7 +104,7 @@ uintptr_t ts_reads_begin(const struct ls_texel_source *src)
     return (uintptr_t)ticket;
 }
 
-void ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket)
+void io_ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket)
 {
     sample_texsys *sys = ((const ts_head *)src)->sys;
     pthread_mutex_lock(&sys->lock);
@@ -113,7 +113,7 @@ void ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket)
     pthread_mutex_unlock(&sys->lock);
 }
 
-void ts_cache_drain(sample_texsys *sys)
+void io_ts_cache_drain(sample_texsys *sys)
 {
     free_retired(sys, 0);
     free_retired(sys, 1);
@@ -205,7 +205,7 @@ static void ts_publish(ts_file *f, ts_tile *t, size_t texel_bytes)
     pthread_mutex_unlock(&sys->lock);
 }
 
-void ts_record_error(ts_file *f, const sample_error *e)
+static void ts_record_error(ts_file *f, const sample_error *e)
 {
     sample_texsys *sys = f->h.sys;
     pthread_mutex_lock(&sys->lock);
@@ -224,8 +224,8 @@ static int close_lru_reader(sample_texsys *sys, const ts_file *f)
     for (g = sys->files; g; g = g->next) {
         if (g == f || !g->open) continue;
         if (best && g->last_open >= best->last_open) continue;
-        if (!io_ts_trylock(&g->io_lock)) continue;
-        if (best) io_ts_unlock(&best->io_lock);
+        if (!ts_trylock(&g->io_lock)) continue;
+        if (best) ts_unlock(&best->io_lock);
         best = g;
     }
     if (!best) return 0;
@@ -233,11 +233,11 @@ static int close_lru_reader(sample_texsys *sys, const ts_file *f)
     best->reader = NULL;
     best->open = 0;
     sys->open_files--;
-    io_ts_unlock(&best->io_lock);
+    ts_unlock(&best->io_lock);
     return 1;
 }
 
-sample_status ts_reader_acquire(ts_file *f, sample_error *err)
+static sample_status ts_reader_acquire(ts_file *f, sample_error *err)
 {
     sample_texsys *sys = f->h.sys;
     sample_status st;
@@ -387,7 +387,7 @@ static SAMPLE_NOINLINE ts_tile *ts_miss(ts_file *f, int lv, int tx, int ty, size
     pthread_mutex_lock(&sys->lock);
     sys->st.misses++;
     pthread_mutex_unlock(&sys->lock);
-    io_ts_lock(&f->io_lock);
+    ts_lock_take(&f->io_lock);
     t = atomic_load_explicit(&f->slots[lv][slot], memory_order_acquire);
     if (!t) {
         memset(&err, 0, sizeof err);
@@ -398,7 +398,7 @@ static SAMPLE_NOINLINE ts_tile *ts_miss(ts_file *f, int lv, int tx, int ty, size
             atomic_store_explicit(&f->slots[lv][slot], t, memory_order_release);
         }
     }
-    io_ts_unlock(&f->io_lock);
+    ts_unlock(&f->io_lock);
     return t;
 }
 
@@ -422,14 +422,14 @@ static const unsigned char *ts_texel(const struct ls_texel_source *src, int lv, 
 /* The texture's destroy hook does nothing: the system owns the file. */
 static void ts_source_destroy(struct ls_texel_source *src) { (void)src; }
 
-sample_status ts_file_source_init(ts_file *f, sample_error *err)
+sample_status io_ts_file_source_init(ts_file *f, sample_error *err)
 {
     const int side = 1 << f->log2;
     int lv;
     f->h.base.texel = ts_texel;
     f->h.base.destroy = ts_source_destroy;
-    f->h.base.reads_begin = ts_reads_begin;
-    f->h.base.reads_end = ts_reads_end;
+    f->h.base.reads_begin = io_ts_reads_begin;
+    f->h.base.reads_end = io_ts_reads_end;
     memcpy(f->h.base.fill, f->h.sys->o.fill, sizeof f->h.base.fill);
     for (lv = 0; lv < f->tex->nlevels; ++lv) {
         const struct sample_level *L = &f->tex->level[lv];
@@ -442,7 +442,7 @@ sample_status ts_file_source_init(ts_file *f, sample_error *err)
 }
 
 /* Its tiles (resident ones leave the ring), tables, reader, texture. */
-void ts_file_free(ts_file *f)
+void io_ts_file_free(ts_file *f)
 {
     sample_texsys *sys = f->h.sys;
     int lv;
@@ -461,7 +461,7 @@ void ts_file_free(ts_file *f)
     if (f->open) sys->open_files--;
     io_reader_close(f->reader);
     if (f->tex) sample_texture_destroy(f->tex);
-    io_ts_lock_destroy(&f->io_lock);
+    ts_lock_destroy(&f->io_lock);
     free(f->path);
     free(f);
 }

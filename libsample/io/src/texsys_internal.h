@@ -46,11 +46,7 @@ typedef struct ts_lock {
     pthread_cond_t c;
     unsigned long next, serving;
 } ts_lock;
-void io_ts_lock_init(ts_lock *l);
-void io_ts_lock_destroy(ts_lock *l);
-void io_ts_lock(ts_lock *l);
-int io_ts_trylock(ts_lock *l); /* 1: taken */
-void io_ts_unlock(ts_lock *l);
+void io_ts_lock_init(ts_lock *l); /* the rest is texsys_cache.c's */
 
 /* What every texture of a system has first: its texel source, the system
  * (the epoch hooks find it here) and whether it is a UDIM set. */
@@ -115,18 +111,13 @@ struct sample_texsys {
 /* texsys_cache.c */
 /* Fill a file's source: its hooks, fill colour and tile tables for the
  * levels of f->tex. */
-sample_status ts_file_source_init(ts_file *f, sample_error *err);
-void ts_file_free(ts_file *f);
+sample_status io_ts_file_source_init(ts_file *f, sample_error *err);
+void io_ts_file_free(ts_file *f);
 /* The epoch hooks every texture of a system shares. */
-uintptr_t ts_reads_begin(const struct ls_texel_source *src);
-void ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket);
-/* An open reader for f (io_lock held), closing another file's if the
- * limit is reached. */
-sample_status ts_reader_acquire(ts_file *f, sample_error *err);
-/* Record a failure on f and the system. */
-void ts_record_error(ts_file *f, const sample_error *e);
+uintptr_t io_ts_reads_begin(const struct ls_texel_source *src);
+void io_ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket);
 /* Free every retired tile (no batch may be running). */
-void ts_cache_drain(sample_texsys *sys);
+void io_ts_cache_drain(sample_texsys *sys);
 
 /* texsys.c: sample_batch over chunks of TS_CHUNK queries, each its own
  * epoch ticket, so that tiles evicted while a long batch runs are freed
@@ -134,23 +125,23 @@ void ts_cache_drain(sample_texsys *sys);
  * map, when given, rewrites chunk b (queries from i0 of a) before it is
  * sampled, and is called again with i0 = SIZE_MAX after. */
 #define TS_CHUNK 16
-sample_status ts_batch_chunks(const sample_texture *tex, const sample_sampler *s, const sample_batch_args *a,
+sample_status io_ts_batch_chunks(const sample_texture *tex, const sample_sampler *s, const sample_batch_args *a,
                               void (*map)(void *ctx, sample_batch_args *b, size_t i0), void *ctx);
 /* texsys.c: open a plain file (no UDIM pattern), or return it if open. */
-sample_status ts_open_file(sample_texsys *sys, const char *path, ts_file **out, sample_error *err);
+sample_status io_ts_open_file(sample_texsys *sys, const char *path, ts_file **out, sample_error *err);
 
 /* texsys_udim.c */
 typedef struct ts_udim ts_udim;
 /* 1 if `name` holds a UDIM pattern. */
-int ts_udim_pattern(const char *name);
-sample_status ts_udim_open(sample_texsys *sys, const char *name, const sample_texture **out, sample_error *err);
+int io_ts_udim_pattern(const char *name);
+sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const sample_texture **out, sample_error *err);
 /* The set `tex` is, or NULL. */
-ts_udim *ts_udim_of(const sample_texsys *sys, const sample_texture *tex);
-void ts_udim_info(const ts_udim *u, sample_texsys_info *info);
-sample_status ts_udim_batch(ts_udim *u, const sample_sampler *s, const sample_batch_args *a);
+ts_udim *io_ts_udim_of(const sample_texsys *sys, const sample_texture *tex);
+void io_ts_udim_info(const ts_udim *u, sample_texsys_info *info);
+sample_status io_ts_udim_batch(ts_udim *u, const sample_sampler *s, const sample_batch_args *a);
 /* Failures of the set's files (sys->lock held), the first into *first. */
-unsigned long ts_udim_errors(const ts_udim *u, sample_error *first);
-void ts_udim_free_all(sample_texsys *sys);
+unsigned long io_ts_udim_errors(const ts_udim *u, sample_error *first);
+void io_ts_udim_free_all(sample_texsys *sys);
 
 /* Tests (texsys_cache.c): the next n tile allocations of sys fail. */
 void io_texsys_fail_allocs(sample_texsys *sys, int n);

@@ -29,7 +29,7 @@ struct ts_udim {
 static const char *const tokens[] = {"<UDIM>", "<u>", "<v>", "<U>", "<V>", "<uvtile>", "<UVTILE>"};
 enum { NTOK = sizeof tokens / sizeof tokens[0] };
 
-int ts_udim_pattern(const char *name)
+int io_ts_udim_pattern(const char *name)
 {
     int k;
     for (k = 0; k < NTOK; ++k)
@@ -130,15 +130,15 @@ static sample_status build(sample_texsys *sys, ts_udim *u, sample_error *err)
     for (; k < SAMPLE_MAX_LEVELS; ++k) memset(&tex->level[k], 0, sizeof tex->level[k]);
     u->h.base.texel = udim_texel;
     u->h.base.destroy = udim_source_destroy;
-    u->h.base.reads_begin = ts_reads_begin;
-    u->h.base.reads_end = ts_reads_end;
+    u->h.base.reads_begin = io_ts_reads_begin;
+    u->h.base.reads_end = io_ts_reads_end;
     memcpy(u->h.base.fill, sys->o.fill, sizeof u->h.base.fill);
     tex->source = &u->h.base;
     u->tex = tex;
     return SAMPLE_OK;
 }
 
-sample_status ts_udim_open(sample_texsys *sys, const char *name, const sample_texture **out, sample_error *err)
+sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const sample_texture **out, sample_error *err)
 {
     ts_udim *u;
     sample_status st = SAMPLE_OK;
@@ -167,7 +167,7 @@ sample_status ts_udim_open(sample_texsys *sys, const char *name, const sample_te
             }
             if (!(probe = fopen(path, "rb"))) continue; /* a tile the set lacks */
             fclose(probe);
-            st = ts_open_file(sys, path, &u->tile[y * UDIM_MAX + x], err);
+            st = io_ts_open_file(sys, path, &u->tile[y * UDIM_MAX + x], err);
             if (x > maxu) maxu = x;
             if (y > maxv) maxv = y;
         }
@@ -198,15 +198,15 @@ sample_status ts_udim_open(sample_texsys *sys, const char *name, const sample_te
     return SAMPLE_OK;
 }
 
-ts_udim *ts_udim_of(const sample_texsys *sys, const sample_texture *tex)
+ts_udim *io_ts_udim_of(const sample_texsys *sys, const sample_texture *tex)
 {
     const ts_head *h;
-    if (!sys || !tex || !tex->source || tex->source->reads_begin != ts_reads_begin) return NULL;
+    if (!sys || !tex || !tex->source || tex->source->reads_begin != io_ts_reads_begin) return NULL;
     h = (const ts_head *)tex->source;
     return h->sys == sys && h->udim ? (ts_udim *)(uintptr_t)h : NULL;
 }
 
-void ts_udim_info(const ts_udim *u, sample_texsys_info *info)
+void io_ts_udim_info(const ts_udim *u, sample_texsys_info *info)
 {
     int k;
     info->udim = 1;
@@ -224,7 +224,7 @@ void ts_udim_info(const ts_udim *u, sample_texsys_info *info)
     info->wrap_s = info->wrap_t = SAMPLE_WRAP_CLAMP_TO_BORDER;
 }
 
-unsigned long ts_udim_errors(const ts_udim *u, sample_error *first)
+unsigned long io_ts_udim_errors(const ts_udim *u, sample_error *first)
 {
     unsigned long n = 0;
     int k;
@@ -273,7 +273,7 @@ static void udim_map_chunk(void *ctx, sample_batch_args *b, size_t i0)
     if (b->corners) b->corners = m->c;
 }
 
-sample_status ts_udim_batch(ts_udim *u, const sample_sampler *s, const sample_batch_args *a)
+sample_status io_ts_udim_batch(ts_udim *u, const sample_sampler *s, const sample_batch_args *a)
 {
     udim_map m;
     sample_sampler vs;
@@ -284,10 +284,10 @@ sample_status ts_udim_batch(ts_udim *u, const sample_sampler *s, const sample_ba
     memcpy(vs.border_color, u->h.base.fill, sizeof vs.border_color);
     m.sc = 1.0f / (float)u->cols;
     m.tc = 1.0f / (float)u->rows;
-    return ts_batch_chunks(u->tex, &vs, a, udim_map_chunk, &m);
+    return io_ts_batch_chunks(u->tex, &vs, a, udim_map_chunk, &m);
 }
 
-void ts_udim_free_all(sample_texsys *sys)
+void io_ts_udim_free_all(sample_texsys *sys)
 {
     while (sys->udims) {
         ts_udim *u = sys->udims;
