@@ -131,11 +131,11 @@ static void test_same_bits(void)
             continue;
         }
         CHECK(sample_texsys_texture_info(sys, cached, &info, NULL) == SAMPLE_OK, "info");
-        CHECK(info.width == resident->width && info.height == resident->height && info.levels == resident->nlevels &&
-                  info.channels == resident->channels && info.format == resident->format &&
-                  info.kind == SAMPLE_TEXTURE_2D,
-              "%s: info %d x %d, %d levels, %d channels, %s", files[f].name, info.width, info.height, info.levels,
-              info.channels, sample_format_name(info.format));
+        CHECK(info.texture.width == resident->width && info.texture.height == resident->height &&
+                  info.texture.levels == resident->nlevels && info.texture.channels == resident->channels &&
+                  info.texture.format == resident->format && info.texture.kind == SAMPLE_TEXTURE_2D,
+              "%s: info %d x %d, %d levels, %d channels, %s", files[f].name, info.texture.width, info.texture.height,
+              info.texture.levels, info.texture.channels, sample_format_name(info.texture.format));
         CHECK(info.file_tiled == files[f].tiled && info.tile_size == (files[f].tiled ? files[f].tile : 64),
               "%s: tiles of %d, from the file %d", files[f].name, info.tile_size, info.file_tiled);
         if (files[f].tiled)
@@ -204,27 +204,44 @@ static int count_fill(sample_texsys *sys, const sample_texture *t, const sample_
     return n;
 }
 
+/* A system of 64 MiB holding one_file(name), and the file read whole. */
+typedef struct fixture {
+    sample_texsys *sys;
+    const sample_texture *t;
+    sample_texture *resident;
+    char path[1024];
+} fixture;
+
+static void fixture_open(fixture *x, const char *name)
+{
+    x->sys = new_system(64.0, 4);
+    x->t = one_file(x->sys, name, x->path, sizeof x->path);
+    x->resident = ts_resident(x->path);
+}
+
+static void fixture_close(fixture *x)
+{
+    sample_texture_destroy(x->resident);
+    sample_texsys_destroy(x->sys);
+}
+
 static void test_truncated(void)
 {
-    sample_texsys *sys = new_system(64.0, 4);
-    char path[1024];
-    const sample_texture *t = one_file(sys, "trunc.exr", path, sizeof path);
-    sample_texture *resident = ts_resident(path);
+    fixture x;
     sample_error first;
     struct stat sb;
+    unsigned long before;
     int other, n;
-    CHECK(stat(path, &sb) == 0 && truncate(path, sb.st_size / 3) == 0, "truncate");
-    n = count_fill(sys, t, resident, &other);
+    fixture_open(&x, "trunc.exr");
+    CHECK(stat(x.path, &sb) == 0 && truncate(x.path, sb.st_size / 3) == 0, "truncate");
+    n = count_fill(x.sys, x.t, x.resident, &other);
     CHECK(n > 0 && n < 32 * 32 && other == 0, "%d texels read the fill, %d neither fill nor texel", n, other);
-    CHECK(sample_texsys_texture_error(sys, t, &first) > 0 && first.message[0], "error recorded: %s", first.message);
+    before = sample_texsys_texture_error(x.sys, x.t, &first);
+    CHECK(before > 0 && first.message[0], "error recorded: %s", first.message);
     /* Once failed, a tile reads the fill again without another error. */
-    {
-        unsigned long before = sample_texsys_texture_error(sys, t, NULL);
-        CHECK(count_fill(sys, t, resident, &other) == n, "the same texels again");
-        CHECK(sample_texsys_texture_error(sys, t, NULL) == before, "no new error");
-    }
-    sample_texture_destroy(resident);
-    sample_texsys_destroy(sys);
+    CHECK(count_fill(x.sys, x.t, x.resident, &other) == n, "the same texels again");
+    CHECK(sample_texsys_texture_error(x.sys, x.t, NULL) == before, "no new error");
+    fixture_close(&x);
 }
 
 static void test_gone_and_unreadable(void)
@@ -259,19 +276,16 @@ static void test_gone_and_unreadable(void)
 
 static void test_memory_refused(void)
 {
-    sample_texsys *sys = new_system(64.0, 4);
-    char path[1024];
-    const sample_texture *t = one_file(sys, "alloc.exr", path, sizeof path);
-    sample_texture *resident = ts_resident(path);
+    fixture x;
     sample_error first;
     int other;
-    io_texsys_fail_allocs(sys, 1);
+    fixture_open(&x, "alloc.exr");
+    io_texsys_fail_allocs(x.sys, 1);
     /* The first tile (texels of tile (0, 0), 8 × 8) fails; the rest load. */
-    CHECK(count_fill(sys, t, resident, &other) == 64 && other == 0, "one tile reads the fill");
-    CHECK(sample_texsys_texture_error(sys, t, &first) == 1 && first.status == SAMPLE_E_OUT_OF_MEMORY,
+    CHECK(count_fill(x.sys, x.t, x.resident, &other) == 64 && other == 0, "one tile reads the fill");
+    CHECK(sample_texsys_texture_error(x.sys, x.t, &first) == 1 && first.status == SAMPLE_E_OUT_OF_MEMORY,
           "out of memory recorded: %s", first.message);
-    sample_texture_destroy(resident);
-    sample_texsys_destroy(sys);
+    fixture_close(&x);
 }
 
 static void test_open_file_limit(void)
@@ -376,8 +390,9 @@ static void test_udim(void)
         set = open_ok(sys, io_path(pattern, sizeof pattern, io_scratch, patterns[p]));
         if (!set) continue;
         CHECK(sample_texsys_texture_info(sys, set, &info, NULL) == SAMPLE_OK && info.udim && info.udim_cols == 2 &&
-                  info.udim_rows == 2 && info.width == 32 && info.levels == 5,
-              "UDIM info: %d x %d tiles, %d wide, %d levels", info.udim_cols, info.udim_rows, info.width, info.levels);
+                  info.udim_rows == 2 && info.texture.width == 32 && info.texture.levels == 5,
+              "UDIM info: %d x %d tiles, %d wide, %d levels", info.udim_cols, info.udim_rows, info.texture.width,
+              info.texture.levels);
         /* The set against one texture of the tiles side by side, sampled
          * at (s / 2, t / 2) with the fill as its border. */
         for (kind = 0; kind < TS_KINDS; ++kind) {

@@ -244,12 +244,7 @@ sample_status sample_texsys_texture_info(sample_texsys *sys, const sample_textur
     if (!info) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_texture_info: info is NULL");
     memset(info, 0, sizeof *info);
     if (!f && !u) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "not a texture of this texture system");
-    info->width = tex->width;
-    info->height = tex->height;
-    info->levels = tex->nlevels;
-    info->channels = tex->channels;
-    info->format = tex->format;
-    info->kind = tex->kind;
+    sample_texture_info_get(tex, &info->texture);
     if (u) {
         io_ts_udim_info(u, info);
         return SAMPLE_OK;

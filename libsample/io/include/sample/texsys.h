@@ -111,9 +111,9 @@ SAMPLE_IO_API sample_status sample_texsys_open(sample_texsys *sys, const char *f
                                                sample_error *err);
 
 typedef struct sample_texsys_info {
-    int width, height, levels, channels; /* UDIM: of the whole set (section 3) */
-    sample_format format;
-    sample_texture_kind kind;
+    /* Size, levels, channels, format, kind (sample_texture_info_get); of
+     * a UDIM set, the virtual texture's (section 3). */
+    sample_texture_info texture;
     int tile_size;   /* texels a side of the cache's tiles */
     int file_tiled;  /* 1: tiles read from the file; 0: tiled on first use */
     int has_wrap;    /* 1: the file's "wrapmodes" named wrap_s, wrap_t */
