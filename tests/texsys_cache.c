@@ -535,5 +535,6 @@ int main(int argc, char **argv)
     RUN(test_udim);
     RUN(test_bad_arguments);
     RUN(test_lookup_cli);
+    io_colour_close(ts_col);
     return check_finish();
 }

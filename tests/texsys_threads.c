@@ -96,5 +96,6 @@ int main(int argc, char **argv)
     io_images = argv[1];
     io_scratch = argv[2];
     RUN(test_threads_while_evicting);
+    io_colour_close(ts_col);
     return check_finish();
 }

@@ -3,7 +3,8 @@
 #ifndef TESTS_TEXSYS_UTIL_H
 #define TESTS_TEXSYS_UTIL_H
 
-#include "io_util.h"
+#include "io_util.h" /* first: it sets _POSIX_C_SOURCE */
+#include "io_internal.h"
 #include "query_gen.h"
 #include "sample/sample_io.h"
 #include "sample/texsys.h"
@@ -22,8 +23,13 @@ static inline void ts_write(const char *path, const sample_texture *tex, int til
     CHECK(sample_io_write_mip(path, tex, &o, &e) == SAMPLE_OK, "writing %s: %s", path, e.message);
 }
 
+/* The shipped OCIO config, loaded once for every ts_resident (parsing it
+ * is most of a small file's read). */
+static io_colour *ts_col;
+
 /* The file read whole, as the texture system reads untiled files: the box
- * pyramid with the file's wrap modes where it has no levels. */
+ * pyramid with the file's wrap modes where it has no levels
+ * (sample_io_read_texture with a config already loaded). */
 static inline sample_texture *ts_resident(const char *path)
 {
     sample_io_options o;
@@ -33,7 +39,8 @@ static inline sample_texture *ts_resident(const char *path)
     sample_io_options_init(&o);
     o.mip_wrap_from_file = 1;
     sample_mip_params_init(&mip);
-    CHECK(sample_io_read_texture(path, &o, &mip, &t, &e) == SAMPLE_OK, "reading %s: %s", path, e.message);
+    if (!ts_col) CHECK(io_colour_open(NULL, &ts_col, &e) == SAMPLE_OK, "OCIO config: %s", e.message);
+    CHECK(io_read_texture_col(path, ts_col, &o, &mip, &t, &e) == SAMPLE_OK, "reading %s: %s", path, e.message);
     return t;
 }
 
