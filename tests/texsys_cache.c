@@ -477,24 +477,34 @@ static void test_bad_arguments(void)
     sample_texsys_destroy(NULL);
 }
 
-static int run_texsample(const char *args)
+/* Runs `prog args` in the scratch folder: the image program, or with
+ * front = 1 the front program beside it (libsample alone: it reports usage
+ * errors without loading OpenImageIO). */
+static int run_texsample(int front, const char *args)
 {
-    char cmd[4096];
+    char cmd[4096], prog[2048];
+    const char *slash = strrchr(texsample, '/');
     int st;
-    snprintf(cmd, sizeof cmd, "cd '%s' && OCIO= timeout 20 '%s' %s >out.txt 2>err.txt", io_scratch, texsample, args);
+    if (front && slash)
+        snprintf(prog, sizeof prog, "%.*s/texsample", (int)(slash - texsample), texsample);
+    else
+        snprintf(prog, sizeof prog, "%s", texsample);
+    snprintf(cmd, sizeof cmd, "cd '%s' && OCIO= timeout 20 '%s' %s >out.txt 2>err.txt", io_scratch, prog, args);
     st = system(cmd);
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
-/* texsample lookup --cache-mb: the results of the whole texture loaded,
- * bit for bit, through a cache of a fraction of it; usage errors exit 2. */
+/* texsample lookup --cache-mb: the results of the texture loaded whole,
+ * bit for bit (EWA, the file's wrap modes), through a cache of a fraction
+ * of it; a usage error exits 2. */
 static void test_lookup_cli(void)
 {
-    static float q[NQ * 6], a[NQ * 4], b[NQ * 4];
+    static float q[NQ * 6], a[NQ * 4];
     char path[1024];
     FILE *f;
-    size_t i;
-    sample_texture *src;
+    sample_texture *src, *resident;
+    sample_sampler s;
+    sample_batch_args args;
     if (!texsample) {
         check_skip("texsample is not built");
         return;
@@ -503,21 +513,30 @@ static void test_lookup_cli(void)
     ts_write(io_path(path, sizeof path, io_scratch, "cli.exr"), src, 16, SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_CLAMP_TO_EDGE,
              0);
     sample_texture_destroy(src);
+    resident = ts_resident(path);
     ts_queries((sample_query *)(void *)q, NQ);
     f = fopen(io_path(path, sizeof path, io_scratch, "cli_q.raw"), "wb");
     CHECK(f && fwrite(q, sizeof q, 1, f) == 1, "queries");
     if (f) fclose(f);
-    CHECK(run_texsample("lookup --image cli.exr --queries cli_q.raw --out a.raw --filter trilinear") == 0, "plain");
-    CHECK(run_texsample("lookup --image cli.exr --queries cli_q.raw --out b.raw --filter trilinear --cache-mb 0.004 "
-                        "--stats") == 0,
-          "cached");
-    for (i = 0; i < 2; ++i) {
-        f = fopen(io_path(path, sizeof path, io_scratch, i ? "b.raw" : "a.raw"), "rb");
-        CHECK(f && fread(i ? b : a, sizeof a, 1, f) == 1, "read results");
-        if (f) fclose(f);
-    }
-    CHECK(!memcmp(a, b, sizeof a), "lookup --cache-mb differs from lookup");
-    CHECK(run_texsample("lookup --raw x.raw --w 1 --h 1 --queries cli_q.raw --cache-mb 1") == 2, "--raw refused");
+    CHECK(run_texsample(0, "lookup --image cli.exr --queries cli_q.raw --out b.raw --min linear_mipmap_linear "
+                           "--filter ewa --cache-mb 0.004 --stats") == 0,
+          "cached lookup");
+    f = fopen(io_path(path, sizeof path, io_scratch, "b.raw"), "rb");
+    CHECK(f && fread(rgba[1], sizeof(float) * 4 * NQ, 1, f) == 1, "read results");
+    if (f) fclose(f);
+    sample_sampler_init(&s);
+    s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+    s.footprint = SAMPLE_FOOTPRINT_EWA;
+    s.wrap_s = SAMPLE_WRAP_REPEAT;
+    s.wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
+    memset(&args, 0, sizeof args);
+    args.count = NQ;
+    args.queries = (const sample_query *)(const void *)q;
+    args.rgba = a;
+    CHECK(resident && sample_batch(resident, &s, &args) == SAMPLE_OK, "resident");
+    CHECK(!memcmp(a, rgba[1], sizeof a), "lookup --cache-mb differs from the texture loaded whole");
+    CHECK(run_texsample(1, "lookup --raw x.raw --w 1 --h 1 --queries cli_q.raw --cache-mb 1") == 2, "--raw refused");
+    sample_texture_destroy(resident);
 }
 
 int main(int argc, char **argv)
