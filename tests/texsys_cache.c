@@ -138,6 +138,12 @@ static void test_same_bits(void)
               info.texture.levels, info.texture.channels, sample_format_name(info.texture.format));
         CHECK(info.file_tiled == files[f].tiled && info.tile_size == (files[f].tiled ? files[f].tile : 64),
               "%s: tiles of %d, from the file %d", files[f].name, info.tile_size, info.file_tiled);
+        {
+            /* The colour space sample_io_read_texture decodes from. */
+            sample_io_file_info fi;
+            CHECK(sample_io_describe(path, NULL, &fi, NULL) == SAMPLE_OK && !strcmp(fi.colorspace_used, info.colorspace),
+                  "%s: colour space '%s', the reader's '%s'", files[f].name, info.colorspace, fi.colorspace_used);
+        }
         if (files[f].tiled)
             CHECK(info.has_wrap && info.wrap_s == SAMPLE_WRAP_REPEAT && info.wrap_t == SAMPLE_WRAP_MIRRORED_REPEAT,
                   "%s: wrap modes from the file", files[f].name);
