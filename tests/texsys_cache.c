@@ -250,6 +250,39 @@ static void test_truncated(void)
     fixture_close(&x);
 }
 
+/* Bytes in the middle of a file of compressible tiles (1.0 everywhere:
+ * ZIP keeps them compressed, so zlib sees the damage) overwritten after
+ * open: the damaged tiles read the fill, the others 1.0, exactly. */
+static void test_corrupt(void)
+{
+    static float ones[32 * 32 * 4];
+    sample_image im = {32, 32, 4, SAMPLE_FORMAT_F32, ones, 0};
+    sample_mip_params mip;
+    sample_texture *src = NULL;
+    sample_texsys *sys = new_system(64.0, 4);
+    const sample_texture *t;
+    char path[1024], junk[48];
+    struct stat sb;
+    FILE *f;
+    int k, other, n;
+    for (k = 0; k < 32 * 32 * 4; ++k) ones[k] = 1.0f;
+    sample_mip_params_init(&mip);
+    CHECK(sample_texture_create(&im, &mip, &src, NULL) == SAMPLE_OK, "create");
+    ts_write(io_path(path, sizeof path, io_scratch, "corrupt.exr"), src, 8, SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT, 0);
+    t = open_ok(sys, path);
+    memset(junk, 0x5A, sizeof junk);
+    CHECK(stat(path, &sb) == 0 && (f = fopen(path, "r+b")) != NULL, "open for damage");
+    if (f) {
+        CHECK(fseek(f, (long)(sb.st_size / 2), SEEK_SET) == 0 && fwrite(junk, sizeof junk, 1, f) == 1, "damage");
+        fclose(f);
+    }
+    n = count_fill(sys, t, src, &other);
+    CHECK(n > 0 && n < 32 * 32 && other == 0, "%d texels read the fill, %d neither fill nor 1.0", n, other);
+    CHECK(sample_texsys_texture_error(sys, t, NULL) > 0, "damage recorded");
+    sample_texture_destroy(src);
+    sample_texsys_destroy(sys);
+}
+
 static void test_gone_and_unreadable(void)
 {
     sample_texsys *sys = new_system(64.0, 4);
@@ -553,6 +586,7 @@ int main(int argc, char **argv)
     texsample = argc > 3 && argv[3][0] ? argv[3] : NULL;
     RUN(test_same_bits);
     RUN(test_truncated);
+    RUN(test_corrupt);
     RUN(test_gone_and_unreadable);
     RUN(test_memory_refused);
     RUN(test_open_file_limit);
