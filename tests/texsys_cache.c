@@ -513,6 +513,19 @@ static void test_bad_arguments(void)
     CHECK(sample_texsys_open(sys, io_scratch, &t, &e) == SAMPLE_E_IO, "a directory: %s", e.message);
     CHECK(sample_texsys_open(sys, "none_<UDIM>.exr", &t, &e) == SAMPLE_E_IO, "an empty UDIM set: %s", e.message);
     sample_texsys_destroy(sys);
+    {
+        /* 64 × 64 in tiles of 4: 343 tiles over 7 levels, a table of 2744
+         * bytes, more than a cache of 2 KiB. */
+        sample_texture *src = io_test_texture(64, 64, 1, SAMPLE_FORMAT_F16, 9, SAMPLE_MIPGEN_BOX, 0);
+        char path[1024];
+        ts_write(io_path(path, sizeof path, io_scratch, "tiny_tiles.exr"), src, 4, SAMPLE_WRAP_REPEAT,
+                 SAMPLE_WRAP_REPEAT, 0);
+        sample_texture_destroy(src);
+        sys = new_system(2.0 / 1024.0, 4);
+        CHECK(sample_texsys_open(sys, path, &t, &e) == SAMPLE_E_TOO_LARGE && strstr(e.message, "343 tiles"),
+              "a tile table over the limit: %s", e.message);
+        sample_texsys_destroy(sys);
+    }
     sample_texsys_destroy(NULL);
 }
 

@@ -425,6 +425,7 @@ static void ts_source_destroy(struct ls_texel_source *src) { (void)src; }
 sample_status io_ts_file_source_init(ts_file *f, sample_error *err)
 {
     const int side = 1 << f->log2;
+    uint64_t table = 0;
     int lv;
     f->h.base.texel = ts_texel;
     f->h.base.destroy = ts_source_destroy;
@@ -435,6 +436,16 @@ sample_status io_ts_file_source_init(ts_file *f, sample_error *err)
         const struct sample_level *L = &f->tex->level[lv];
         f->ntx[lv] = (L->w + side - 1) / side;
         f->nty[lv] = (L->h + side - 1) / side;
+        table += (uint64_t)f->ntx[lv] * (uint64_t)f->nty[lv] * sizeof *f->slots[lv];
+    }
+    /* The table of tile pointers lies outside the limit: one larger than
+     * the whole cache (65536² in tiles of 4 would need 2 GiB) is refused
+     * rather than allocated. */
+    RETURN_ERROR_IF(table > f->h.sys->limit, err, SAMPLE_E_TOO_LARGE,
+                    "'%s': its table of %llu tiles of %d texels a side needs %llu bytes, more than the cache's %zu",
+                    f->path, (unsigned long long)(table / sizeof *f->slots[0]), side, (unsigned long long)table,
+                    f->h.sys->limit);
+    for (lv = 0; lv < f->tex->nlevels; ++lv) {
         f->slots[lv] = (_Atomic(ts_tile *) *)calloc((size_t)f->ntx[lv] * (size_t)f->nty[lv], sizeof *f->slots[lv]);
         RETURN_ERROR_IF(!f->slots[lv], err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate the tile table of '%s'", f->path);
     }
