@@ -20,8 +20,10 @@ endif()
 set(_symbols_args ${PROJECT_SOURCE_DIR}/libsample/include/sample/sample.h
   $<TARGET_FILE:sample_shared> sample_)
 if(TARGET sample_io_shared)
-  list(APPEND _symbols_args ${PROJECT_SOURCE_DIR}/libsample/io/include/sample/sample_io.h
-    $<TARGET_FILE:sample_io_shared> sample_io_)
+  # libsample_io: sample_io.h, and the texture system's own header.
+  list(APPEND _symbols_args
+    ${PROJECT_SOURCE_DIR}/libsample/io/include/sample/sample_io.h:${PROJECT_SOURCE_DIR}/libsample/io/include/sample/texsys.h
+    $<TARGET_FILE:sample_io_shared> "sample_io_|sample_texsys_")
 endif()
 if(TARGET sample_measure)
   list(APPEND _symbols_args ${PROJECT_SOURCE_DIR}/tools/freq/sample_measure.h

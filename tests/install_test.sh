@@ -15,11 +15,12 @@
 # libsample.so and sample with it, and with IO=ON (the tools built)
 # libsample_measure.so.
 #
-#   install_test.sh symbols NM HEADER LIB PREFIX [HEADER LIB PREFIX]...
+#   install_test.sh symbols NM HEADERS LIB PREFIX [HEADERS LIB PREFIX]...
 # checks that LIB's dynamic symbol table defines exactly the functions
-# HEADER declares with its export macro, each named PREFIX*, and that
-# every function HEADER declares carries the macro. Exits 77 (skipped)
-# without nm.
+# HEADERS (one header, or several joined by ':') declare with their export
+# macro, each named PREFIX* (an extended regular expression: a|b for two
+# prefixes), and that every function they declare carries the macro.
+# Exits 77 (skipped) without nm.
 set -eu
 export LC_ALL=C
 mode=$1; shift
@@ -29,15 +30,17 @@ if [ "$mode" = symbols ]; then
   command -v "$nm" >/dev/null 2>&1 || { echo "no nm: skipped"; exit 77; }
   fail=0
   while [ $# -ge 3 ]; do
-    header=$1; lib=$2; prefix=$3; shift 3
+    header=$(printf '%s' "$1" | tr ':' ' '); lib=$2; prefix=$3; shift 3
     # Declarations start a line with a return type and name a sample_ function.
-    unmarked=$(grep -E '^[a-z].*[ *]sample_[a-z0-9_]+\(' "$header" | grep -v '^SAMPLE_' || true)
+    # shellcheck disable=SC2086 # $header: the headers, split on purpose
+    unmarked=$(grep -hE '^[a-z].*[ *]sample_[a-z0-9_]+\(' $header | grep -v '^SAMPLE_' || true)
     if [ -n "$unmarked" ]; then
       echo "$header: function declared without the export macro:"; echo "$unmarked"; fail=1
     fi
-    declared=$(sed -n 's/^SAMPLE_[A-Z_]*API .*[ *]\(sample_[a-z0-9_]*\)(.*/\1/p' "$header" | sort)
+    # shellcheck disable=SC2086
+    declared=$(sed -n 's/^SAMPLE_[A-Z_]*API .*[ *]\(sample_[a-z0-9_]*\)(.*/\1/p' $header | sort)
     exported=$("$nm" -D --defined-only "$lib" | awk '{print $NF}' | sort)
-    extra=$(printf '%s\n' "$exported" | grep -v "^$prefix" || true)
+    extra=$(printf '%s\n' "$exported" | grep -Ev "^($prefix)" || true)
     if [ -n "$extra" ]; then
       echo "$lib exports symbols not named $prefix*:"; echo "$extra"; fail=1
     fi

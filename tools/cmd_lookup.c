@@ -11,6 +11,9 @@
 #ifdef TEXSAMPLE_FRONT
 #include "image_program.h"
 #endif
+#ifdef TEXSAMPLE_HAVE_IO
+#include "sample/texsys.h"
+#endif
 
 #include <errno.h>
 #include <stdio.h>
@@ -44,6 +47,11 @@ static const char help[] =
     "                          --levels as for --raw\n"
     "  --mipgen box|lanczos3|kaiser|none\n"
     "                          how to build the pyramid otherwise (default box)\n"
+    "  --cache-mb N            read the --image file through a texture system whose tile\n"
+    "                          cache holds at most N MiB (sample/texsys.h; UDIM names\n"
+    "                          such as tex.<UDIM>.exr too): tiles load as queries touch\n"
+    "                          them, the results are the same; --stats adds the cache's\n"
+    "                          (doc/texture-system.md)\n"
     "  An --image file's stored wrap modes (wrapmodes, as mip writes them) are used\n"
     "  unless --wrap, --wrap-s or --wrap-t is given.\n\n"
     "Queries:\n"
@@ -77,6 +85,44 @@ static sample_status lookup_env(const tl_source *src, const sample_texture *tex,
     a.stats = stats;
     return (src->cube ? sample_batch_cube : sample_batch_latlong)(tex, smp, &a);
 }
+#ifdef TEXSAMPLE_HAVE_IO
+/* The --image file through a texture system of cache_mb MiB (and the file's
+ * wrap modes into src, as tl_load gives them). */
+static int open_cached(const char *sub, tl_source *src, double cache_mb, sample_texsys **sys,
+                       const sample_texture **tex)
+{
+    sample_texsys_options o;
+    sample_texsys_info info;
+    sample_error err;
+    sample_texsys_options_init(&o);
+    o.max_memory_mb = cache_mb;
+    o.colorspace = src->colorspace;
+    if (sample_texsys_create(&o, sys, &err) != SAMPLE_OK || sample_texsys_open(*sys, src->image, tex, &err) != SAMPLE_OK ||
+        sample_texsys_texture_info(*sys, *tex, &info, &err) != SAMPLE_OK)
+        return cli_runtime_error(sub, "%s: %s", src->image, err.message), -1;
+    src->has_wrap = info.has_wrap;
+    src->wrap_s = info.wrap_s;
+    src->wrap_t = info.wrap_t;
+    return 0;
+}
+
+/* What the cache did (--stats), and the tiles that read as the fill. */
+static void report_cache(const char *sub, sample_texsys *sys, const sample_texture *tex, int want_stats)
+{
+    sample_texsys_stats st;
+    sample_error first;
+    unsigned long bad = sample_texsys_texture_error(sys, tex, &first);
+    sample_texsys_stats_get(sys, &st);
+    if (bad)
+        fprintf(stderr, "texsample %s: warning: %lu tiles could not be read and read as the fill colour (first: %s)\n",
+                sub, bad, first.message);
+    if (want_stats)
+        fprintf(stderr, "cache: tiles read %llu, bytes read %llu, misses %llu, evictions %llu, peak memory %zu bytes, "
+                        "files opened %llu\n",
+                (unsigned long long)st.tiles_read, (unsigned long long)st.bytes_read, (unsigned long long)st.misses,
+                (unsigned long long)st.evictions, st.peak_memory, (unsigned long long)st.files_opened);
+}
+#endif
 
 int cmd_lookup(int argc, char **argv)
 {
@@ -90,6 +136,12 @@ int cmd_lookup(int argc, char **argv)
     void *qdata = NULL, *cdata = NULL;
     size_t qsize = 0, csize = 0, n;
     sample_texture *tex = NULL;
+    const sample_texture *use = NULL;
+    float cache_mb = 0.0f;
+    int mipgen_given = 0;
+#ifdef TEXSAMPLE_HAVE_IO
+    sample_texsys *sys = NULL; /* where --cache-mb reads through one */
+#endif
     float *out = NULL;
     sample_stats *stats = NULL;
     sample_batch_args a;
@@ -151,6 +203,12 @@ int cmd_lookup(int argc, char **argv)
             int m = sample_mipgen_parse(v);
             if (m < 0) return cli_usage_error(sub, "--mipgen: unknown kernel '%s'", v);
             mip.filter = (sample_mipgen)m;
+            mipgen_given = 1;
+            continue;
+        }
+        if (cli_opt(argc, argv, &i, "--cache-mb", &v)) {
+            if (!cli_parse_float(v, &cache_mb) || !(cache_mb > 0.0f) || cache_mb > 1048576.0f)
+                return cli_usage_error(sub, "--cache-mb: '%s' is not a size in MiB (above 0, at most 1048576)", v);
             continue;
         }
         if (argv[i][0] != '-')
@@ -166,17 +224,30 @@ int cmd_lookup(int argc, char **argv)
     qfloats = (src.cube || src.latlong) ? 9 : 6;
     if (sample_sampler_validate(&smp) != SAMPLE_OK)
         return cli_usage_error(sub, "inconsistent sampler state (min-lod > max-lod, base-level > max-level, or aniso < 1)");
+    if (cache_mb > 0.0f && (!src.image || src.levels || (mipgen_given && mip.filter != SAMPLE_MIPGEN_BOX)))
+        return cli_usage_error(sub, "--cache-mb reads an --image file, tiled and mip-mapped (box) as the texture "
+                                    "system does: not with --raw, --levels or another --mipgen");
 
     /* The pyramid's edges follow the sampler's wrap modes: the file's when
      * it stores them and the command line names none. */
     mip.wrap_s = smp.wrap_s;
     mip.wrap_t = smp.wrap_t;
     src.wrap_from_file = !wrap_s_given && !wrap_t_given;
-    if ((r = tl_load(sub, &src, &mip, &tex)) != 0) {
+    if (cache_mb > 0.0f) {
+#ifdef TEXSAMPLE_HAVE_IO
+        if (open_cached(sub, &src, cache_mb, &sys, &use) != 0) goto done;
+#elif defined(TEXSAMPLE_FRONT)
+        return image_program_run(argc, argv);
+#else
+        return cli_runtime_error(sub, "--cache-mb needs libsample_io, which this build lacks");
+#endif
+    } else if ((r = tl_load(sub, &src, &mip, &tex)) != 0) {
 #ifdef TEXSAMPLE_FRONT
         if (r == TL_IMAGE_PROGRAM) return image_program_run(argc, argv);
 #endif
         return EXIT_RUNTIME;
+    } else {
+        use = tex;
     }
     if (src.has_wrap) {
         if (!wrap_s_given) smp.wrap_s = src.wrap_s;
@@ -217,8 +288,14 @@ int cmd_lookup(int argc, char **argv)
     a.rgba = out;
     a.stats = stats;
     /* Environment maps always run the reference path. */
-    st = qfloats == 9 ? lookup_env(&src, tex, &smp, qdata, n, out, stats)
-                      : (reference ? sample_batch_reference : sample_batch)(tex, &smp, &a);
+    if (qfloats == 9)
+        st = lookup_env(&src, use, &smp, qdata, n, out, stats);
+#ifdef TEXSAMPLE_HAVE_IO
+    else if (sys)
+        st = sample_texsys_batch(sys, use, &smp, &a);
+#endif
+    else
+        st = (reference ? sample_batch_reference : sample_batch)(use, &smp, &a);
     if (st != SAMPLE_OK) {
         cli_runtime_error(sub, "sampling failed: %s", sample_strerror(st));
         goto done;
@@ -237,6 +314,9 @@ int cmd_lookup(int argc, char **argv)
         }
     }
     if (want_stats) lookup_stats_print(stats, n);
+#ifdef TEXSAMPLE_HAVE_IO
+    if (sys) report_cache(sub, sys, use, want_stats);
+#endif
     rc = EXIT_OK;
 done:
     free(qdata);
@@ -244,5 +324,8 @@ done:
     free(out);
     free(stats);
     sample_texture_destroy(tex);
+#ifdef TEXSAMPLE_HAVE_IO
+    sample_texsys_destroy(sys);
+#endif
     return rc;
 }

@@ -109,6 +109,7 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
 {
     sample_ctx c;
     fast_gl_fn fast;
+    uintptr_t ticket;
     int run;
     sample_status st = batch_check(tex, smp, a, &run);
     if (!run) return st;
@@ -118,10 +119,12 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
      * path's bit for bit (texel.h, struct ls_texel_source). */
     ls_ctx_init(&c, tex, smp, tex_resident(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
+    ticket = tex_reads_begin(tex);
     if (fast)
         fast(&c, a);
     else
         reference_batch(&c, a);
+    tex_reads_end(tex, ticket);
     return SAMPLE_OK;
 }
 
@@ -131,9 +134,12 @@ sample_status sample_batch_reference(const sample_texture *tex, const sample_sam
     sample_ctx c;
     int run;
     sample_status st = batch_check(tex, smp, a, &run);
+    uintptr_t ticket;
     if (!run) return st;
     ls_ctx_init(&c, tex, smp, &ls_isa_kernels_reference);
+    ticket = tex_reads_begin(tex);
     reference_batch(&c, a);
+    tex_reads_end(tex, ticket);
     return SAMPLE_OK;
 }
 sample_status sample_one(const sample_texture *tex, const sample_sampler *smp,

@@ -27,6 +27,14 @@
 struct ls_texel_source {
     const unsigned char *(*texel)(const struct ls_texel_source *src, int lv, int i, int j, int layer);
     void (*destroy)(struct ls_texel_source *src); /* with the texture */
+    /* Optional (NULL: nothing to do), for a source that frees texels while
+     * other threads read (a tile cache evicting): every entry point that
+     * reads a non-resident texture — a batch of any kind, one texel —
+     * brackets its reads with tex_reads_begin / tex_reads_end (below).
+     * reads_begin returns a ticket that reads_end gets back; between the
+     * two, every pointer texel() handed out stays valid. */
+    uintptr_t (*reads_begin)(const struct ls_texel_source *src);
+    void (*reads_end)(const struct ls_texel_source *src, uintptr_t ticket);
     float fill[4];
 };
 
@@ -54,6 +62,18 @@ struct sample_texture {
 
 /* Whether the texture's levels are resident arrays (data, stride). */
 static inline int tex_resident(const sample_texture *tex) { return tex->source == NULL; }
+
+/* Bracket the texel reads of one batch (or one texel) of a texture: the
+ * source's reads_begin / reads_end where it has them (struct
+ * ls_texel_source), nothing for a resident texture. */
+static inline uintptr_t tex_reads_begin(const sample_texture *tex)
+{
+    return tex->source && tex->source->reads_begin ? tex->source->reads_begin(tex->source) : 0;
+}
+static inline void tex_reads_end(const sample_texture *tex, uintptr_t ticket)
+{
+    if (tex->source && tex->source->reads_end) tex->source->reads_end(tex->source, ticket);
+}
 
 /* The exact sRGB EOTF for each 8-bit code ([0]) and c / 255 ([1]), one
  * array (color.c). */

@@ -254,12 +254,15 @@ int sample_texture_level_size(const sample_texture *tex, int level, int *w, int 
 
 void sample_texture_texel(const sample_texture *tex, int level, int i, int j, float rgba[4])
 {
+    uintptr_t ticket;
     if (!tex || level < 0 || level >= tex->nlevels || i < 0 || j < 0 ||
         i >= tex->level[level].w || j >= tex->level[level].h) {
         rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
         return;
     }
+    ticket = tex_reads_begin(tex);
     tex_read(tex, level, i, j, rgba);
+    tex_reads_end(tex, ticket);
 }
 
 void sample_texture_texel_layer(const sample_texture *tex, int level, int layer, int i, int j, float rgba[4])

@@ -65,6 +65,12 @@ extern const char *const bench_oiio_file_names[BENCH_FMT_COUNT];
 typedef struct bench_texture {
     sample_texture *ours;
     oiio_ts_tex *theirs;
+    /* bench --cache-mb: libsample's texture read from OIIO's file through a
+     * texture system (sample/texsys.h) whose tiles `cached` samples
+     * through; NULL otherwise (then ours is resident). */
+    void *sys;
+    sample_status (*cached)(void *sys, const sample_texture *tex, const sample_sampler *s,
+                            const sample_batch_args *a);
 } bench_texture;
 
 /* The synthetic size × size RGBA content (linear, in [0, 1]); caller frees. */
@@ -75,6 +81,11 @@ float *bench_content(int size);
  * returns −1. */
 int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts *ts,
                        const char *dir, bench_texture *out);
+/* Replace t's libsample texture by OIIO's file (in dir) opened through a
+ * texture system of cache_mb MiB. Returns 0, or reports and returns −1. */
+int bench_texture_cache(bench_texture *t, bench_format fmt, const char *dir, double cache_mb);
+/* What the texture system of a cached texture read (nothing otherwise). */
+void bench_texture_stats(const bench_texture *t, FILE *f);
 void bench_texture_free(bench_texture *t);
 
 /* ---- Engines (engines.c) ---------------------------------------------- */

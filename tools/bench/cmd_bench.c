@@ -41,6 +41,11 @@ static const char help[] =
     "  --filters LIST     comma-separated filters, from the list below (default, or\n"
     "                     'all': those marked *)\n"
     "  --no-oiio          measure libsample only\n"
+    "  --cache-mb N       libsample reads OIIO's texture file through a texture\n"
+    "                     system (sample/texsys.h) whose tile cache holds N MiB,\n"
+    "                     and OIIO's TextureSystem gets the same max_memory_MB;\n"
+    "                     the tiles and bytes libsample read are printed per format\n"
+    "                     (doc/texture-system.md)\n"
     "  --scalar           libsample through its general per-query path\n"
     "                     (sample_batch_reference), to measure the fast path\n"
     "  --tmpdir DIR       where OIIO's texture files are written (default $TMPDIR\n"
@@ -60,6 +65,7 @@ enum { MAX_ENGINES = 32 };
 
 typedef struct bench_opts {
     int size, runs, threads, oiio, scalar;
+    float cache_mb; /* 0: resident textures, OIIO's default cache */
     size_t queries, batch;
     unsigned sets, formats; /* bit masks */
     const char *json, *tmpdir, *save, *filters;
@@ -143,6 +149,9 @@ static int parse_args(int argc, char **argv, bench_opts *o)
             /* Paths inside it are built in fixed buffers. */
             if (strlen(v) > 900) return cli_usage_error("bench", "--save: directory name too long");
             o->save = v;
+        } else if (cli_opt(argc, argv, &i, "--cache-mb", &v)) {
+            if (!cli_parse_float(v, &o->cache_mb) || !(o->cache_mb > 0.0f) || o->cache_mb > 1048576.0f)
+                return cli_usage_error("bench", "--cache-mb must be a size in MiB above 0, not '%s'", v ? v : "");
         } else if (cli_opt(argc, argv, &i, "--tmpdir", &v)) {
             if (!v) return cli_usage_error("bench", "--tmpdir needs a directory");
             o->tmpdir = v;
@@ -295,7 +304,8 @@ static int run_all(bench_run *b, const char *files)
     for (fmt = 0; fmt < BENCH_FMT_COUNT && rc == 0; ++fmt) {
         bench_texture tex;
         if (!((b->o.formats >> fmt) & 1u)) continue;
-        if (bench_texture_make(content, b->o.size, (bench_format)fmt, b->ts, files, &tex) != 0) {
+        if (bench_texture_make(content, b->o.size, (bench_format)fmt, b->ts, files, &tex) != 0 ||
+            (b->o.cache_mb > 0.0f && bench_texture_cache(&tex, (bench_format)fmt, files, b->o.cache_mb) != 0)) {
             rc = EXIT_RUNTIME;
             break;
         }
@@ -312,6 +322,7 @@ static int run_all(bench_run *b, const char *files)
             if (measure(b, &tex, (bench_format)fmt, (bench_set)set, q, &done, total) != 0)
                 rc = EXIT_RUNTIME;
         }
+        bench_texture_stats(&tex, stderr);
         bench_texture_free(&tex);
         saved_any_format = 1;
     }
@@ -400,16 +411,16 @@ int cmd_bench(int argc, char **argv)
         if (make_save_dir(b.o.save) != 0) return EXIT_RUNTIME;
         /* The files are the record: they stay where --save put them. */
         snprintf(dir, sizeof dir, "%s", b.o.save);
-    } else if (b.o.oiio && !mkdtemp(dir)) {
+    } else if ((b.o.oiio || b.o.cache_mb > 0.0f) && !mkdtemp(dir)) {
         return cli_runtime_error("bench", "cannot create a directory in %s",
                                  tmp && *tmp ? tmp : "/tmp");
     }
-    if (b.o.oiio && !(b.ts = oiio_ts_create(0))) {
+    if (b.o.oiio && !(b.ts = oiio_ts_create(b.o.cache_mb))) {
         if (!b.o.save) rmdir(dir);
         return cli_runtime_error("bench", "cannot create an OpenImageIO TextureSystem");
     }
     if (getloadavg(&load[0], 1) != 1) load[0] = -1.0;
-    rc = run_all(&b, b.o.oiio || b.o.save ? dir : NULL);
+    rc = run_all(&b, b.o.oiio || b.o.save || b.o.cache_mb > 0.0f ? dir : NULL);
     if (getloadavg(&load[1], 1) != 1) load[1] = -1.0;
     if (rc == 0) {
         bench_report r;
@@ -436,7 +447,7 @@ int cmd_bench(int argc, char **argv)
         }
     }
     oiio_ts_destroy(b.ts);
-    if (b.o.oiio && !b.o.save) remove_files(dir);
+    if ((b.o.oiio || b.o.cache_mb > 0.0f) && !b.o.save) remove_files(dir);
     free(b.res);
     free(command);
     return rc;

@@ -67,7 +67,11 @@ int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
         a.queries = q;
         a.rgba = rgba;
         a.stats = stats;
-        if ((st = (e->reference ? sample_batch_reference : sample_batch)(t->ours, &e->smp, &a)) != SAMPLE_OK) {
+        if (t->cached)
+            st = t->cached(t->sys, t->ours, &e->smp, &a);
+        else
+            st = (e->reference ? sample_batch_reference : sample_batch)(t->ours, &e->smp, &a);
+        if (st != SAMPLE_OK) {
             fprintf(stderr, "texsample bench: %s: %s\n", e->name, sample_strerror(st));
             return -1;
         }

@@ -5,9 +5,11 @@
  * checker, two ramps and per-texel hash noise.
  */
 #include "bench.h"
+#include "sample/texsys.h"
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 const char *const bench_format_names[BENCH_FMT_COUNT] = {
     [BENCH_FMT_F32] = "float",
@@ -109,8 +111,7 @@ int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts
     sample_error err;
     int rc = -1;
 
-    out->ours = NULL;
-    out->theirs = NULL;
+    memset(out, 0, sizeof *out);
     if (fmt == BENCH_FMT_F16) {
         uint16_t *h = malloc(n * 4 * sizeof *h);
         if (h)
@@ -140,10 +141,51 @@ int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts
     return rc;
 }
 
+static sample_status cached_batch(void *sys, const sample_texture *tex, const sample_sampler *s,
+                                  const sample_batch_args *a)
+{
+    return sample_texsys_batch((sample_texsys *)sys, tex, s, a);
+}
+
+int bench_texture_cache(bench_texture *t, bench_format fmt, const char *dir, double cache_mb)
+{
+    sample_texsys_options o;
+    sample_texsys *sys = NULL;
+    const sample_texture *tex = NULL;
+    sample_error err;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, bench_oiio_file_names[fmt]);
+    sample_texsys_options_init(&o);
+    o.max_memory_mb = cache_mb;
+    if (sample_texsys_create(&o, &sys, &err) != SAMPLE_OK || sample_texsys_open(sys, path, &tex, &err) != SAMPLE_OK) {
+        fprintf(stderr, "texsample bench: --cache-mb: %s\n", err.message);
+        sample_texsys_destroy(sys);
+        return -1;
+    }
+    sample_texture_destroy(t->ours);
+    /* The system owns it; bench_texture_free destroys the system. */
+    t->ours = (sample_texture *)(uintptr_t)tex;
+    t->sys = sys;
+    t->cached = cached_batch;
+    return 0;
+}
+
+void bench_texture_stats(const bench_texture *t, FILE *f)
+{
+    sample_texsys_stats st;
+    if (!t->sys) return;
+    sample_texsys_stats_get((sample_texsys *)t->sys, &st);
+    fprintf(f, "libsample cache: tiles read %llu, bytes read %llu, peak memory %zu bytes\n",
+            (unsigned long long)st.tiles_read, (unsigned long long)st.bytes_read, st.peak_memory);
+}
+
 void bench_texture_free(bench_texture *t)
 {
-    /* OIIO's handles belong to its TextureSystem. */
-    sample_texture_destroy(t->ours);
-    t->ours = NULL;
-    t->theirs = NULL;
+    /* OIIO's handles belong to its TextureSystem; a cached texture to its
+     * texture system. */
+    if (t->sys)
+        sample_texsys_destroy((sample_texsys *)t->sys);
+    else
+        sample_texture_destroy(t->ours);
+    memset(t, 0, sizeof *t);
 }

@@ -76,6 +76,12 @@ sample_status io_reader_level_size(io_reader *r, int k, int *w, int *h, sample_e
 /* Read channels [0, nchan) of level k as `type`, tightly packed, w × h. */
 sample_status io_reader_read(io_reader *r, int k, io_ptype type, int nchan, void *dst,
                              sample_error *err);
+/* Read the tiles covering [x0, x1) × [y0, y1) of level k (x0, y0 on tile
+ * corners; x1, y1 on tile corners or the level's edge), channels
+ * [0, nchan) as `type`, tightly packed rows of x1 − x0 pixels
+ * (texsys.c's tile loads). */
+sample_status io_reader_read_tiles(io_reader *r, int k, int x0, int y0, int x1, int y1, io_ptype type, int nchan,
+                                   void *dst, sample_error *err);
 void io_reader_close(io_reader *r); /* accepts NULL */
 
 /* ---- The reader's decisions (io_read.c) ---------------------------------- */
@@ -98,6 +104,16 @@ typedef struct io_plan {
 
 sample_status io_read_plan(const io_colour *col, const io_reader_info *inf, const sample_io_options *o, io_plan *p,
                            sample_error *err);
+/* n pixels read as p->read_as (packed, p->nchan channels) into the
+ * texture's storage format, in place: the colour conversion, the
+ * premultiplication and the narrowing to half the plan asks for. Whole
+ * levels (io_read.c) and single tiles (texsys.c) go through it alike. */
+sample_status io_plan_apply(const io_colour *col, const io_plan *p, void *buf, size_t n, sample_error *err);
+/* sample_io_read_texture with an OCIO config already loaded (the
+ * texture system reads files whole with its own); o->ocio_config is not
+ * used. */
+sample_status io_read_texture_col(const char *path, const io_colour *col, const sample_io_options *o,
+                                  const sample_mip_params *mip, sample_texture **out, sample_error *err);
 /* io_describe.c: what the file says (inf) and what the plan made of it,
  * into info; the level sizes are left 0 and texture_file_levels 1. */
 void io_file_info_fill(const io_reader_info *inf, const io_plan *p, sample_io_file_info *info);

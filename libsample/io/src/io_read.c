@@ -196,31 +196,39 @@ static void premultiply(float *px, size_t n, int nchan, int alpha)
             if (c != alpha) px[c] *= px[alpha];
 }
 
-/* Read level k into a fresh buffer in the texture's storage format. */
-static sample_status read_level(io_source *r, const io_colour *col, const io_plan *p, int k, int w, int h,
-                                void **out, sample_error *err)
+sample_status io_plan_apply(const io_colour *col, const io_plan *p, void *buf, size_t n, sample_error *err)
 {
-    size_t n = (size_t)w * (size_t)h, values = n * (size_t)p->nchan, i;
-    size_t bytes = values * (p->read_as == IO_U8 ? 1 : p->read_as == IO_HALF ? 2 : 4);
-    unsigned char *buf = malloc(bytes ? bytes : 1);
-    sample_status st;
-    *out = NULL;
-    if (!buf) return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
-    st = src_read(r, k, p->read_as, p->nchan, buf, err);
-    if (st == SAMPLE_OK && p->convert)
-        st = io_colour_apply(col, p->colorspace, 1, (float *)(void *)buf, n, p->nchan, err);
-    if (st == SAMPLE_OK && p->premultiply) premultiply((float *)(void *)buf, n, p->nchan, p->alpha);
+    unsigned char *b = (unsigned char *)buf;
+    size_t values = n * (size_t)p->nchan, i;
+    sample_status st = SAMPLE_OK;
+    if (p->convert) st = io_colour_apply(col, p->colorspace, 1, (float *)buf, n, p->nchan, err);
+    if (st == SAMPLE_OK && p->premultiply) premultiply((float *)buf, n, p->nchan, p->alpha);
     if (st == SAMPLE_OK && p->read_as == IO_FLOAT && p->format == SAMPLE_FORMAT_F16) {
         /* Narrow in place: half i (bytes 2i, 2i+1) never overwrites a float
          * not yet read (bytes 4j.. for j ≥ i). */
         for (i = 0; i < values; ++i) {
             float f;
             uint16_t hv;
-            memcpy(&f, buf + 4 * i, 4);
+            memcpy(&f, b + 4 * i, 4);
             hv = sample_float_to_half(f);
-            memcpy(buf + 2 * i, &hv, 2);
+            memcpy(b + 2 * i, &hv, 2);
         }
     }
+    return st;
+}
+
+/* Read level k into a fresh buffer in the texture's storage format. */
+static sample_status read_level(io_source *r, const io_colour *col, const io_plan *p, int k, int w, int h,
+                                void **out, sample_error *err)
+{
+    size_t n = (size_t)w * (size_t)h, values = n * (size_t)p->nchan;
+    size_t bytes = values * (p->read_as == IO_U8 ? 1 : p->read_as == IO_HALF ? 2 : 4);
+    unsigned char *buf = malloc(bytes ? bytes : 1);
+    sample_status st;
+    *out = NULL;
+    if (!buf) return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes for level %d", bytes, k);
+    st = src_read(r, k, p->read_as, p->nchan, buf, err);
+    if (st == SAMPLE_OK) st = io_plan_apply(col, p, buf, n, err);
     if (st != SAMPLE_OK) {
         free(buf);
         return st;
@@ -243,8 +251,9 @@ static sample_status file_info(io_source *r, const io_reader_info *inf, const io
 
 /* *fallback is set (and nothing read) when the direct reader was given a
  * file whose colour space needs an OCIO conversion: OIIO's path does that. */
-static sample_status read_texture(io_source *r, const sample_io_options *o, const sample_mip_params *mip,
-                                  sample_texture **out, int *fallback, sample_error *err)
+static sample_status read_texture(io_source *r, const io_colour *shared, const sample_io_options *o,
+                                  const sample_mip_params *mip, sample_texture **out, int *fallback,
+                                  sample_error *err)
 {
     sample_io_options defaults;
     io_reader_info inf;
@@ -269,7 +278,8 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
         return sample_error_set(err, SAMPLE_E_CORRUPT, "image claims %d x %d pixels with %d channels", inf.width,
                        inf.height, inf.channels);
     has_wrap = inf.wrapmodes[0] && io_wrapmodes_parse(inf.wrapmodes, &ws, &wt);
-    st = io_colour_open(o->ocio_config, &col, err);
+    st = shared ? SAMPLE_OK : io_colour_open(o->ocio_config, &col, err);
+    if (shared) col = (io_colour *)(uintptr_t)shared;
     if (st == SAMPLE_OK) st = io_read_plan(col, &inf, o, &p, err);
     if (st == SAMPLE_OK && o->file_info) st = file_info(r, &inf, &p, o->file_info, err);
     if (has_wrap && o->mip_wrap_from_file && mip) {
@@ -282,7 +292,7 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
      * through OpenImageIO's path. */
     if (st == SAMPLE_OK && r->exr && (p.convert || p.read_as != inf.native)) {
         *fallback = 1;
-        io_colour_close(col);
+        if (!shared) io_colour_close(col);
         return SAMPLE_OK;
     }
     if (st == SAMPLE_OK) {
@@ -301,13 +311,13 @@ static sample_status read_texture(io_source *r, const sample_io_options *o, cons
     if (st == SAMPLE_OK)
         st = count > 1 ? sample_texture_create_levels(lv, count, out, err) : sample_texture_create(&lv[0], mip, out, err);
     for (k = 0; k < SAMPLE_MAX_LEVELS; ++k) free(data[k]);
-    io_colour_close(col);
+    if (!shared) io_colour_close(col);
     return st;
 }
 
 /* Direct OpenEXR first (tiled mip-mapped files), else OpenImageIO. */
 static sample_status read_source(const char *path, const void *data, size_t size, const char *hint,
-                                 const sample_io_options *o, const sample_mip_params *mip, sample_texture **out,
+                                 const io_colour *col, const sample_io_options *o, const sample_mip_params *mip, sample_texture **out,
                                  sample_error *err)
 {
     io_source s = {NULL, NULL};
@@ -315,7 +325,7 @@ static sample_status read_source(const char *path, const void *data, size_t size
     sample_status st = io_exr_tiled_open(path, data, size, &s.exr, err);
     if (st != SAMPLE_OK) return st;
     if (s.exr) {
-        st = read_texture(&s, o, mip, out, &fallback, err);
+        st = read_texture(&s, col, o, mip, out, &fallback, err);
         io_exr_tiled_close(s.exr);
         s.exr = NULL;
         if (st != SAMPLE_OK || !fallback) {
@@ -325,7 +335,7 @@ static sample_status read_source(const char *path, const void *data, size_t size
     }
     st = io_reader_open(path, data, size, hint, &s.oiio, err);
     if (st != SAMPLE_OK) return st;
-    st = read_texture(&s, o, mip, out, &fallback, err);
+    st = read_texture(&s, col, o, mip, out, &fallback, err);
     io_reader_close(s.oiio);
     return st;
 }
@@ -355,7 +365,7 @@ sample_status sample_io_read_texture(const char *path, const sample_io_options *
     if (!path || !*path) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_texture: no path");
     if ((st = sample_io_check_regular_file(path, "image", err)) != SAMPLE_OK) return st;
     if ((st = io_preflight(path, NULL, 0, err)) != SAMPLE_OK) return st;
-    return read_source(path, NULL, 0, NULL, o, mip, out, err);
+    return read_source(path, NULL, 0, NULL, NULL, o, mip, out, err);
 }
 
 sample_status sample_io_read_memory(const void *data, size_t size, const char *format_hint,
@@ -368,5 +378,15 @@ sample_status sample_io_read_memory(const void *data, size_t size, const char *f
     if (!data && size) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_io_read_memory: data is NULL");
     if (size == 0) return sample_error_set(err, SAMPLE_E_CORRUPT, "sample_io_read_memory: the file is empty");
     if ((st = io_preflight(NULL, data, size, err)) != SAMPLE_OK) return st;
-    return read_source(NULL, data, size, format_hint, o, mip, out, err);
+    return read_source(NULL, data, size, format_hint, NULL, o, mip, out, err);
+}
+
+sample_status io_read_texture_col(const char *path, const io_colour *col, const sample_io_options *o,
+                                  const sample_mip_params *mip, sample_texture **out, sample_error *err)
+{
+    sample_status st;
+    *out = NULL;
+    if ((st = sample_io_check_regular_file(path, "image", err)) != SAMPLE_OK) return st;
+    if ((st = io_preflight(path, NULL, 0, err)) != SAMPLE_OK) return st;
+    return read_source(path, NULL, 0, NULL, col, o, mip, out, err);
 }

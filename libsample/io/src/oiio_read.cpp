@@ -187,6 +187,24 @@ extern "C" sample_status io_reader_read(io_reader *r, int k, io_ptype type, int 
     }
 }
 
+extern "C" sample_status io_reader_read_tiles(io_reader *r, int k, int x0, int y0, int x1, int y1, io_ptype type,
+                                              int nchan, void *dst, sample_error *err)
+{
+    try {
+        // The explicit-subimage form is OIIO 2.4's thread-safe one
+        // (ImageInput::read_tiles): the region is whole tiles, ending at
+        // the level's edge.
+        if (r->in->read_tiles(0, k, x0, x1, y0, y1, 0, 1, 0, nchan, oiio_type(type), dst)) return SAMPLE_OK;
+        std::string msg = r->in->geterror();
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read the tile at (%d, %d) of level %d: %s", x0, y0, k,
+                                msg.empty() ? "unknown error" : msg.c_str());
+    } catch (const std::bad_alloc &) {
+        return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "out of memory reading a tile of level %d", k);
+    } catch (const std::exception &e) {
+        return sample_error_set(err, SAMPLE_E_CORRUPT, "cannot read a tile of level %d: %s", k, e.what());
+    }
+}
+
 extern "C" void io_reader_close(io_reader *r)
 {
     if (!r) return;

@@ -1,0 +1,485 @@
+/*
+ * The texture system's tile cache (doc/texture-system.md, "The cache"): a
+ * texel source per file whose texel() finds the tile in an atomic slot and
+ * loads it on a miss; clock eviction under the memory limit; epochs that
+ * free an evicted tile only once no batch that could hold it is running.
+ */
+#include "texsys_internal.h"
+
+#include <stdlib.h>
+
+/* The slot of a tile that failed to load: never in the ring, never freed;
+ * its texels read as the fill colour (texel.h: NULL). */
+static ts_tile ts_failed;
+
+void io_ts_lock_init(ts_lock *l)
+{
+    pthread_mutex_init(&l->m, NULL);
+    pthread_cond_init(&l->c, NULL);
+    l->next = l->serving = 0;
+}
+
+static void ts_lock_destroy(ts_lock *l)
+{
+    pthread_mutex_destroy(&l->m);
+    pthread_cond_destroy(&l->c);
+}
+
+static void ts_lock_take(ts_lock *l)
+{
+    unsigned long mine;
+    pthread_mutex_lock(&l->m);
+    mine = l->next++;
+    while (l->serving != mine) pthread_cond_wait(&l->c, &l->m);
+    pthread_mutex_unlock(&l->m);
+}
+
+static int ts_trylock(ts_lock *l)
+{
+    int taken;
+    pthread_mutex_lock(&l->m);
+    taken = l->next == l->serving;
+    if (taken) l->next++;
+    pthread_mutex_unlock(&l->m);
+    return taken;
+}
+
+static void ts_unlock(ts_lock *l)
+{
+    pthread_mutex_lock(&l->m);
+    l->serving++;
+    pthread_cond_broadcast(&l->c);
+    pthread_mutex_unlock(&l->m);
+}
+
+/* The memory held now, and the most ever held (sys->lock held). */
+static void note_memory(sample_texsys *sys)
+{
+    size_t m = sys->resident + sys->retired_bytes;
+    sys->st.memory = m;
+    if (m > sys->st.peak_memory) sys->st.peak_memory = m;
+}
+
+/* ---- Epochs ----------------------------------------------------------------
+ * A batch takes the current epoch as its ticket. A tile evicted during epoch
+ * g can be read only by batches holding tickets ≤ g (a batch with a later
+ * ticket began after the eviction emptied its slot, both under sys->lock).
+ * The epoch moves from g to g + 1 once no batch holds ticket g − 1; the
+ * tiles evicted during g − 1 are then freed. So two parities suffice, as in
+ * the two-counter form of read-copy-update (McKenney, "Sleepable RCU",
+ * 2006). Called with sys->lock held. */
+static void free_retired(sample_texsys *sys, int parity)
+{
+    ts_tile *t, *next;
+    for (t = sys->retired[parity]; t; t = next) {
+        next = t->retired;
+        sys->retired_bytes -= t->bytes;
+        free(t);
+    }
+    sys->retired[parity] = NULL;
+}
+
+static void ts_advance(sample_texsys *sys)
+{
+    const int old = (int)((sys->epoch + 1) & 1); /* parity of epoch − 1 */
+    if (sys->active[old] != 0) return;
+    free_retired(sys, old);
+    sys->epoch++;
+    /* No batch at all: nothing evicted can be held. */
+    if (sys->active[0] + sys->active[1] == 0) {
+        free_retired(sys, 0);
+        free_retired(sys, 1);
+    }
+    note_memory(sys);
+}
+
+uintptr_t io_ts_reads_begin(const struct ls_texel_source *src)
+{
+    sample_texsys *sys = ((const ts_head *)src)->sys;
+    uint64_t ticket;
+    pthread_mutex_lock(&sys->lock);
+    ticket = sys->epoch;
+    sys->active[ticket & 1]++;
+    pthread_mutex_unlock(&sys->lock);
+    return (uintptr_t)ticket;
+}
+
+void io_ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket)
+{
+    sample_texsys *sys = ((const ts_head *)src)->sys;
+    pthread_mutex_lock(&sys->lock);
+    sys->active[ticket & 1]--;
+    ts_advance(sys);
+    pthread_mutex_unlock(&sys->lock);
+}
+
+void io_ts_cache_drain(sample_texsys *sys)
+{
+    free_retired(sys, 0);
+    free_retired(sys, 1);
+}
+
+/* ---- The clock (sys->lock held) ------------------------------------------ */
+
+static void ring_insert(sample_texsys *sys, ts_tile *t)
+{
+    if (!sys->hand) {
+        t->prev = t->next = t;
+        sys->hand = t;
+        return;
+    }
+    /* Just behind the hand: the last the sweep reaches. */
+    t->next = sys->hand;
+    t->prev = sys->hand->prev;
+    t->prev->next = t;
+    sys->hand->prev = t;
+}
+
+static void ring_remove(sample_texsys *sys, ts_tile *t)
+{
+    if (t->next == t) {
+        sys->hand = NULL;
+    } else {
+        t->prev->next = t->next;
+        t->next->prev = t->prev;
+        if (sys->hand == t) sys->hand = t->next;
+    }
+}
+
+/* Evict one tile: the first from the hand on whose reference bit is clear,
+ * clearing the bits it passes (the clock approximation of least recently
+ * used, as OpenImageIO's ImageCache evicts). Its slot empties now; its
+ * memory waits for the epochs. */
+static void ts_evict_one(sample_texsys *sys)
+{
+    ts_tile *t = sys->hand;
+    while (atomic_exchange_explicit(&t->used, 0, memory_order_relaxed)) t = t->next;
+    sys->hand = t;
+    ring_remove(sys, t);
+    atomic_store_explicit(&t->file->slots[t->lv][t->slot], NULL, memory_order_release);
+    sys->resident -= t->bytes;
+    sys->retired_bytes += t->bytes;
+    t->retired = sys->retired[sys->epoch & 1];
+    sys->retired[sys->epoch & 1] = t;
+    sys->st.evictions++;
+}
+
+/* Room for `bytes` more under the limit, evicting as needed, then the
+ * tile's memory; NULL when it cannot be had. */
+static ts_tile *ts_tile_alloc(ts_file *f, int lv, size_t slot, size_t px_bytes)
+{
+    sample_texsys *sys = f->h.sys;
+    const size_t bytes = sizeof(ts_tile) + px_bytes;
+    ts_tile *t = NULL;
+    pthread_mutex_lock(&sys->lock);
+    ts_advance(sys);
+    while (sys->hand && sys->resident + bytes > sys->limit) ts_evict_one(sys);
+    if (sys->fail_allocs > 0) {
+        sys->fail_allocs--;
+    } else {
+        t = (ts_tile *)calloc(1, bytes);
+    }
+    if (t) {
+        t->file = f;
+        t->lv = lv;
+        t->slot = slot;
+        t->bytes = bytes;
+        t->px = (unsigned char *)(t + 1);
+        sys->resident += bytes;
+        note_memory(sys);
+    }
+    pthread_mutex_unlock(&sys->lock);
+    return t;
+}
+
+/* A loaded tile into the ring and its slot. */
+static void ts_publish(ts_file *f, ts_tile *t, size_t texel_bytes)
+{
+    sample_texsys *sys = f->h.sys;
+    pthread_mutex_lock(&sys->lock);
+    atomic_store_explicit(&t->used, 1, memory_order_relaxed);
+    ring_insert(sys, t);
+    sys->st.tiles_read++;
+    sys->st.bytes_read += (uint64_t)(t->bytes - sizeof(ts_tile)) / texel_bytes * texel_bytes;
+    atomic_store_explicit(&f->slots[t->lv][t->slot], t, memory_order_release);
+    pthread_mutex_unlock(&sys->lock);
+}
+
+static void ts_record_error(ts_file *f, const sample_error *e)
+{
+    sample_texsys *sys = f->h.sys;
+    pthread_mutex_lock(&sys->lock);
+    if (f->nerrors++ == 0) f->first_error = *e;
+    sys->st.errors++;
+    pthread_mutex_unlock(&sys->lock);
+}
+
+/* ---- Open files ----------------------------------------------------------- */
+
+/* Close the least recently used reader other than f's whose lock is free
+ * (sys->lock held); 0 if none could be closed. */
+static int close_lru_reader(sample_texsys *sys, const ts_file *f)
+{
+    ts_file *g, *best = NULL;
+    for (g = sys->files; g; g = g->next) {
+        if (g == f || !g->open) continue;
+        if (best && g->last_open >= best->last_open) continue;
+        if (!ts_trylock(&g->io_lock)) continue;
+        if (best) ts_unlock(&best->io_lock);
+        best = g;
+    }
+    if (!best) return 0;
+    io_reader_close(best->reader);
+    best->reader = NULL;
+    best->open = 0;
+    sys->open_files--;
+    ts_unlock(&best->io_lock);
+    return 1;
+}
+
+static sample_status ts_reader_acquire(ts_file *f, sample_error *err)
+{
+    sample_texsys *sys = f->h.sys;
+    sample_status st;
+    pthread_mutex_lock(&sys->lock);
+    f->last_open = ++sys->clock;
+    if (f->reader) {
+        pthread_mutex_unlock(&sys->lock);
+        return SAMPLE_OK;
+    }
+    /* Over the limit only while every other open file is being read. */
+    while (sys->open_files >= sys->o.max_open_files && close_lru_reader(sys, f)) {
+    }
+    sys->open_files++;
+    f->open = 1;
+    if (sys->open_files > sys->st.peak_open_files) sys->st.peak_open_files = sys->open_files;
+    sys->st.files_opened++;
+    pthread_mutex_unlock(&sys->lock);
+    st = sample_io_check_regular_file(f->path, "texture", err);
+    if (st == SAMPLE_OK) st = io_reader_open(f->path, NULL, 0, NULL, &f->reader, err);
+    if (st != SAMPLE_OK) {
+        pthread_mutex_lock(&sys->lock);
+        sys->open_files--;
+        f->open = 0;
+        pthread_mutex_unlock(&sys->lock);
+    }
+    return st;
+}
+
+/* ---- Loads ---------------------------------------------------------------- */
+
+static int min_int(int a, int b) { return a < b ? a : b; }
+
+/* Texels of level lv's tile (tx, ty) of `from` (resident) into t. */
+static void copy_tile(const ts_file *f, const sample_texture *from, int lv, int tx, int ty, ts_tile *t)
+{
+    const struct sample_level *L = &from->level[lv];
+    const int side = 1 << f->log2, i0 = tx * side, j0 = ty * side;
+    const int w = min_int(side, L->w - i0), h = min_int(side, L->h - j0);
+    const size_t tb = from->texel_bytes;
+    int j;
+    for (j = 0; j < h; ++j)
+        memcpy(t->px + (size_t)j * (size_t)side * tb, L->data + (size_t)(j0 + j) * L->stride + (size_t)i0 * tb,
+               (size_t)w * tb);
+}
+
+static size_t tile_px_bytes(const ts_file *f)
+{
+    return ((size_t)1 << (2 * f->log2)) * f->tex->texel_bytes;
+}
+
+/* A file read whole (texsys.h, section 2): the texture sample_io_read_texture
+ * makes, the wanted tile from it, and as many others as fit without
+ * evicting (they would otherwise be read whole again). */
+static ts_tile *load_whole(ts_file *f, int lv, int tx, int ty, sample_error *err)
+{
+    sample_texsys *sys = f->h.sys;
+    sample_io_options o;
+    sample_mip_params mip;
+    sample_texture *tex = NULL;
+    ts_tile *want = NULL;
+    int k, x, y;
+    sample_io_options_init(&o);
+    o.colorspace = sys->colorspace;
+    o.mip_wrap_from_file = 1;
+    sample_mip_params_init(&mip);
+    if (io_read_texture_col(f->path, sys->col, &o, &mip, &tex, err) != SAMPLE_OK) return NULL;
+    pthread_mutex_lock(&sys->lock);
+    sys->st.files_opened++;
+    pthread_mutex_unlock(&sys->lock);
+    if (tex->nlevels != f->tex->nlevels || tex->width != f->tex->width || tex->height != f->tex->height ||
+        tex->format != f->tex->format || tex->channels != f->tex->channels) {
+        sample_error_set(err, SAMPLE_E_CORRUPT, "'%s' changed since it was opened", f->path);
+        sample_texture_destroy(tex);
+        return NULL;
+    }
+    for (k = 0; k < tex->nlevels; ++k)
+        for (y = 0; y < f->nty[k]; ++y)
+            for (x = 0; x < f->ntx[k]; ++x) {
+                const size_t slot = (size_t)y * (size_t)f->ntx[k] + (size_t)x;
+                const int wanted = k == lv && x == tx && y == ty;
+                ts_tile *t;
+                if (!wanted) {
+                    int room;
+                    if (atomic_load_explicit(&f->slots[k][slot], memory_order_acquire)) continue;
+                    pthread_mutex_lock(&sys->lock);
+                    room = sys->resident + sizeof(ts_tile) + tile_px_bytes(f) <= sys->limit;
+                    pthread_mutex_unlock(&sys->lock);
+                    if (!room) continue;
+                }
+                t = ts_tile_alloc(f, k, slot, tile_px_bytes(f));
+                if (!t) {
+                    if (wanted)
+                        sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a tile of '%s'", f->path);
+                    continue;
+                }
+                copy_tile(f, tex, k, x, y, t);
+                ts_publish(f, t, tex->texel_bytes);
+                if (wanted) want = t;
+            }
+    sample_texture_destroy(tex);
+    return want;
+}
+
+/* A tile of a tiled file: read_tiles, then the plan (conversion,
+ * premultiplication, narrowing) as whole levels get it. */
+static ts_tile *load_tile(ts_file *f, int lv, int tx, int ty, size_t slot, sample_error *err)
+{
+    const struct sample_level *L = &f->tex->level[lv];
+    const int side = 1 << f->log2, i0 = tx * side, j0 = ty * side;
+    const int w = min_int(side, L->w - i0), h = min_int(side, L->h - j0);
+    const size_t tb = f->tex->texel_bytes, n = (size_t)w * (size_t)h;
+    unsigned char *buf;
+    ts_tile *t;
+    int j;
+    sample_status st = ts_reader_acquire(f, err);
+    if (st != SAMPLE_OK) return NULL;
+    buf = (unsigned char *)malloc(n * (size_t)f->plan.nchan * 4);
+    if (!buf) {
+        sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes to read a tile", n * 16);
+        return NULL;
+    }
+    st = io_reader_read_tiles(f->reader, lv, i0, j0, i0 + w, j0 + h, f->plan.read_as, f->plan.nchan, buf, err);
+    if (st == SAMPLE_OK) st = io_plan_apply(f->h.sys->col, &f->plan, buf, n, err);
+    if (st != SAMPLE_OK) {
+        free(buf);
+        return NULL;
+    }
+    t = ts_tile_alloc(f, lv, slot, tile_px_bytes(f));
+    if (!t) {
+        sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a tile of '%s' under the memory limit", f->path);
+        free(buf);
+        return NULL;
+    }
+    for (j = 0; j < h; ++j) memcpy(t->px + (size_t)j * (size_t)side * tb, buf + (size_t)j * (size_t)w * tb, (size_t)w * tb);
+    free(buf);
+    ts_publish(f, t, tb);
+    return t;
+}
+
+/* The slot was empty: load the tile (one loader per file at a time), or
+ * mark it failed. */
+static SAMPLE_NOINLINE ts_tile *ts_miss(ts_file *f, int lv, int tx, int ty, size_t slot)
+{
+    sample_texsys *sys = f->h.sys;
+    sample_error err;
+    ts_tile *t;
+    pthread_mutex_lock(&sys->lock);
+    sys->st.misses++;
+    pthread_mutex_unlock(&sys->lock);
+    ts_lock_take(&f->io_lock);
+    t = atomic_load_explicit(&f->slots[lv][slot], memory_order_acquire);
+    if (!t) {
+        memset(&err, 0, sizeof err);
+        t = f->file_tiled ? load_tile(f, lv, tx, ty, slot, &err) : load_whole(f, lv, tx, ty, &err);
+        if (!t) {
+            ts_record_error(f, &err);
+            t = &ts_failed;
+            atomic_store_explicit(&f->slots[lv][slot], t, memory_order_release);
+        }
+    }
+    ts_unlock(&f->io_lock);
+    return t;
+}
+
+static const unsigned char *ts_texel(const struct ls_texel_source *src, int lv, int i, int j, int layer)
+{
+    ts_file *f = (ts_file *)(uintptr_t)src; /* the cache changes behind a const source */
+    const int b = f->log2, m = (1 << b) - 1;
+    const size_t slot = (size_t)(j >> b) * (size_t)f->ntx[lv] + (size_t)(i >> b);
+    ts_tile *t = atomic_load_explicit(&f->slots[lv][slot], memory_order_acquire);
+    (void)layer; /* 2D files */
+    if (SAMPLE_LIKELY(t != NULL)) {
+        if (!atomic_load_explicit(&t->used, memory_order_relaxed))
+            atomic_store_explicit(&t->used, 1, memory_order_relaxed);
+    } else {
+        t = ts_miss(f, lv, i >> b, j >> b, slot);
+    }
+    if (t == &ts_failed) return NULL;
+    return t->px + (((size_t)(j & m) << b) + (size_t)(i & m)) * f->tex->texel_bytes;
+}
+
+/* The texture's destroy hook does nothing: the system owns the file. */
+static void ts_source_destroy(struct ls_texel_source *src) { (void)src; }
+
+sample_status io_ts_file_source_init(ts_file *f, sample_error *err)
+{
+    const int side = 1 << f->log2;
+    uint64_t table = 0;
+    int lv;
+    f->h.base.texel = ts_texel;
+    f->h.base.destroy = ts_source_destroy;
+    f->h.base.reads_begin = io_ts_reads_begin;
+    f->h.base.reads_end = io_ts_reads_end;
+    memcpy(f->h.base.fill, f->h.sys->o.fill, sizeof f->h.base.fill);
+    for (lv = 0; lv < f->tex->nlevels; ++lv) {
+        const struct sample_level *L = &f->tex->level[lv];
+        f->ntx[lv] = (L->w + side - 1) / side;
+        f->nty[lv] = (L->h + side - 1) / side;
+        table += (uint64_t)f->ntx[lv] * (uint64_t)f->nty[lv] * sizeof *f->slots[lv];
+    }
+    /* The table of tile pointers lies outside the limit: one larger than
+     * the whole cache (65536² in tiles of 4 would need 2 GiB) is refused
+     * rather than allocated. */
+    RETURN_ERROR_IF(table > f->h.sys->limit, err, SAMPLE_E_TOO_LARGE,
+                    "'%s': its table of %llu tiles of %d texels a side needs %llu bytes, more than the cache's %zu",
+                    f->path, (unsigned long long)(table / sizeof *f->slots[0]), side, (unsigned long long)table,
+                    f->h.sys->limit);
+    for (lv = 0; lv < f->tex->nlevels; ++lv) {
+        f->slots[lv] = (_Atomic(ts_tile *) *)calloc((size_t)f->ntx[lv] * (size_t)f->nty[lv], sizeof *f->slots[lv]);
+        RETURN_ERROR_IF(!f->slots[lv], err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate the tile table of '%s'", f->path);
+    }
+    return SAMPLE_OK;
+}
+
+/* Its tiles (resident ones leave the ring), tables, reader, texture. */
+void io_ts_file_free(ts_file *f)
+{
+    sample_texsys *sys = f->h.sys;
+    int lv;
+    size_t k;
+    for (lv = 0; lv < SAMPLE_MAX_LEVELS; ++lv) {
+        if (!f->slots[lv]) continue;
+        for (k = 0; k < (size_t)f->ntx[lv] * (size_t)f->nty[lv]; ++k) {
+            ts_tile *t = atomic_load_explicit(&f->slots[lv][k], memory_order_relaxed);
+            if (!t || t == &ts_failed) continue;
+            ring_remove(sys, t);
+            sys->resident -= t->bytes;
+            free(t);
+        }
+        free(f->slots[lv]);
+    }
+    if (f->open) sys->open_files--;
+    io_reader_close(f->reader);
+    if (f->tex) sample_texture_destroy(f->tex);
+    ts_lock_destroy(&f->io_lock);
+    free(f->path);
+    free(f);
+}
+
+void io_texsys_fail_allocs(sample_texsys *sys, int n)
+{
+    pthread_mutex_lock(&sys->lock);
+    sys->fail_allocs = n;
+    pthread_mutex_unlock(&sys->lock);
+}

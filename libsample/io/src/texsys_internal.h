@@ -1,0 +1,149 @@
+/*
+ * The texture system's pieces (doc/texture-system.md):
+ *
+ *   texsys.c       the system: options, open, info, stats, errors
+ *   texsys_cache.c the tile cache: a texel source per file, tile loads,
+ *                  clock eviction under the memory limit, the open-file
+ *                  limit, and the epochs that keep evicted tiles alive
+ *                  until no batch can still read them
+ *   texsys_udim.c  UDIM sets: names, and one virtual texture of tiles
+ *
+ * A texture of the system is a sample_texture (libsample/src/texel.h)
+ * whose texel source is a ts_file (or a ts_udim): libsample's filters
+ * read it through struct ls_texel_source, as they read tiled.c's tiles.
+ *
+ * Locks: sys->lock guards the clock ring, the memory counts, the epochs,
+ * the open-file count, the error records and the stats; a file's io_lock
+ * guards its reader and serializes its tile loads. Order: io_lock, then
+ * sys->lock; another file's io_lock is only ever try-locked (closing it
+ * for the open-file limit). Slots are atomic pointers: readers load them
+ * without a lock.
+ */
+#ifndef SAMPLE_TEXSYS_INTERNAL_H
+#define SAMPLE_TEXSYS_INTERNAL_H
+
+#include "io_internal.h"
+#include "sample/texsys.h"
+#include "texel.h" /* libsample's texel source interface */
+
+#include <pthread.h>
+#include <stdatomic.h>
+
+/* Tiles of files read whole (section 2 of texsys.h): 64 texels a side,
+ * OpenImageIO's default tile. */
+#define TS_AUTOTILE_LOG2 6
+
+typedef struct ts_file ts_file;
+
+/* A first-come, first-served lock (a ticket lock over a mutex and a
+ * condition): a thread that misses waits behind at most one load per
+ * other thread. With an unfair mutex one thread can load tile after tile
+ * while another, its batch's epoch still open, waits — and every tile the
+ * first evicts meanwhile stays allocated (doc/texture-system.md,
+ * "Memory"). */
+typedef struct ts_lock {
+    pthread_mutex_t m;
+    pthread_cond_t c;
+    unsigned long next, serving;
+} ts_lock;
+void io_ts_lock_init(ts_lock *l); /* the rest is texsys_cache.c's */
+
+/* What every texture of a system has first: its texel source, the system
+ * (the epoch hooks find it here) and whether it is a UDIM set. */
+typedef struct ts_head {
+    struct ls_texel_source base; /* first: the texture points at it */
+    sample_texsys *sys;
+    int udim;
+} ts_head;
+
+typedef struct ts_tile {
+    struct ts_tile *prev, *next; /* the clock ring (sys->lock) */
+    struct ts_tile *retired;     /* the retired list of its epoch */
+    ts_file *file;
+    int lv;
+    size_t slot;  /* index in file->slots[lv] */
+    size_t bytes; /* what it counts against the limit */
+    atomic_int used; /* the clock's reference bit */
+    unsigned char *px; /* 2^log2 × 2^log2 texels, row after row */
+} ts_tile;
+
+struct ts_file {
+    ts_head h; /* first */
+    sample_texture *tex;
+    char *path;
+    int log2;       /* cache tiles are 2^log2 texels a side */
+    int file_tiled; /* 1: tiles read from the file; 0: read whole */
+    int ntx[SAMPLE_MAX_LEVELS], nty[SAMPLE_MAX_LEVELS];
+    _Atomic(ts_tile *) *slots[SAMPLE_MAX_LEVELS]; /* NULL: absent */
+    io_reader_info inf;
+    io_plan plan;
+    int has_wrap;
+    sample_wrap wrap_s, wrap_t;
+    ts_lock io_lock;
+    io_reader *reader;  /* io_lock; NULL: closed */
+    int open;           /* sys->lock: counted among the open files */
+    uint64_t last_open; /* sys->lock: when its reader was last used */
+    unsigned long nerrors;   /* sys->lock */
+    sample_error first_error; /* sys->lock */
+    ts_file *next;            /* the system's list */
+};
+
+struct sample_texsys {
+    sample_texsys_options o;
+    char *ocio_config, *colorspace; /* the options' strings, owned */
+    size_t limit;                   /* bytes */
+    io_colour *col;
+    pthread_mutex_t lock;
+    pthread_mutex_t open_lock; /* one open at a time: a name opens once */
+    ts_tile *hand; /* the clock's hand; NULL: no tile resident */
+    size_t resident, retired_bytes;
+    ts_tile *retired[2];     /* tiles evicted in epochs of each parity */
+    uint64_t epoch;          /* batches begun now get this ticket */
+    unsigned long active[2]; /* running batches, by ticket parity */
+    uint64_t clock;          /* open-file recency */
+    int open_files;
+    sample_texsys_stats st;
+    int fail_allocs; /* tests: the next n tile allocations fail */
+    ts_file *files;
+    struct ts_udim *udims;
+};
+
+/* texsys_cache.c */
+/* Fill a file's source: its hooks, fill colour and tile tables for the
+ * levels of f->tex. */
+sample_status io_ts_file_source_init(ts_file *f, sample_error *err);
+void io_ts_file_free(ts_file *f);
+/* The epoch hooks every texture of a system shares. */
+uintptr_t io_ts_reads_begin(const struct ls_texel_source *src);
+void io_ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket);
+/* Free every retired tile (no batch may be running). */
+void io_ts_cache_drain(sample_texsys *sys);
+
+/* texsys.c: sample_batch over chunks of TS_CHUNK queries, each its own
+ * epoch ticket, so that tiles evicted while a long batch runs are freed
+ * as it goes rather than at its end (doc/texture-system.md, "Memory").
+ * map, when given, rewrites chunk b (queries from i0 of a) before it is
+ * sampled, and is called again with i0 = SIZE_MAX after. */
+#define TS_CHUNK 16
+sample_status io_ts_batch_chunks(const sample_texture *tex, const sample_sampler *s, const sample_batch_args *a,
+                              void (*map)(void *ctx, sample_batch_args *b, size_t i0), void *ctx);
+/* texsys.c: open a plain file (no UDIM pattern), or return it if open. */
+sample_status io_ts_open_file(sample_texsys *sys, const char *path, ts_file **out, sample_error *err);
+
+/* texsys_udim.c */
+typedef struct ts_udim ts_udim;
+/* 1 if `name` holds a UDIM pattern. */
+int io_ts_udim_pattern(const char *name);
+sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const sample_texture **out, sample_error *err);
+/* The set `tex` is, or NULL. */
+ts_udim *io_ts_udim_of(const sample_texsys *sys, const sample_texture *tex);
+void io_ts_udim_info(const ts_udim *u, sample_texsys_info *info);
+sample_status io_ts_udim_batch(ts_udim *u, const sample_sampler *s, const sample_batch_args *a);
+/* Failures of the set's files (sys->lock held), the first into *first. */
+unsigned long io_ts_udim_errors(const ts_udim *u, sample_error *first);
+void io_ts_udim_free_all(sample_texsys *sys);
+
+/* Tests (texsys_cache.c): the next n tile allocations of sys fail. */
+void io_texsys_fail_allocs(sample_texsys *sys, int n);
+
+#endif

@@ -1,0 +1,20 @@
+# The texture system (doc/texture-system.md): texsys_cache checks the
+# cache against resident textures, its failures and UDIM sets;
+# texsys_threads samples from several threads while the cache evicts (and
+# runs under ThreadSanitizer in CI: .ci/run).
+if(TARGET sample_io)
+  foreach(name texsys_cache texsys_threads)
+    add_executable(${name} ${CMAKE_CURRENT_SOURCE_DIR}/${name}.c)
+    target_link_libraries(${name} PRIVATE sample_io sample m Threads::Threads)
+    target_include_directories(${name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/libsample/io/src
+      ${PROJECT_SOURCE_DIR}/libsample/src)
+    target_compile_options(${name} PRIVATE ${SAMPLE_WARNINGS})
+    set(scratch ${CMAKE_CURRENT_BINARY_DIR}/${name}_scratch)
+    # texsys_cache also runs `texsample lookup --cache-mb` (an empty
+    # argument where texsample is not built: that part skipped).
+    add_test(NAME ${name} COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec \"$0\" \"$@\""
+      $<TARGET_FILE:${name}> ${PROJECT_SOURCE_DIR}/testimages ${scratch}
+      "$<$<TARGET_EXISTS:texsample>:$<TARGET_FILE:texsample>>")
+    set_tests_properties(${name} PROPERTIES TIMEOUT 120 SKIP_RETURN_CODE 77 ENVIRONMENT "OCIO=;${SAMPLE_IO_SAN_ENV}")
+  endforeach()
+endif()
