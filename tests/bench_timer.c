@@ -35,7 +35,7 @@ static int timing_ok(const bench_timing *t, int runs)
 static void taking_turns(void)
 {
     const bench_engine *a = engine("trilinear", 0), *b = engine("ewa", 0);
-    bench_texture t = {tex, NULL};
+    bench_texture t = {.ours = tex};
     bench_timer *ta, *tb;
     bench_timing ra, rb;
     int r;
@@ -57,7 +57,7 @@ static void taking_turns(void)
 static void pool_and_failures(void)
 {
     const bench_engine *a = engine("bilinear", 0), *o = engine("bilinear", 1);
-    bench_texture t = {tex, NULL};
+    bench_texture t = {.ours = tex};
     bench_timing r2, early;
     bench_timer *tm;
     memset(&early, 0, sizeof early);

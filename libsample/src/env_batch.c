@@ -21,6 +21,7 @@ static sample_status env_batch(const sample_texture *tex, const sample_sampler *
     sample_sampler s;
     sample_ctx c;
     sample_status st;
+    uintptr_t ticket;
     size_t i;
     if (!tex || !a || tex->kind != kind) return SAMPLE_E_INVALID_ARGUMENT;
     if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
@@ -33,6 +34,7 @@ static sample_status env_batch(const sample_texture *tex, const sample_sampler *
     s.wrap_s = s.wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
     ls_ctx_init(&c, tex, &s, &ls_isa_kernels_reference);
     c.env = mode;
+    ticket = tex_reads_begin(tex);
     for (i = 0; i < a->count; ++i) {
         const sample_query3 *q = &a->queries[i];
         const float *bias = a->lod_bias ? &a->lod_bias[i] : NULL;
@@ -56,6 +58,7 @@ static sample_status env_batch(const sample_texture *tex, const sample_sampler *
         one.stats = st3;
         ls_reference_query(&fc, &one, 0);
     }
+    tex_reads_end(tex, ticket);
     return SAMPLE_OK;
 }
 

@@ -139,6 +139,7 @@ sample_status sample_batch_3d(const sample_texture *tex, const sample_sampler *s
 {
     sample_ctx c;
     sample_status st;
+    uintptr_t ticket;
     size_t i;
     if (!tex || !a || tex->kind != SAMPLE_TEXTURE_3D) return SAMPLE_E_INVALID_ARGUMENT;
     if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
@@ -147,6 +148,8 @@ sample_status sample_batch_3d(const sample_texture *tex, const sample_sampler *s
     /* The reference kernels: volumes have no fast path, and the footprint
      * filters' readers below are the texel-by-texel ones. */
     ls_ctx_init(&c, tex, smp, &ls_isa_kernels_reference);
+    ticket = tex_reads_begin(tex); /* a texel source that evicts (texel.h) */
     for (i = 0; i < a->count; ++i) vol_query(&c, a, i);
+    tex_reads_end(tex, ticket);
     return SAMPLE_OK;
 }
