@@ -85,13 +85,13 @@ class Image(ctypes.Structure):
 
 class MipParams(ctypes.Structure):
     _fields_ = [("filter", ctypes.c_int), ("wrap_s", ctypes.c_int), ("wrap_t", ctypes.c_int),
-                ("max_levels", ctypes.c_int)]
+                ("max_levels", ctypes.c_int), ("wrap_r", ctypes.c_int)]
 
 
 class TextureInfo(ctypes.Structure):
     _fields_ = [("width", ctypes.c_int), ("height", ctypes.c_int), ("channels", ctypes.c_int),
                 ("levels", ctypes.c_int), ("format", ctypes.c_int), ("bytes", ctypes.c_size_t),
-                ("kind", ctypes.c_int)]
+                ("kind", ctypes.c_int), ("depth", ctypes.c_int)]
 
 
 class SamplerState(ctypes.Structure):
