@@ -77,6 +77,12 @@ def volume(array, format=None, srgb=False, what="texels"):
     return vol, a
 
 
+def as_level(described):
+    """The (struct, array) that image() or volume() gives as the ([struct],
+    [array]) of a level of one struct (faces() gives six)."""
+    return [described[0]], [described[1]]
+
+
 def faces(faces, format=None, srgb=False, what="faces"):
     """The six sample_images of a cube map's level: `faces` a (6, N, N[, C])
     array or a sequence of six (N, N[, C]) arrays in OpenGL's order +X, -X,

@@ -79,16 +79,9 @@ class Texture(CubeVolume):
         """A texture from its levels as given (sample_texture_create_levels):
         level k must be max(1, W >> k) x max(1, H >> k) with the base's
         channels and dtype; a partial chain is allowed."""
-        levels = list(levels)
-        if not levels:
-            raise ValueError("from_levels: at least one level")
-        imgs = (_lib.Image * len(levels))()
-        keep = []
-        for k, lv in enumerate(levels):
-            imgs[k], a = _arrays.image(lv, format, srgb, "levels[%d]" % k)
-            keep.append(a)
-        return cls._wrap(cls._create(lambda out, err: _lib.core.sample_texture_create_levels(
-            imgs, len(levels), out, err), "sample_texture_create_levels"), True)
+        return cls._create_from_levels("from_levels", levels, _lib.Image, 1,
+                                       lambda lv, what: _arrays.as_level(_arrays.image(lv, format, srgb, what)),
+                                       _lib.core.sample_texture_create_levels)
 
     @classmethod
     def load(cls, path, colorspace=None, ocio_config=None, mip="box", wrap="clamp_to_edge", max_levels=0,

@@ -87,17 +87,9 @@ class CubeVolume:
         (sample_texture_create_cube_levels): levels[k] holds the six faces
         of level k as Texture.cube takes them, each max(1, N >> k) square;
         a partial chain is allowed."""
-        levels = list(levels)
-        if not levels:
-            raise ValueError("cube_from_levels: at least one level")
-        imgs = (_lib.Image * (6 * len(levels)))()
-        keep = []
-        for k, lv in enumerate(levels):
-            faces, arrays = _arrays.faces(lv, format, srgb, "levels[%d]" % k)
-            imgs[6 * k:6 * k + 6] = faces[:]
-            keep += arrays
-        return cls._wrap(cls._create(lambda out, err: _lib.core.sample_texture_create_cube_levels(
-            imgs, len(levels), out, err), "sample_texture_create_cube_levels"), True)
+        return cls._create_from_levels("cube_from_levels", levels, _lib.Image, 6,
+                                       lambda lv, what: _arrays.faces(lv, format, srgb, what),
+                                       _lib.core.sample_texture_create_cube_levels)
 
     @classmethod
     def volume(cls, array, format=None, srgb=False, mip="box", wrap="clamp_to_edge", max_levels=0):
@@ -119,16 +111,26 @@ class CubeVolume:
         (sample_texture_create_3d_levels): levels[k] a (D, H, W[, C]) array
         of max(1, D >> k) x max(1, H >> k) x max(1, W >> k) with the base's
         channels and dtype; a partial chain is allowed."""
+        return cls._create_from_levels("volume_from_levels", levels, _lib.Volume, 1,
+                                       lambda lv, what: _arrays.as_level(_arrays.volume(lv, format, srgb, what)),
+                                       _lib.core.sample_texture_create_3d_levels)
+
+    @classmethod
+    def _create_from_levels(cls, name, levels, ctype, per_level, describe, create):
+        """A texture from caller-supplied levels through `create` (one of
+        sample_texture_create_*levels): describe(level, what) gives a
+        level's `per_level` C structs of type `ctype` and the arrays they
+        point into, which are kept until `create` has copied them."""
         levels = list(levels)
         if not levels:
-            raise ValueError("volume_from_levels: at least one level")
-        vols = (_lib.Volume * len(levels))()
+            raise ValueError("%s: at least one level" % name)
+        structs = (ctype * (per_level * len(levels)))()
         keep = []
         for k, lv in enumerate(levels):
-            vols[k], a = _arrays.volume(lv, format, srgb, "levels[%d]" % k)
-            keep.append(a)
-        return cls._wrap(cls._create(lambda out, err: _lib.core.sample_texture_create_3d_levels(
-            vols, len(levels), out, err), "sample_texture_create_3d_levels"), True)
+            level_structs, arrays = describe(lv, "levels[%d]" % k)
+            structs[per_level * k:per_level * (k + 1)] = level_structs[:]
+            keep += arrays
+        return cls._wrap(cls._create(lambda out, err: create(structs, len(levels), out, err), create.__name__), True)
 
     # ---- sampling ----------------------------------------------------------
 
