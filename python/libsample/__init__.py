@@ -8,7 +8,9 @@ A thin ctypes layer over libsample's C API (sample.h) and libsample_io's
     smp = ls.Sampler(min_filter="linear_mipmap_linear", wrap="repeat")
     rgba = tex.sample(smp, s=[0.5], t=[0.5], dsdx=1 / 16, dtdy=1 / 16)
 
-Texture    a mip-mapped texture (numpy arrays, image files)
+Texture    a mip-mapped texture (numpy arrays, image files); cube maps
+           (Texture.cube), 3D textures (Texture.volume) and lat-long maps
+           sampled by 9-float queries (Texture.sample3)
 Sampler    sampler state (sample_sampler's fields as keywords)
 freq       the frequency response of filters (texsample freq), callables too
 compare    error against the ground truth (texsample compare), callables too

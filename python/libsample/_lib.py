@@ -114,6 +114,17 @@ class BatchArgs(ctypes.Structure):
                 ("drgba_dt", ctypes.c_void_p), ("stats", ctypes.c_void_p)]
 
 
+class Volume(ctypes.Structure):
+    _fields_ = [("width", ctypes.c_int), ("height", ctypes.c_int), ("depth", ctypes.c_int),
+                ("channels", ctypes.c_int), ("format", ctypes.c_int), ("data", ctypes.c_void_p),
+                ("row_stride", ctypes.c_size_t), ("slice_stride", ctypes.c_size_t)]
+
+
+class Batch3Args(ctypes.Structure):
+    _fields_ = [("count", ctypes.c_size_t), ("queries", ctypes.c_void_p), ("lod_bias", ctypes.c_void_p),
+                ("rgba", ctypes.c_void_p), ("stats", ctypes.c_void_p)]
+
+
 def _declare(lib, name, restype, *argtypes):
     f = getattr(lib, name)
     f.restype = restype
@@ -136,6 +147,17 @@ for _n, _r, _a in [
     ("sample_sampler_validate", ctypes.c_int, [P(SamplerState)]),
     ("sample_batch", ctypes.c_int, [ctypes.c_void_p, P(SamplerState), P(BatchArgs)]),
     ("sample_isa_name", ctypes.c_char_p, []),
+    ("sample_texture_create_cube", ctypes.c_int, [P(Image), P(MipParams), P(ctypes.c_void_p), P(Error)]),
+    ("sample_texture_create_cube_levels", ctypes.c_int, [P(Image), ctypes.c_int, P(ctypes.c_void_p), P(Error)]),
+    ("sample_texture_create_3d", ctypes.c_int, [P(Volume), P(MipParams), P(ctypes.c_void_p), P(Error)]),
+    ("sample_texture_create_3d_levels", ctypes.c_int, [P(Volume), ctypes.c_int, P(ctypes.c_void_p), P(Error)]),
+    ("sample_texture_level_size3", ctypes.c_int,
+     [ctypes.c_void_p, ctypes.c_int, P(ctypes.c_int), P(ctypes.c_int), P(ctypes.c_int)]),
+    ("sample_texture_texel_layer", None,
+     [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_int, c_float_p]),
+    ("sample_batch_cube", ctypes.c_int, [ctypes.c_void_p, P(SamplerState), P(Batch3Args)]),
+    ("sample_batch_latlong", ctypes.c_int, [ctypes.c_void_p, P(SamplerState), P(Batch3Args)]),
+    ("sample_batch_3d", ctypes.c_int, [ctypes.c_void_p, P(SamplerState), P(Batch3Args)]),
 ]:
     _declare(core, _n, _r, *_a)
 for _kind in ("wrap", "filter", "cubic", "footprint", "mipgen"):

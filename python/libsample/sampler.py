@@ -122,3 +122,12 @@ def _field(st, f):
     if f == "border_color":
         return tuple(v)
     return v
+
+
+def as_sampler(x):
+    """x as a Sampler: a Sampler as it is, a dict as its keywords."""
+    if isinstance(x, dict):
+        return Sampler(**x)
+    if not isinstance(x, Sampler):
+        raise TypeError("sampler: a libsample.Sampler (or a dict of its keywords), not %r" % type(x).__name__)
+    return x

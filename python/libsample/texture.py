@@ -1,23 +1,17 @@
 """Textures: numpy arrays or image files in, sampled values out."""
-import collections
 import ctypes
 import dataclasses
 import os
 
 import numpy as np
 
-from . import _errors, _lib, _names
+from . import _arrays, _errors, _lib, _names
+from ._arrays import STATS_DTYPE, Samples
 from ._handle import Handle
-from .sampler import Sampler
+from .sampler import as_sampler
+from .texture3 import CubeVolume
 
-# sample_stats (sample.h), field for field.
-STATS_DTYPE = np.dtype([("texels", "<u4"), ("level0", "<i2"), ("level1", "<i2"),
-                        ("level_frac", "<f4"), ("lod", "<f4")])
-assert STATS_DTYPE.itemsize == 16
-
-# Formats by their sample_format_name, and the numpy dtype of each.
-_FORMATS = {_names.name("format", i): i for i in range(_names._COUNTS["format"])}
-_FORMAT_DTYPE = {"float": np.float32, "half": np.float16, "unorm8": np.uint8, "srgb8": np.uint8}
+__all__ = ["Texture", "TextureInfo", "Samples", "STATS_DTYPE"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -30,93 +24,10 @@ class TextureInfo:
     format: str   # "float", "half", "unorm8", "srgb8"
     bytes: int    # texel memory of every level
     kind: str     # "2d", "cube", "3d"
+    depth: int = 1  # layers of level 0: a 3D texture's slices, a cube map's 6 faces, else 1
 
 
-Samples = collections.namedtuple("Samples", "rgba drgba_ds drgba_dt stats")
-Samples.__doc__ = """What Texture.sample returns when derivatives or stats are asked for:
-rgba (N, 4) float32; drgba_ds, drgba_dt (N, 4) float32 or None; stats (N,)
-of STATS_DTYPE or None."""
-
-
-def _format_of(a, format, srgb):
-    if format is not None:
-        if format not in _FORMATS:
-            raise ValueError("format: %r is not one of %s" % (format, ", ".join(_FORMATS)))
-        if srgb and format != "srgb8":
-            raise ValueError("srgb=True is format 'srgb8', not %r" % format)
-        return format
-    kind = a.dtype
-    if kind == np.uint8:
-        return "srgb8" if srgb else "unorm8"
-    if srgb:
-        raise ValueError("srgb=True needs uint8 texels, not %s (float texels are linear)" % kind)
-    if kind == np.float16:
-        return "half"
-    if kind in (np.float32, np.float64):
-        return "float"
-    raise TypeError("texels: float32, float16 or uint8 (float64 is stored as float32), not %s" % kind)
-
-
-def _image(array, format=None, srgb=False, what="texels"):
-    """A sample_image over a C-contiguous copy (or view) of `array`; returns
-    (image, the array it points into, which must outlive the C call)."""
-    a = np.asarray(array)
-    if a.ndim == 2:
-        a = a[:, :, np.newaxis]
-    if a.ndim != 3 or not 1 <= a.shape[2] <= 4:
-        raise ValueError("%s: an H x W or H x W x C array with C = 1 to 4, not shape %s" % (what, a.shape))
-    fmt = _format_of(a, format, srgb)
-    want = _FORMAT_DTYPE[fmt]
-    if a.dtype != want:
-        if want == np.uint8 or a.dtype.kind != "f":
-            raise TypeError("%s: format %r stores %s; the array is %s"
-                            % (what, fmt, np.dtype(want).name, a.dtype))
-    a = np.ascontiguousarray(a, dtype=want)
-    img = _lib.Image(width=a.shape[1], height=a.shape[0], channels=a.shape[2],
-                     format=_FORMATS[fmt], data=a.ctypes.data, row_stride=0)
-    return img, a
-
-
-def _mip_params(mip, wrap, max_levels):
-    p = _lib.MipParams()
-    _lib.core.sample_mip_params_init(ctypes.byref(p))
-    p.filter = 0 if mip is None else _names.parse("mipgen", mip, "mip")
-    ws, wt = (wrap, wrap) if isinstance(wrap, (str, int)) else wrap
-    p.wrap_s = _names.parse("wrap", ws, "wrap")
-    p.wrap_t = _names.parse("wrap", wt, "wrap")
-    if int(max_levels) < 0:
-        raise ValueError("max_levels: 0 (all) or more, not %d" % max_levels)
-    p.max_levels = int(max_levels)
-    return p
-
-
-def _float_array(x, name, shape_tail, n=None):
-    """x as a C-contiguous float32 array of shape (N,) + shape_tail: the
-    same memory when it already is one (zero-copy), else a copy."""
-    a = np.asarray(x)
-    if a.dtype.kind not in "fiu":
-        raise TypeError("%s: a float32 array (or real numbers), not dtype %s" % (name, a.dtype))
-    want = (n if n is not None else (a.shape[0] if a.ndim else -1),) + shape_tail
-    if a.shape != want:
-        spelled = " x ".join("N" if i == 0 and n is None else str(d) for i, d in enumerate(want))
-        raise ValueError("%s: shape (%s) expected, not %s" % (name, spelled, a.shape))
-    return np.ascontiguousarray(a, dtype=np.float32)
-
-
-def _out_array(x, name, n):
-    if x is None:
-        return np.empty((n, 4), np.float32)
-    if not (isinstance(x, np.ndarray) and x.dtype == np.float32 and x.shape == (n, 4)
-            and x.flags.c_contiguous and x.flags.writeable):
-        raise ValueError("%s: a writable C-contiguous float32 array of shape (%d, 4)" % (name, n))
-    return x
-
-
-def _ptr(a):
-    return None if a is None else a.ctypes.data
-
-
-class Texture:
+class Texture(CubeVolume):
     """An immutable, mip-mapped texture (sample_texture).
 
     ``Texture(array, format=None, srgb=False, mip="box", wrap="clamp_to_edge",
@@ -133,6 +44,9 @@ class Texture:
 
     ``Texture.load(path, ...)`` reads an image file through libsample_io,
     ``Texture.from_levels(arrays)`` takes the levels as given.
+    ``Texture.cube(faces)`` and ``Texture.volume(array)`` make cube maps and
+    3D textures, sampled with ``sample3``; ``sample3(..., latlong=True)``
+    reads a 2D texture as a lat-long environment map (doc/python.md).
 
     The texture owns its C object: ``close()`` (or a ``with`` block) frees
     it, after which every use raises ValueError; it is freed as well when
@@ -141,8 +55,8 @@ class Texture:
     """
 
     def __init__(self, array, format=None, srgb=False, mip="box", wrap="clamp_to_edge", max_levels=0):
-        img, keep = _image(array, format, srgb)
-        params = _mip_params(mip, wrap, max_levels)
+        img, keep = _arrays.image(array, format, srgb)
+        params = _arrays.mip_params(mip, wrap, max_levels)
         self._handle = Handle(self._create(lambda out, err: _lib.core.sample_texture_create(
             ctypes.byref(img), ctypes.byref(params), out, err), "sample_texture_create"))
         del keep
@@ -165,16 +79,9 @@ class Texture:
         """A texture from its levels as given (sample_texture_create_levels):
         level k must be max(1, W >> k) x max(1, H >> k) with the base's
         channels and dtype; a partial chain is allowed."""
-        levels = list(levels)
-        if not levels:
-            raise ValueError("from_levels: at least one level")
-        imgs = (_lib.Image * len(levels))()
-        keep = []
-        for k, lv in enumerate(levels):
-            imgs[k], a = _image(lv, format, srgb, "levels[%d]" % k)
-            keep.append(a)
-        return cls._wrap(cls._create(lambda out, err: _lib.core.sample_texture_create_levels(
-            imgs, len(levels), out, err), "sample_texture_create_levels"), True)
+        return cls._create_from_levels("from_levels", levels, _lib.Image, 1,
+                                       lambda lv, what: _arrays.as_level(_arrays.image(lv, format, srgb, what)),
+                                       _lib.core.sample_texture_create_levels)
 
     @classmethod
     def load(cls, path, colorspace=None, ocio_config=None, mip="box", wrap="clamp_to_edge", max_levels=0,
@@ -195,7 +102,7 @@ class Texture:
         o.float_storage = int(bool(float_storage))
         o.premultiply = int(bool(premultiply))
         o.max_bytes = int(max_bytes)
-        params = _mip_params(mip, wrap, max_levels)
+        params = _arrays.mip_params(mip, wrap, max_levels)
         p = os.fsencode(path)
         return cls._wrap(cls._create(lambda out, err: io.sample_io_read_texture(
             p, ctypes.byref(o), ctypes.byref(params), out, err), "sample_io_read_texture"), True)
@@ -226,60 +133,82 @@ class Texture:
         if self.closed:
             return "<libsample.Texture (closed)>"
         i = self.info
-        return "<libsample.Texture %s %dx%d x%d %s, %d levels>" % (i.kind, i.width, i.height, i.channels,
-                                                                  i.format, i.levels)
+        size = "%dx%d" % (i.width, i.height) + ("x%d" % i.depth if i.kind == "3d" else "")
+        return "<libsample.Texture %s %s x%d %s, %d levels>" % (i.kind, size, i.channels, i.format, i.levels)
 
     # ---- what it holds -----------------------------------------------------
 
     @property
     def info(self):
-        """TextureInfo: size, channels, level count, format, bytes, kind."""
+        """TextureInfo: size, channels, level count, format, bytes, kind,
+        depth (layers of level 0, as sample_texture_info gives it: a 3D
+        texture's slices, a cube map's 6 faces, 1 for a 2D texture)."""
         c = _lib.TextureInfo()
         with self._handle as p:
             _lib.core.sample_texture_info_get(p, ctypes.byref(c))
         return TextureInfo(c.width, c.height, c.channels, c.levels, _names.name("format", c.format),
-                           c.bytes, _names.name("texture_kind", c.kind))
+                           c.bytes, _names.name("texture_kind", c.kind), c.depth)
+
+    @property
+    def kind(self):
+        """"2d", "cube" or "3d" (info.kind; a texture never changes kind)."""
+        k = getattr(self, "_kind", None)
+        if k is None:
+            k = self._kind = self.info.kind
+        return k
 
     def level_size(self, level):
-        """(width, height) of a level."""
-        w, h = ctypes.c_int(), ctypes.c_int()
-        with self._handle as p:
-            if not _lib.core.sample_texture_level_size(p, int(level), ctypes.byref(w), ctypes.byref(h)):
-                raise IndexError("level %d: the texture has %d levels" % (level, self.info.levels))
-        return w.value, h.value
+        """(width, height) of a level, of every kind: a cube map's face is
+        width x height, a 3D texture's slice too (level_size3 adds the
+        third size)."""
+        return self.level_size3(level)[:2]
 
-    def texel(self, level, i, j):
+    def level_size3(self, level):
+        """(width, height, layers) of a level (sample_texture_level_size3):
+        layers is the depth of a 3D texture's level, 6 for a cube map (its
+        faces), 1 for a 2D texture."""
+        w, h, d = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
+        with self._handle as p:
+            if not _lib.core.sample_texture_level_size3(p, int(level), ctypes.byref(w), ctypes.byref(h),
+                                                        ctypes.byref(d)):
+                raise IndexError("level %d: the texture has %d levels" % (level, self.info.levels))
+        return w.value, h.value, d.value
+
+    def texel(self, level, i, j, layer=0):
         """Texel (i, j) of a level, decoded to linear RGBA float32
-        (sample_texture_texel): column i, row j (row 0 is t = 0)."""
-        w, h = self.level_size(level)
-        if not (0 <= i < w and 0 <= j < h):
-            raise IndexError("texel (%d, %d) outside level %d's %d x %d" % (i, j, level, w, h))
+        (sample_texture_texel_layer): column i, row j (row 0 is t = 0) of
+        layer ``layer`` — a cube map's face (0 to 5: +X, -X, +Y, -Y, +Z, -Z),
+        a 3D texture's slice (0 is r = 0), 0 for a 2D texture."""
+        w, h, d = self.level_size3(level)
+        if not (0 <= i < w and 0 <= j < h and 0 <= layer < d):
+            raise IndexError("texel (%d, %d) of layer %d outside level %d's %d x %d x %d"
+                             % (i, j, layer, level, w, h, d))
         out = np.empty(4, np.float32)
         with self._handle as p:
-            _lib.core.sample_texture_texel(p, int(level), int(i), int(j), out.ctypes.data_as(_lib.c_float_p))
+            _lib.core.sample_texture_texel_layer(p, int(level), int(layer), int(i), int(j),
+                                                 out.ctypes.data_as(_lib.c_float_p))
         return out
 
     def level(self, k):
-        """Level k decoded to linear RGBA float32, shape (h, w, 4), row 0 at
-        t = 0: the values sample_texture_texel gives (1 channel reads as
-        (r, 0, 0, 1), 2 as (r, g, 0, 1), 3 as (r, g, b, 1); sRGB decoded).
-        A new array; the texture is not changed through it."""
+        """Level k decoded to linear RGBA float32, row 0 at t = 0: shape
+        (h, w, 4) for a 2D texture, (6, n, n, 4) for a cube map (faces in
+        OpenGL's order), (d, h, w, 4) for a 3D texture (slice 0 at r = 0
+        first). The values sample_texture_texel_layer gives (1 channel reads
+        as (r, 0, 0, 1), 2 as (r, g, 0, 1), 3 as (r, g, b, 1); sRGB
+        decoded). A new array; the texture is not changed through it."""
+        if self.kind != "2d":
+            return self._level_layers(k)
         w, h = self.level_size(k)
-        # Nearest magnification of level k alone, at every texel centre, reads
-        # each texel once and decodes it as sample_texture_texel does: one
-        # batch instead of w x h calls.
-        sampler = Sampler(min_filter="nearest", mag_filter="nearest", wrap="clamp_to_edge",
-                          base_level=k, max_level=k)
         jj, ii = np.meshgrid(np.arange(h, dtype=np.float64), np.arange(w, dtype=np.float64), indexing="ij")
         q = np.zeros((h * w, 6), np.float32)
         q[:, 0] = ((ii.ravel() + 0.5) / w)
         q[:, 1] = ((jj.ravel() + 0.5) / h)
-        return self.sample(sampler, q).reshape(h, w, 4)
+        return self.sample(self._level_sampler(k), q).reshape(h, w, 4)
 
     @property
     def levels(self):
-        """Every level as Texture.level(k) gives it: a list of (h, w, 4)
-        float32 arrays, decoded linear RGBA."""
+        """Every level as Texture.level(k) gives it: a list of float32
+        arrays, decoded linear RGBA."""
         return [self.level(k) for k in range(self.info.levels)]
 
     # ---- sampling ----------------------------------------------------------
@@ -302,24 +231,24 @@ class Texture:
         (rgba, drgba_ds, drgba_dt, stats). A query whose coordinates or
         Jacobian hold NaN or inf returns the border colour (DESIGN §10).
         """
-        if isinstance(sampler, dict):
-            sampler = Sampler(**sampler)
-        if not isinstance(sampler, Sampler):
-            raise TypeError("sampler: a libsample.Sampler (or a dict of its keywords), not %r" % type(sampler).__name__)
+        sampler = as_sampler(sampler)
+        if self.kind != "2d":
+            raise TypeError("sample: a %s texture takes 9-float queries (direction or (s, t, r)): use sample3"
+                            % self.kind)
         q = self._queries(queries, s, t, dsdx, dtdx, dsdy, dtdy)
         n = q.shape[0]
         c = None
         if corners is not None:
             c = np.asarray(corners)
-            c = _float_array(c.reshape(c.shape[0], 8) if c.ndim == 3 and c.shape[1:] == (4, 2) else c,
+            c = _arrays.float_array(c.reshape(c.shape[0], 8) if c.ndim == 3 and c.shape[1:] == (4, 2) else c,
                              "corners", (8,), n)
-        b = None if bias is None else _float_array(bias, "bias", (), n)
-        rgba = _out_array(out, "out", n)
+        b = None if bias is None else _arrays.float_array(bias, "bias", (), n)
+        rgba = _arrays.out_array(out, "out", n)
         ds = np.empty((n, 4), np.float32) if derivatives else None
         dt = np.empty((n, 4), np.float32) if derivatives else None
         st = np.empty(n, STATS_DTYPE) if stats else None
-        args = _lib.BatchArgs(count=n, queries=_ptr(q), corners=_ptr(c), lod_bias=_ptr(b), rgba=_ptr(rgba),
-                              drgba_ds=_ptr(ds), drgba_dt=_ptr(dt), stats=_ptr(st))
+        args = _lib.BatchArgs(count=n, queries=_arrays.ptr(q), corners=_arrays.ptr(c), lod_bias=_arrays.ptr(b), rgba=_arrays.ptr(rgba),
+                              drgba_ds=_arrays.ptr(ds), drgba_dt=_arrays.ptr(dt), stats=_arrays.ptr(st))
         if n:
             with self._handle as p:
                 status = _lib.core.sample_batch(p, ctypes.byref(sampler._state), ctypes.byref(args))
@@ -333,7 +262,7 @@ class Texture:
         if queries is not None:
             if s is not None or t is not None:
                 raise TypeError("sample: give queries or s=, t=, not both")
-            return _float_array(queries, "queries", (6,))
+            return _arrays.float_array(queries, "queries", (6,))
         if s is None or t is None:
             raise TypeError("sample: give queries (N x 6) or s= and t=")
         cols = [np.asarray(v) for v in (s, t, dsdx, dtdx, dsdy, dtdy)]
