@@ -10,8 +10,8 @@
  *     gives GL_LINEAR within float rounding, and says "n/a" (exit 3) for a
  *     wrap mode it lacks;
  *   - a missing device, a failing program, a program that writes the wrong
- *     amount are errors with a clear message, and `texsample compare` and
- *     `freq` exit 1 with it.
+ *     amount are errors with a clear message, and `texsample freq` exits 1
+ *     with it.
  *
  *   backends TEXSAMPLE EXAMPLE_DIR OUT_DIR
  *
@@ -258,13 +258,15 @@ static void test_program(void)
     tool_backend_close(&p);
 }
 
-/* The tools: rows in compare's table, errors as exit 1 with the message. */
+/* The tools: rows in compare's table, errors as exit 1 with the message
+ * (a process of texsample-image each, so only two: the messages of the
+ * other failures are checked above, where they are made). */
 static void test_cli(void)
 {
     char cmd[3000], *csv;
     int rc;
     snprintf(cmd, sizeof cmd,
-             "'%s' compare --scene plane --size 16 --truth-samples 2 --runs 1 --threads 1 "
+             "'%s' compare --scene plane --size 8 --truth-samples 2 --runs 1 --threads 1 "
              "--configs bilinear%s --backend-program 'py=python3 %s/bilinear.py' --out '%s/cmp' "
              ">/dev/null 2>&1",
              texsample, tool_backend_gl_available() ? ",gl-bilinear" : "", examples, outdir);
@@ -286,18 +288,6 @@ static void test_cli(void)
     CHECK(csv && strstr(csv, "bad: program 'exit 9' exited with status 9"), "freq says why: %s",
           csv ? csv : "");
     free(csv);
-    if (tool_backend_gl_available()) {
-        snprintf(cmd, sizeof cmd,
-                 "'%s' compare --scene plane --size 16 --configs gl-trilinear "
-                 "--gl-device no-such-gpu --out '%s/cmp2' 2>'%s/cmp2.err' >/dev/null",
-                 texsample, outdir, outdir);
-        CHECK(check_shell(cmd) == 1, "compare with a missing GL device exits 1");
-        snprintf(cmd, sizeof cmd, "%s/cmp2.err", outdir);
-        csv = check_slurp(cmd, NULL);
-        CHECK(csv && strstr(csv, "no device matches 'no-such-gpu'"), "compare says why: %s",
-              csv ? csv : "");
-        free(csv);
-    }
 }
 
 int main(int argc, char **argv)
@@ -309,9 +299,6 @@ int main(int argc, char **argv)
     texsample = argv[1];
     examples = argv[2];
     outdir = argv[3];
-    /* One LOD per fragment: llvmpipe otherwise shares one per 2 × 2 quad,
-     * and neighbouring queries here are unrelated (tools/backends/gl.c). */
-    setenv("GALLIVM_PERF", "no_quad_lod", 0);
     tex = random_texture();
     CHECK(tex != NULL, "texture");
     if (!tex) return check_finish();

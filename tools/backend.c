@@ -64,15 +64,26 @@ int tool_program_row_parse(const char *spec, tool_program_row *out, char *err, s
     return 0;
 }
 
-void tool_backend_help(FILE *out, const char *indent)
+void tool_backend_help(FILE *out, int col)
 {
-    fprintf(out,
-            "%s--gl-device NAME     the OpenGL driver of the gl-* rows: an EGL device by\n"
-            "%s                     index, DRM node or part of its GL_RENDERER; default\n"
-            "%s                     Mesa's surfaceless platform (llvmpipe); 'list' lists\n"
-            "%s                     the devices and exits\n"
-            "%s--backend-program NAME=COMMAND\n"
-            "%s                     add a row sampled by an outside program speaking the\n"
-            "%s                     lookup file protocol (doc/backends.md); repeatable\n",
-            indent, indent, indent, indent, indent, indent, indent);
+    /* Option, then its description's lines; NULL ends each. */
+    static const char *const text[] = {
+        "--gl-device NAME", "the OpenGL driver of the gl-* rows: an EGL device by",
+        "index, DRM node or part of its GL_RENDERER (default: Mesa's",
+        "surfaceless platform, llvmpipe); 'list' lists them and exits", NULL,
+        "--backend-program NAME=COMMAND", "add a row sampled by an outside program that",
+        "speaks the lookup file protocol (doc/backends.md); up to 4", NULL, NULL};
+    int k = 0;
+    while (text[k]) {
+        const char *opt = text[k++];
+        int first = 1, w = 2 + (int)strlen(opt);
+        fprintf(out, "  %s", opt);
+        for (; text[k]; ++k, first = 0) {
+            if (first && w < col)
+                fprintf(out, "%*s%s\n", col - w, "", text[k]);
+            else
+                fprintf(out, "%s%*s%s\n", first ? "\n" : "", col, "", text[k]);
+        }
+        ++k;
+    }
 }

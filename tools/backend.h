@@ -117,7 +117,8 @@ typedef struct tool_program_row {
 int tool_program_row_parse(const char *spec, tool_program_row *out, char *err, size_t errlen);
 
 /* The usage text of the backend options the tools share (--gl-device,
- * --backend-program), each line starting with `indent`. */
-void tool_backend_help(FILE *out, const char *indent);
+ * --backend-program): options from column 2, descriptions from column
+ * `col`. */
+void tool_backend_help(FILE *out, int col);
 
 #endif

@@ -39,20 +39,14 @@ static const char help[] =
     "  --filters LIST     comma-separated filters, from the list below (default:\n"
     "                     those marked *, as far as available; 'all' is the same)\n"
     "  --no-oiio          leave out OpenImageIO's TextureSystem\n"
-    "  --gl-device NAME   the OpenGL driver of the gl-* rows: an EGL device by index,\n"
-    "                     DRM node or part of its GL_RENDERER (default: Mesa's\n"
-    "                     surfaceless platform, llvmpipe); 'list' lists them\n"
-    "  --backend-program NAME=COMMAND\n"
-    "                     add a row sampled by an outside program that speaks the\n"
-    "                     lookup file protocol (doc/backends.md); up to 4\n"
+
     "  --size N           texture side, a power of two 16..8192 (default 512)\n"
     "  --step F           screen-frequency grid step, cycles/pixel (default 1/64)\n"
     "  --fmax F           top of the grid, cycles/pixel (default 2)\n"
     "  --width N, --rows N, --phases N\n"
     "                     pixels per row, rows, offsets (default 16, 1, 64)\n"
-    "  --no-png           no PNG pictures (no zone plates)\n"
-    "\n"
-    "Filters (the tools' shared registry, doc/comparison.md):\n";
+    "  --no-png           no PNG pictures (no zone plates)\n";
+static const char help_filters[] = "\nFilters (the tools' shared registry, doc/comparison.md):\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
 /* The picks freq can run in this build: libsample's entries without the
@@ -137,6 +131,8 @@ int cmd_freq(int argc, char **argv)
         const char *v = NULL;
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
+            tool_backend_help(stdout, 21);
+            fputs(help_filters, stdout);
             tool_picks_help(stdout, "  ", fq_default_filters, accepted(0));
             fputs(help_tail, stdout);
             return EXIT_OK;
