@@ -30,7 +30,7 @@
 
 /* ---- Configurations (configs.c) -------------------------------------- */
 
-#define CMP_MAX_CONFIGS 16
+#define CMP_MAX_CONFIGS 32
 
 /* One row: a registry pick (libsample, its OpenImageIO or OpenGL twin), or
  * an outside program (pick.f NULL: the program's own filter). */

@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #define MAX_LIST 16
-#define MAX_BACKENDS 16
+#define MAX_BACKENDS 32
 #define MAX_PROGRAMS 4
 
 static const char help[] =
