@@ -36,8 +36,8 @@
  * §8.14 in float from the same texels: the coordinate u = s·w − ½, its
  * floor and fraction, the lerps, and for trilinear λ = log2 ρ and the level
  * blend. llvmpipe takes λ as ½·log2(ρ²) with a fast log2 (exponent plus
- * the mantissa's fraction, linear in between: off the exact λ by up to
- * 0.086, doc/backends.md), exact where ρ² is a power of two; the queries
+ * the mantissa's fraction, linear in between: λ low by up to ½ · 0.086,
+ * doc/backends.md), exact where ρ² is a power of two; the queries
  * keep ρ = 2^(k/2) so that λ ∈ {k, k + ½} on both sides, up to the rounding
  * of √2. What is left is the order of the float operations in the lerps
  * (a + w(b − a) against (1 − w)a + wb) and λ's last bit: each rounds by
