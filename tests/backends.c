@@ -22,6 +22,7 @@
 #include "backend.h"
 #include "check.h"
 #include "filters.h"
+#include "query_gen.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -47,16 +48,6 @@
 
 static const char *texsample, *examples, *outdir;
 
-static uint32_t rng = 2026u;
-static uint32_t rnd_u32(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
-}
-static float rnd01(void) { return (float)(rnd_u32() >> 8) * (1.0f / 16777216.0f); }
-
 static sample_texture *random_texture(void)
 {
     static float px[TW * TH * 4];
@@ -65,7 +56,7 @@ static sample_texture *random_texture(void)
     sample_texture *tex = NULL;
     sample_error err;
     int k;
-    for (k = 0; k < TW * TH * 4; ++k) px[k] = rnd01();
+    for (k = 0; k < TW * TH * 4; ++k) px[k] = frand(0.0f, 1.0f);
     img.width = TW;
     img.height = TH;
     img.channels = 4;
@@ -79,7 +70,7 @@ static sample_texture *random_texture(void)
 /* A texel-space scale 2^(k/2), k in [−4, 8]: ρ² a power of two (GL_TOL). */
 static float half_octave(void)
 {
-    int k = (int)(rnd_u32() % 13) - 4;
+    int k = (int)(rnd() % 13) - 4;
     return ldexpf(k % 2 ? 1.41421356f : 1.0f, (k - (k % 2 + 2) % 2) / 2);
 }
 
@@ -89,8 +80,8 @@ static void make_queries(sample_query *q, int n)
     int i;
     for (i = 0; i < n; ++i) {
         float a = half_octave(), b = half_octave();
-        q[i].s = -1.25f + 3.5f * rnd01();
-        q[i].t = -1.25f + 3.5f * rnd01();
+        q[i].s = -1.25f + 3.5f * frand(0.0f, 1.0f);
+        q[i].t = -1.25f + 3.5f * frand(0.0f, 1.0f);
         q[i].dsdx = a / TW;
         q[i].dtdx = 0.0f;
         q[i].dsdy = 0.0f;
@@ -267,7 +258,8 @@ static void test_cli(void)
     int rc;
     snprintf(cmd, sizeof cmd,
              "'%s' compare --scene plane --size 8 --truth-samples 2 --runs 1 --threads 1 "
-             "--configs bilinear%s --backend-program 'py=python3 %s/bilinear.py' --out '%s/cmp' "
+             "--configs bilinear%s --backend-program 'py=python3 %s/bilinear.py' "
+             "--backend-program 'na=echo cannot here; exit 3' --out '%s/cmp' "
              ">/dev/null 2>&1",
              texsample, tool_backend_gl_available() ? ",gl-bilinear" : "", examples, outdir);
     rc = check_shell(cmd);
@@ -275,6 +267,8 @@ static void test_cli(void)
     snprintf(cmd, sizeof cmd, "%s/cmp", outdir);
     csv = check_slurp_in(cmd, "results.csv");
     CHECK(csv && strstr(csv, ",py,"), "compare's table has the program's row");
+    CHECK(csv && strstr(csv, ",na,") && strstr(csv, "\"n/a: cannot here\""),
+          "a program that cannot is a row n/a with its reason");
     if (tool_backend_gl_available())
         CHECK(csv && strstr(csv, "gl-bilinear"), "compare's table has the OpenGL row");
     free(csv);

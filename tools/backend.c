@@ -68,11 +68,12 @@ void tool_backend_help(FILE *out, int col)
 {
     /* Option, then its description's lines; NULL ends each. */
     static const char *const text[] = {
-        "--gl-device NAME", "the OpenGL driver of the gl-* rows: an EGL device by",
-        "index, DRM node or part of its GL_RENDERER (default: Mesa's",
-        "surfaceless platform, llvmpipe); 'list' lists them and exits", NULL,
+        "--gl-device NAME", "the OpenGL driver of the gl-* rows: an EGL device",
+        "by index, DRM node or part of its GL_RENDERER",
+        "(default: Mesa's surfaceless platform, llvmpipe);",
+        "'list' lists the devices and exits", NULL,
         "--backend-program NAME=COMMAND", "add a row sampled by an outside program that",
-        "speaks the lookup file protocol (doc/backends.md); up to 4", NULL, NULL};
+        "speaks the lookup file protocol (doc/backends.md);", "repeatable, up to 4", NULL, NULL};
     int k = 0;
     while (text[k]) {
         const char *opt = text[k++];
