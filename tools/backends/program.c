@@ -151,40 +151,40 @@ static void first_line(const char *path, char *buf, size_t len)
 }
 
 /* Run the command with the protocol's arguments; returns its wait status
- * or −1 when it could not be started. */
+ * or −1 when it could not be started. Everything the child needs is made
+ * before fork: a tool may have threads (OpenImageIO's), and after fork only
+ * async-signal-safe calls are safe in the child. */
 static int run_program(const prog_impl *p, char *const *args, const char *log)
 {
+    /* sh -c 'COMMAND "$@"' sh ARGS: the arguments arrive unsplit. */
+    static const char tail[] = " \"$@\"";
+    size_t len = strlen(p->command) + sizeof tail;
+    char *script = malloc(len), *argv[40];
     pid_t pid;
-    int status;
+    int status, k = 0, fd;
+    if (!script) return -1;
+    snprintf(script, len, "%s%s", p->command, tail);
+    argv[k++] = "sh";
+    argv[k++] = "-c";
+    argv[k++] = script;
+    argv[k++] = "sh";
+    for (; *args && k < 39; ++args) argv[k++] = *args;
+    argv[k] = NULL;
+    fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
     fflush(NULL);
     pid = fork();
-    if (pid < 0) return -1;
     if (pid == 0) {
-        char script[64];
-        char *argv[40];
-        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0600), k = 0;
         if (fd >= 0) {
             dup2(fd, 1);
             dup2(fd, 2);
             close(fd);
         }
-        /* sh -c 'COMMAND "$@"' sh ARGS: the arguments arrive unsplit. */
-        snprintf(script, sizeof script, "%s", " \"$@\"");
-        argv[k++] = "sh";
-        argv[k++] = "-c";
-        {
-            size_t n = strlen(p->command) + strlen(script) + 1;
-            char *s = malloc(n);
-            if (!s) _exit(127);
-            snprintf(s, n, "%s%s", p->command, script);
-            argv[k++] = s;
-        }
-        argv[k++] = "sh";
-        for (; *args && k < 39; ++args) argv[k++] = *args;
-        argv[k] = NULL;
         execv("/bin/sh", argv);
         _exit(127);
     }
+    if (fd >= 0) close(fd);
+    free(script);
+    if (pid < 0) return -1;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) return -1;
     return status;
