@@ -265,14 +265,17 @@ static void lookup_runs(void)
 
 /* The n names joined by commas into buf (each tool takes a list): one run
  * per tool checks that it accepts every name its help lists, instead of a
- * start-up per name (each loads OpenImageIO). */
+ * start-up per name (each loads OpenImageIO). The OpenGL rows are left to
+ * tests/backends.c: Mesa's allocations at exit are not ours to report, and
+ * only that test runs without leak detection. */
 static const char *join_names(char names[][TOOL_FILTER_NAME_MAX], int n, char *buf, size_t size)
 {
     size_t used = 0;
     int k;
     buf[0] = '\0';
     for (k = 0; k < n && used < size; ++k)
-        used += (size_t)snprintf(buf + used, size - used, "%s%s", k ? "," : "", names[k]);
+        if (strncmp(names[k], "gl-", 3) != 0)
+            used += (size_t)snprintf(buf + used, size - used, "%s%s", used ? "," : "", names[k]);
     CHECK(used < size, "the joined names fit");
     return buf;
 }

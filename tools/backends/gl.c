@@ -189,6 +189,7 @@ static void close_display(EGLDisplay dpy, EGLContext ctx)
     eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (ctx != EGL_NO_CONTEXT) eglDestroyContext(dpy, ctx);
     eglTerminate(dpy);
+    eglReleaseThread();
 }
 
 int tool_backend_gl_available(void) { return 1; }
