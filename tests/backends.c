@@ -136,6 +136,7 @@ static int backend_results(tool_backend *b, const sample_texture *tex, const sam
 
 static sample_texture *tex;
 static sample_query queries[NQ];
+static int gl_ok; /* an OpenGL context could be made here */
 
 static void test_gl(void)
 {
@@ -170,6 +171,7 @@ static void test_gl(void)
         return;
     }
     printf("OpenGL: %s\n", gl.driver);
+    gl_ok = 1;
     for (k = 0; k < sizeof cfg / sizeof cfg[0]; ++k) {
         float d;
         sampler_of(cfg[k].filter, cfg[k].ws, cfg[k].wt, &s);
@@ -249,28 +251,47 @@ static void test_program(void)
     tool_backend_close(&p);
 }
 
+/* The RMSE field of results.csv's row `config` of scene plane, or "". */
+static void csv_rmse(const char *csv, const char *config, char *out, size_t len)
+{
+    char key[64];
+    const char *p, *q;
+    snprintf(key, sizeof key, "\nplane,%s,\"", config);
+    out[0] = '\0';
+    /* scene,config,"label",rmse,...: the field after the quoted label. */
+    if (!csv || !(p = strstr(csv, key)) || !(p = strchr(p + strlen(key), '"'))) return;
+    if (!(p = strchr(p, ','))) return;
+    q = strchr(++p, ',');
+    snprintf(out, len, "%.*s", q ? (int)(q - p) : 0, p);
+}
+
 /* The tools: rows in compare's table, errors as exit 1 with the message
  * (a process of texsample-image each, so only two: the messages of the
- * other failures are checked above, where they are made). */
+ * other failures are checked above, where they are made). The program row
+ * is `texsample lookup` (python3 may be missing; the example ran above). */
 static void test_cli(void)
 {
-    char cmd[3000], *csv;
+    char cmd[3000], *csv, a[64], b[64];
     int rc;
     snprintf(cmd, sizeof cmd,
              "'%s' compare --scene plane --size 8 --truth-samples 2 --runs 1 --threads 1 "
-             "--configs bilinear%s --backend-program 'py=python3 %s/bilinear.py' "
+             "--configs bilinear%s --backend-program \"lookup='%s' lookup --min linear --mag linear\" "
              "--backend-program 'na=echo cannot here; exit 3' --out '%s/cmp' "
              ">/dev/null 2>&1",
-             texsample, tool_backend_gl_available() ? ",gl-bilinear" : "", examples, outdir);
+             texsample, gl_ok ? ",gl-bilinear" : "", texsample, outdir);
     rc = check_shell(cmd);
     CHECK(rc == 0, "compare with backend rows: %d", rc);
     snprintf(cmd, sizeof cmd, "%s/cmp", outdir);
     csv = check_slurp_in(cmd, "results.csv");
-    CHECK(csv && strstr(csv, ",py,"), "compare's table has the program's row");
-    CHECK(csv && strstr(csv, ",na,") && strstr(csv, "\"n/a: cannot here\""),
+    csv_rmse(csv, "bilinear", a, sizeof a);
+    csv_rmse(csv, "lookup", b, sizeof b);
+    CHECK(a[0] && strcmp(a, b) == 0, "the program's row scores as libsample's: '%s' '%s'", a, b);
+    CHECK(csv && strstr(csv, "\"n/a: cannot here\"") && strstr(csv, ",na,"),
           "a program that cannot is a row n/a with its reason");
-    if (tool_backend_gl_available())
-        CHECK(csv && strstr(csv, "gl-bilinear"), "compare's table has the OpenGL row");
+    if (gl_ok) {
+        csv_rmse(csv, "gl-bilinear", b, sizeof b);
+        CHECK(b[0] && strcmp(a, b) == 0, "the OpenGL row scores as libsample's: '%s' '%s'", a, b);
+    }
     free(csv);
     snprintf(cmd, sizeof cmd,
              "'%s' freq --quick --filters bilinear --backend-program 'bad=exit 9' --out '%s/fq' "
