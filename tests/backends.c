@@ -232,6 +232,22 @@ static void test_program(void)
     }
     tool_backend_close(&p);
 
+    /* Row names: their own, once. */
+    {
+        tool_program_row rows[2];
+        CHECK(tool_program_row_parse("mine=true", rows, 0, err, sizeof err) == 0 &&
+                  strcmp(rows[0].name, "mine") == 0 && strcmp(rows[0].command, "true") == 0,
+              "NAME=COMMAND: %s", err);
+        CHECK(tool_program_row_parse("mine=false", rows, 1, err, sizeof err) < 0 &&
+                  strstr(err, "two rows are called 'mine'"), "twice: %s", err);
+        CHECK(tool_program_row_parse("trilinear=true", rows, 1, err, sizeof err) < 0 &&
+                  strstr(err, "registry"), "registry name: %s", err);
+        CHECK(tool_program_row_parse("a/b=true", rows, 1, err, sizeof err) < 0 &&
+                  strstr(err, "only letters"), "file-name-safe: %s", err);
+        CHECK(tool_program_row_parse("noequals", rows, 1, err, sizeof err) < 0 &&
+                  strstr(err, "NAME=COMMAND"), "no '=': %s", err);
+    }
+
     /* Failures: a clear message, never a crash. */
     CHECK(tool_backend_program_open(&p, "echo 'broken sampler' >&2; exit 5", err, sizeof err) == 0,
           "open: %s", err);

@@ -3,6 +3,7 @@
  * the tools share.
  */
 #include "backend.h"
+#include "filters.h"
 
 #include <string.h>
 
@@ -34,10 +35,14 @@ void tool_backend_close(tool_backend *b)
     memset(b, 0, sizeof *b);
 }
 
-int tool_program_row_parse(const char *spec, tool_program_row *out, char *err, size_t errlen)
+int tool_program_row_parse(const char *spec, tool_program_row *rows, int n, char *err,
+                           size_t errlen)
 {
     const char *eq = spec ? strchr(spec, '=') : NULL;
+    tool_program_row *out = &rows[n];
+    tool_pick pick;
     size_t len, k;
+    int j;
     memset(out, 0, sizeof *out);
     if (!eq || eq == spec || !eq[1]) {
         snprintf(err, errlen, "'%s' is not NAME=COMMAND", spec ? spec : "");
@@ -61,6 +66,16 @@ int tool_program_row_parse(const char *spec, tool_program_row *out, char *err, s
     }
     memcpy(out->name, spec, len);
     out->command = eq + 1;
+    if (tool_pick_find(out->name, &pick, NULL) >= 0) {
+        snprintf(err, errlen, "'%s' is a registry filter's name; give the program's row its own",
+                 out->name);
+        return -1;
+    }
+    for (j = 0; j < n; ++j)
+        if (strcmp(rows[j].name, out->name) == 0) {
+            snprintf(err, errlen, "two rows are called '%s'", out->name);
+            return -1;
+        }
     return 0;
 }
 

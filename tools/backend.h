@@ -112,9 +112,12 @@ typedef struct tool_program_row {
     const char *command;
 } tool_program_row;
 
-/* Split "NAME=COMMAND" (the --backend-program value). Returns 0, or −1
- * with what is wrong in err. */
-int tool_program_row_parse(const char *spec, tool_program_row *out, char *err, size_t errlen);
+/* Split "NAME=COMMAND" (the --backend-program value) into rows[n]: NAME
+ * must be new among rows[0 … n) and no registry name (tools/filters.h), as
+ * it names the row's files and table lines. Returns 0, or −1 with what is
+ * wrong in err. */
+int tool_program_row_parse(const char *spec, tool_program_row *rows, int n, char *err,
+                           size_t errlen);
 
 /* The usage text of the backend options the tools share (--gl-device,
  * --backend-program): options from column 2, descriptions from column

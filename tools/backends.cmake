@@ -11,7 +11,8 @@ set(TEXSAMPLE_BACKEND_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/backend.c
 add_library(texsample_backends STATIC ${TEXSAMPLE_BACKEND_SOURCES})
 target_include_directories(texsample_backends PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_compile_options(texsample_backends PRIVATE ${SAMPLE_WARNINGS})
-target_link_libraries(texsample_backends PUBLIC sample)
+# The registry (tools/filters.c) rides in texsample_freq (tools/freq.cmake).
+target_link_libraries(texsample_backends PUBLIC sample texsample_freq)
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL QUIET COMPONENTS OpenGL EGL)
 if(OpenGL_OpenGL_FOUND AND OpenGL_EGL_FOUND)

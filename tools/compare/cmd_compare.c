@@ -141,7 +141,7 @@ static int parse_args(int argc, char **argv, opts *o)
         } else if (cli_opt(argc, argv, &i, "--backend-program", &v)) {
             if (o->nprog == MAX_PROGRAMS)
                 return cli_usage_error("compare", "at most %d --backend-program", MAX_PROGRAMS);
-            if (tool_program_row_parse(v, &o->prog[o->nprog], err, sizeof err) != 0)
+            if (tool_program_row_parse(v, o->prog, o->nprog, err, sizeof err) != 0)
                 return cli_usage_error("compare", "--backend-program: %s", err);
             ++o->nprog;
         } else if (cli_opt(argc, argv, &i, "--raw", NULL)) {

@@ -157,7 +157,7 @@ int cmd_freq(int argc, char **argv)
         } else if (cli_opt(argc, argv, &i, "--backend-program", &v)) {
             if (nprog == MAX_PROGRAMS)
                 return cli_usage_error("freq", "at most %d --backend-program", MAX_PROGRAMS);
-            if (tool_program_row_parse(v, &prog[nprog], err, sizeof err) != 0)
+            if (tool_program_row_parse(v, prog, nprog, err, sizeof err) != 0)
                 return cli_usage_error("freq", "--backend-program: %s", err);
             ++nprog;
         } else if (cli_opt(argc, argv, &i, "--m", &v)) {
