@@ -256,7 +256,7 @@ static int prog_sample(tool_backend *b, tool_backend_tex *x, const sample_query 
     t0 = now_s();
     if (read_floats(opath, rgba, n * 4, &bytes) != 0) {
         if (bytes < 0)
-            snprintf(err, errlen, "program '%s' wrote no %s", p->command, opath);
+            snprintf(err, errlen, "program '%s' wrote no result (the --out file)", p->command);
         else
             snprintf(err, errlen, "program '%s' wrote %ld bytes, not %zu (4 float32 per query)",
                      p->command, bytes, n * 16);

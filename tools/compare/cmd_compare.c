@@ -160,9 +160,14 @@ static int parse_args(int argc, char **argv, opts *o)
     /* The programs' rows after the registry's. */
     for (k = 0; k < o->nprog; ++k) {
         cmp_config *c = &o->cfg[o->ncfg++];
+        const char *name = o->prog[k].name;
+        _Static_assert(sizeof c->name >= sizeof o->prog[k].name &&
+                           sizeof c->label >= sizeof o->prog[k].name + sizeof " (program)",
+                       "a program's name fits a row's name and label");
         memset(c, 0, sizeof *c);
-        snprintf(c->name, sizeof c->name, "%s", o->prog[k].name);
-        snprintf(c->label, sizeof c->label, "%s (program)", o->prog[k].name);
+        memcpy(c->name, name, strlen(name) + 1);
+        memcpy(c->label, name, strlen(name));
+        memcpy(c->label + strlen(name), " (program)", sizeof " (program)");
         c->tb = &o->progb[k];
     }
     if (o->ncfg == 0) return cli_usage_error("compare", "--configs names no configuration");

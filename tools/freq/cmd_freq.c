@@ -258,7 +258,8 @@ int cmd_freq(int argc, char **argv)
             if ((st = fq_tool_probe(&backends[k], err, sizeof err)) == TOOL_BACKEND_NA) {
                 na[nna].label = tool_cfg[k].label;
                 na[nna].driver = tb->driver;
-                snprintf(na[nna++].reason, sizeof na[0].reason, "%s", err);
+                snprintf(na[nna++].reason, sizeof na[0].reason, "%.*s",
+                         (int)sizeof na[0].reason - 1, err);
                 fprintf(stderr, "texsample freq: %s: n/a: %s\n", name, err);
                 continue;
             }
