@@ -8,6 +8,7 @@ libopencolorio-dev opencolorio-tools
 libopenexr-dev openexr
 libcjson-dev
 libosmesa6-dev
+libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
 clang libclang-rt-14-dev
 chromium fonts-dejavu-core
 python3 python3-numpy python3-pytest"

@@ -32,13 +32,16 @@ static int run(const char *args)
  * below print them with %.47s, which also tells GCC their length. */
 _Static_assert(TOOL_FILTER_NAME_MAX == 48, "the %.47s below");
 
-/* Every pick the registry has: each entry, then each twin. */
+/* Every pick the registry has: each entry, then each OIIO twin, then each
+ * OpenGL twin. */
 static int all_picks(tool_pick *out)
 {
     int k, n = 0;
-    for (k = 0; k < tool_filter_count; ++k) out[n++] = (tool_pick){&tool_filters[k], 0};
+    for (k = 0; k < tool_filter_count; ++k) out[n++] = (tool_pick){&tool_filters[k], 0, 0};
     for (k = 0; k < tool_filter_count; ++k)
-        if (tool_filters[k].oiio.twin) out[n++] = (tool_pick){&tool_filters[k], 1};
+        if (tool_filters[k].oiio.twin) out[n++] = (tool_pick){&tool_filters[k], 1, 0};
+    for (k = 0; k < tool_filter_count; ++k)
+        if (tool_filter_gl_twin(&tool_filters[k])) out[n++] = (tool_pick){&tool_filters[k], 0, 1};
     return n;
 }
 
@@ -51,7 +54,8 @@ static void names(void)
     for (i = 0; i < n; ++i) {
         tool_pick_name(&p[i], a, sizeof a);
         CHECK(strlen(a) > 0 && strlen(a) + 1 < sizeof a && !strchr(a, ','), "name '%s'", a);
-        CHECK(tool_pick_find(a, &q, NULL) == 0 && q.f == p[i].f && q.oiio == p[i].oiio,
+        CHECK(tool_pick_find(a, &q, NULL) == 0 && q.f == p[i].f && q.oiio == p[i].oiio &&
+                  q.gl == p[i].gl,
               "'%s' reads back as itself", a);
         CHECK(strcmp(a, "all") != 0, "'all' is the tools' word for their defaults");
         for (j = 0; j < i; ++j)
@@ -70,6 +74,16 @@ static void names(void)
             CHECK(sample_filter_parse(nm) == (int)f->min, "'%s' is the min filter's name", nm);
     }
     CHECK(tool_pick_find("oiio-blinn-newell", &q, NULL) < 0, "no twin, no oiio- name");
+    /* OpenGL has the six GL filters and GL_TEXTURE_MAX_ANISOTROPY, nothing
+     * else (GL 4.6 §8.14). */
+    CHECK(tool_pick_find("gl-trilinear", &q, NULL) == 0 && q.gl && !q.oiio, "gl-trilinear");
+    CHECK(tool_pick_find("gl-aniso2", &q, NULL) == 0 && q.gl && q.f->max_aniso == 2.0f, "gl-aniso2");
+    CHECK(tool_pick_find("gl-aniso4", &q, NULL) == 0 && q.f->max_aniso == 4.0f, "gl-aniso4");
+    CHECK(tool_pick_find("gl-nearest_mipmap_nearest", &q, NULL) == 0, "gl-nearest_mipmap_nearest");
+    CHECK(tool_pick_find("gl-ewa", &q, NULL) < 0 && tool_pick_find("gl-blinn-newell", &q, NULL) < 0 &&
+              tool_pick_find("gl-bicubic-bspline", &q, NULL) < 0 &&
+              tool_pick_find("gl-cubic_mipmap_linear", &q, NULL) < 0,
+          "no GL twin for footprint and cubic filters");
     CHECK(tool_pick_find("nope", &q, NULL) < 0 && tool_pick_find("", &q, NULL) < 0, "unknown names");
 }
 
@@ -251,14 +265,17 @@ static void lookup_runs(void)
 
 /* The n names joined by commas into buf (each tool takes a list): one run
  * per tool checks that it accepts every name its help lists, instead of a
- * start-up per name (each loads OpenImageIO). */
+ * start-up per name (each loads OpenImageIO). The OpenGL rows are left to
+ * tests/backends.c: Mesa's allocations at exit are not ours to report, and
+ * only that test runs without leak detection. */
 static const char *join_names(char names[][TOOL_FILTER_NAME_MAX], int n, char *buf, size_t size)
 {
     size_t used = 0;
     int k;
     buf[0] = '\0';
     for (k = 0; k < n && used < size; ++k)
-        used += (size_t)snprintf(buf + used, size - used, "%s%s", k ? "," : "", names[k]);
+        if (strncmp(names[k], "gl-", 3) != 0)
+            used += (size_t)snprintf(buf + used, size - used, "%s%s", used ? "," : "", names[k]);
     CHECK(used < size, "the joined names fit");
     return buf;
 }
@@ -289,8 +306,10 @@ static void freq_runs(void)
     unsigned accept = 0;
     CHECK(run("freq --help") == 0, "freq --help");
     csv = check_slurp_in(dir, "out.txt");
-    /* The shim is in the build when freq lists a twin. */
+    /* The shim is in the build when freq lists a twin; EGL when it lists
+     * an OpenGL one. */
     if (csv && strstr(csv, "oiio-trilinear")) accept = TOOL_PICK_OIIO;
+    if (csv && strstr(csv, "gl-trilinear")) accept |= TOOL_PICK_GL;
     free(csv);
     n = check_help("freq", "Filters (", accept, names, dflt);
     snprintf(args, sizeof args,
@@ -312,7 +331,12 @@ static void compare_runs(void)
 {
     char names[64][TOOL_FILTER_NAME_MAX], args[4096], list[3072], *csv;
     int dflt[64], n;
-    n = check_help("compare", "--configs", TOOL_PICK_OIIO | TOOL_PICK_CORNERS, names, dflt);
+    unsigned accept = TOOL_PICK_OIIO | TOOL_PICK_CORNERS;
+    CHECK(run("compare --help") == 0, "compare --help");
+    csv = check_slurp_in(dir, "out.txt");
+    if (csv && strstr(csv, "gl-trilinear")) accept |= TOOL_PICK_GL;
+    free(csv);
+    n = check_help("compare", "--configs", accept, names, dflt);
     snprintf(args, sizeof args, "compare --scene plane --size 8 --truth-samples 2 --threads 1 --configs %s --out c",
              join_names(names, n, list, sizeof list));
     CHECK(run(args) == 0, "compare --configs %s", list);

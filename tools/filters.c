@@ -28,6 +28,16 @@ const tool_filter tool_filters[] = {
     {.name = "trilinear", .label = "trilinear",
      .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
      .oiio = {.twin = 1, .mode = OIIO_TS_TRILINEAR}},
+    /* The ratios GPUs offer below 16 (GL_TEXTURE_MAX_ANISOTROPY), so that
+     * a driver's ladder can be read against libsample's. */
+    {.name = "aniso2", .label = "anisotropic x2",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_ANISOTROPIC, .max_aniso = 2,
+     .oiio = {.twin = 1, .mode = OIIO_TS_ANISO}},
+    {.name = "aniso4", .label = "anisotropic x4",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_ANISOTROPIC, .max_aniso = 4,
+     .oiio = {.twin = 1, .mode = OIIO_TS_ANISO}},
     {.name = "aniso16", .label = "anisotropic x16",
      .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
      .footprint = SAMPLE_FOOTPRINT_ANISOTROPIC, .max_aniso = 16,
@@ -70,6 +80,10 @@ const tool_filter_alias tool_filter_aliases[] = {
 const int tool_filter_alias_count = (int)(sizeof tool_filter_aliases / sizeof tool_filter_aliases[0]);
 
 static const char oiio_prefix[] = "oiio-";
+static const char gl_prefix[] = "gl-";
+
+/* Picks are ranked libsample, OIIO, OpenGL (pick_rank): three per entry. */
+#define PICK_KINDS 3
 
 const char *tool_filter_name(const tool_filter *f)
 {
@@ -94,17 +108,33 @@ void tool_filter_oiio_opts(const tool_filter *f, oiio_ts_opts *o)
     if (f->max_aniso > 0.0f) o->max_aniso = (int)f->max_aniso;
 }
 
+int tool_filter_gl_twin(const tool_filter *f)
+{
+    return f->min <= SAMPLE_LINEAR_MIPMAP_LINEAR && f->mag <= SAMPLE_LINEAR &&
+           (f->footprint == SAMPLE_FOOTPRINT_NONE || f->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC) &&
+           f->options == 0 && !f->corners;
+}
+
+/* Does pick p name something that exists (an entry, or a twin it has)? */
+static int pick_exists(const tool_pick *p)
+{
+    if (p->oiio) return p->f->oiio.twin;
+    if (p->gl) return tool_filter_gl_twin(p->f);
+    return 1;
+}
+
 /* A canonical name (no alias) → pick. */
 static int find_canonical(const char *name, tool_pick *out)
 {
     int oiio = strncmp(name, oiio_prefix, sizeof oiio_prefix - 1) == 0, k;
-    const char *base = oiio ? name + sizeof oiio_prefix - 1 : name;
+    int gl = strncmp(name, gl_prefix, sizeof gl_prefix - 1) == 0;
+    const char *base = oiio ? name + sizeof oiio_prefix - 1 : gl ? name + sizeof gl_prefix - 1 : name;
     for (k = 0; k < tool_filter_count; ++k)
         if (strcmp(tool_filter_name(&tool_filters[k]), base) == 0) {
-            if (oiio && !tool_filters[k].oiio.twin) return -1;
             out->f = &tool_filters[k];
             out->oiio = oiio;
-            return 0;
+            out->gl = gl;
+            return pick_exists(out) ? 0 : -1;
         }
     return -1;
 }
@@ -134,34 +164,49 @@ int tool_pick_read(const char *sub, const char *name, tool_pick *out)
 const tool_filter *tool_filter_by_name(const char *name)
 {
     tool_pick p;
-    return tool_pick_find(name, &p, NULL) >= 0 && !p.oiio ? p.f : NULL;
+    return tool_pick_find(name, &p, NULL) >= 0 && !p.oiio && !p.gl ? p.f : NULL;
 }
 
 const char *tool_pick_name(const tool_pick *p, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s%s", p->oiio ? oiio_prefix : "", tool_filter_name(p->f));
+    snprintf(buf, len, "%s%s", p->oiio ? oiio_prefix : p->gl ? gl_prefix : "", tool_filter_name(p->f));
     return buf;
 }
 
 const char *tool_pick_label(const tool_pick *p, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s%s", p->oiio ? "OpenImageIO " : "", p->f->label);
+    snprintf(buf, len, "%s%s", p->oiio ? "OpenImageIO " : p->gl ? "OpenGL " : "", p->f->label);
     return buf;
 }
 
 int tool_pick_allowed(const tool_pick *p, unsigned accept)
 {
     if (p->oiio) return (accept & TOOL_PICK_OIIO) != 0;
+    if (p->gl) return (accept & TOOL_PICK_GL) != 0;
     return !p->f->corners || (accept & TOOL_PICK_CORNERS) != 0;
 }
 
-/* Registry order, libsample picks first: the order of every tool's rows. */
-static int pick_rank(const tool_pick *p) { return (int)(p->f - tool_filters) + (p->oiio ? tool_filter_count : 0); }
+/* Registry order, libsample picks first, then OIIO's, then OpenGL's: the
+ * order of every tool's rows. */
+static int pick_rank(const tool_pick *p)
+{
+    return (int)(p->f - tool_filters) + (p->oiio ? tool_filter_count : p->gl ? 2 * tool_filter_count : 0);
+}
+
+/* The pick of rank k (pick_rank's inverse). */
+static tool_pick pick_of_rank(int k)
+{
+    tool_pick p;
+    p.f = &tool_filters[k % tool_filter_count];
+    p.oiio = k / tool_filter_count == 1;
+    p.gl = k / tool_filter_count == 2;
+    return p;
+}
 
 int tool_picks_parse(const char *sub, const char *list, const char *const *defaults,
                      unsigned accept, tool_pick *out, int max, char *err, size_t errlen)
 {
-    unsigned char want[2 * sizeof tool_filters / sizeof tool_filters[0]] = {0};
+    unsigned char want[PICK_KINDS * sizeof tool_filters / sizeof tool_filters[0]] = {0};
     const char *p = list;
     int k, n = 0;
     if (!list || !*list) {
@@ -189,6 +234,7 @@ int tool_picks_parse(const char *sub, const char *list, const char *const *defau
         } else if (!tool_pick_allowed(&pk, accept)) {
             snprintf(err, errlen, "'%s' cannot run here (%s)", name,
                      pk.oiio ? "no OpenImageIO here: not built with it, or --no-oiio"
+                     : pk.gl ? "no OpenGL here: not built with EGL, or this tool has no GL rows"
                              : "it needs the exact footprint corners");
             return -1;
         } else {
@@ -197,15 +243,13 @@ int tool_picks_parse(const char *sub, const char *list, const char *const *defau
         p += len;
         if (*p == ',') ++p;
     }
-    for (k = 0; k < 2 * tool_filter_count; ++k) {
+    for (k = 0; k < PICK_KINDS * tool_filter_count; ++k) {
         if (!want[k]) continue;
         if (n == max) {
             snprintf(err, errlen, "at most %d names", max);
             return -1;
         }
-        out[n].f = &tool_filters[k % tool_filter_count];
-        out[n].oiio = k >= tool_filter_count;
-        ++n;
+        out[n++] = pick_of_rank(k);
     }
     return n;
 }
@@ -216,7 +260,7 @@ static int is_default(const tool_pick *p, const char *const *defaults)
     tool_pick d;
     int k;
     for (k = 0; defaults[k]; ++k)
-        if (find_canonical(defaults[k], &d) == 0 && d.f == p->f && d.oiio == p->oiio) return 1;
+        if (find_canonical(defaults[k], &d) == 0 && pick_rank(&d) == pick_rank(p)) return 1;
     return 0;
 }
 
@@ -224,16 +268,16 @@ void tool_picks_help(FILE *out, const char *indent, const char *const *defaults,
 {
     char name[TOOL_FILTER_NAME_MAX], label[TOOL_FILTER_LABEL_MAX];
     int k, w = 0;
-    for (k = 0; k < 2 * tool_filter_count; ++k) {
-        tool_pick p = {&tool_filters[k % tool_filter_count], k >= tool_filter_count};
+    for (k = 0; k < PICK_KINDS * tool_filter_count; ++k) {
+        tool_pick p = pick_of_rank(k);
         int len;
-        if ((p.oiio && !p.f->oiio.twin) || !tool_pick_allowed(&p, accept)) continue;
+        if (!pick_exists(&p) || !tool_pick_allowed(&p, accept)) continue;
         len = (int)strlen(tool_pick_name(&p, name, sizeof name));
         if (len > w) w = len;
     }
-    for (k = 0; k < 2 * tool_filter_count; ++k) {
-        tool_pick p = {&tool_filters[k % tool_filter_count], k >= tool_filter_count};
-        if ((p.oiio && !p.f->oiio.twin) || !tool_pick_allowed(&p, accept)) continue;
+    for (k = 0; k < PICK_KINDS * tool_filter_count; ++k) {
+        tool_pick p = pick_of_rank(k);
+        if (!pick_exists(&p) || !tool_pick_allowed(&p, accept)) continue;
         fprintf(out, "%s%c %-*s  %s\n", indent, is_default(&p, defaults) ? '*' : ' ', w,
                 tool_pick_name(&p, name, sizeof name), tool_pick_label(&p, label, sizeof label));
     }

@@ -7,7 +7,11 @@
  * An entry is libsample's sampler settings (the fields of sample_sampler a
  * filter choice sets; wrap modes, border and LOD state stay the caller's)
  * plus, where one exists, its OpenImageIO TextureSystem twin. A name selects
- * a "pick": the entry on libsample, or — spelled "oiio-" + name — its twin.
+ * a "pick": the entry on libsample, or — spelled "oiio-" + name — its
+ * OpenImageIO twin, or — spelled "gl-" + name — the same sampler state on
+ * an OpenGL driver (tools/backend.h), for the entries OpenGL has: the six
+ * min filters of GL 4.6 §8.14, no footprint filter but GL_TEXTURE_MAX_ANISOTROPY
+ * (tool_filter_gl_twin).
  *
  * Names: an entry that is one library enum is called by the library's name
  * for it (sample_footprint_name for a footprint filter, else
@@ -64,10 +68,17 @@ void tool_filter_oiio_opts(const tool_filter *f, oiio_ts_opts *o);
 /* The entry called `name` (canonical or alias, libsample only), or NULL. */
 const tool_filter *tool_filter_by_name(const char *name);
 
-/* One selectable row: an entry on libsample, or on its OIIO twin. */
+/* 1 when OpenGL has the entry's sampler state: a GL min and mag filter
+ * (not cubic), no footprint filter but the anisotropic one (read as
+ * GL_TEXTURE_MAX_ANISOTROPY, GL 4.6 §8.14.1), no options, no corners. */
+int tool_filter_gl_twin(const tool_filter *f);
+
+/* One selectable row: an entry on libsample, on its OIIO twin, or on an
+ * OpenGL driver (gl). At most one of oiio and gl is set. */
 typedef struct tool_pick {
     const tool_filter *f;
     int oiio;
+    int gl;
 } tool_pick;
 
 /* Look a name up: an entry's canonical name, "oiio-" + one for its twin, or
@@ -95,6 +106,7 @@ extern const int tool_filter_alias_count;
 enum {
     TOOL_PICK_OIIO = 1u << 0,    /* OIIO twins, by their own names */
     TOOL_PICK_CORNERS = 1u << 1, /* entries that need the exact corners */
+    TOOL_PICK_GL = 1u << 2,      /* OpenGL twins, "gl-" + name */
 };
 
 /* Is the pick one a tool with these capabilities runs? */
@@ -102,7 +114,7 @@ int tool_pick_allowed(const tool_pick *p, unsigned accept);
 
 /* Parse a comma-separated list of names (or "all": the tool's defaults,
  * NULL-terminated names) into picks: libsample picks in registry order,
- * then OIIO twins in registry order, each once; names are read by
+ * then OIIO twins, then OpenGL twins, each in registry order and once; names are read by
  * tool_pick_read. Returns the count, or −1 with what is wrong
  * in err (an unknown name, one the tool cannot run, more than max). */
 int tool_picks_parse(const char *sub, const char *list, const char *const *defaults,

@@ -3,7 +3,7 @@
 # file output and the OpenImageIO backend stay in texsample, which has the
 # CLI helpers and (when built) the OpenImageIO shim.
 file(GLOB TEXSAMPLE_FREQ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/freq/*.c)
-list(FILTER TEXSAMPLE_FREQ_SOURCES EXCLUDE REGEX "/(cmd_freq|out|oiio_backend)\\.c$")
+list(FILTER TEXSAMPLE_FREQ_SOURCES EXCLUDE REGEX "/(cmd_freq|out|oiio_backend|backends)\\.c$")
 # The filter registry (filters.h) that freq's backends and the other tools
 # select from rides in the same library, so the tests see it too.
 list(APPEND TEXSAMPLE_FREQ_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/filters.c)

@@ -6,6 +6,8 @@
  *   engines.c    the filters measured: registry entries (tools/filters.h),
  *                on libsample and on their OIIO twins
  *   timing.c     runs over pthreads, medians
+ *   gl.c         the OpenGL twins of the filters, through tools/backend.h,
+ *                with upload and read-back timed apart from the sampling
  *   report.c     the text table and the JSON
  *   save.c       --save: the queries and a manifest, for re-timing elsewhere
  *   cmd_bench.c  the subcommand
@@ -121,6 +123,9 @@ typedef struct bench_timing {
     int runs;
 } bench_timing;
 
+/* Median, min and max of v[0 … n) (n ≥ 1; sorts v). */
+void bench_timing_of(double *v, int n, bench_timing *out);
+
 /* Time `runs` passes of all n queries on `threads` threads (tiles taken
  * first come first served, in batches of `batch`), after one untimed
  * warm-up pass. Returns 0, or −1 if a pass failed. */
@@ -138,6 +143,30 @@ bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oii
                               size_t n, int threads, int runs, size_t batch);
 int bench_timer_pass(bench_timer *tm);
 int bench_timer_close(bench_timer *tm, bench_timing *out);
+
+/* ---- OpenGL (gl.c) ----------------------------------------------------- */
+
+/* One libsample filter's OpenGL twin on one set and format: the texture's
+ * upload once, then per pass the queries' upload, the draw (sampling) and
+ * the results' read-back, each timed to glFinish (tools/backends/gl.c). */
+typedef struct bench_gl_result {
+    bench_set set;
+    bench_format format;
+    int engine;                 /* libsample's engine whose state GL runs */
+    int na;                     /* 1: the driver cannot (note says why) */
+    char note[160];
+    double texture_upload_s;    /* all levels, once */
+    bench_timing sampling;      /* samples per second of the draw alone */
+    double query_upload_s, readback_s; /* per pass, medians */
+} bench_gl_result;
+
+struct tool_backend;
+/* Time engine e's sampler state on `gl` (a backend of tools/backend.h):
+ * one warm-up pass, then `runs` timed ones. Returns 0 (out->na set where
+ * the driver cannot do it), or −1 with the message in out->note. */
+int bench_gl_measure(struct tool_backend *gl, const bench_engine *e, int engine,
+                     const bench_texture *t, bench_set set, bench_format fmt,
+                     const sample_query *q, size_t n, int runs, bench_gl_result *out);
 
 /* ---- Report (report.c) ------------------------------------------------ */
 
@@ -161,6 +190,9 @@ typedef struct bench_report {
     int scalar;          /* 1: libsample ran through its reference path */
     const char *isa;     /* sample_isa_name(): the instruction set it ran on */
     double load[2];      /* 1-minute load average before and after (< 0: unknown) */
+    const bench_gl_result *gl; /* --gl: the OpenGL twins (ngl of them) */
+    size_t ngl;
+    const char *gl_driver;     /* GL_RENDERER; GL_VERSION */
 } bench_report;
 
 void bench_print_table(const bench_report *r);

@@ -6,6 +6,7 @@
 /* getloadavg (glibc, the BSDs, macOS). */
 #define _DEFAULT_SOURCE
 #include "bench.h"
+#include "../backend.h"
 #include "cli.h"
 #include "commands.h"
 
@@ -46,6 +47,12 @@ static const char help[] =
     "                     and OIIO's TextureSystem gets the same max_memory_MB;\n"
     "                     the tiles and bytes libsample read are printed per format\n"
     "                     (doc/texture-system.md)\n"
+    "  --gl               also time each filter's OpenGL twin (where it has one;\n"
+    "                     n/a otherwise) through EGL: texture upload, query\n"
+    "                     upload, sampling and read-back apart (doc/backends.md)\n"
+    "  --gl-device NAME   the OpenGL driver: an EGL device by index, DRM node or\n"
+    "                     part of its GL_RENDERER (default: Mesa's surfaceless\n"
+    "                     platform, llvmpipe); implies --gl\n"
     "  --scalar           libsample through its general per-query path\n"
     "                     (sample_batch_reference), to measure the fast path\n"
     "  --tmpdir DIR       where OIIO's texture files are written (default $TMPDIR\n"
@@ -64,8 +71,9 @@ static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usa
 enum { MAX_ENGINES = 32 };
 
 typedef struct bench_opts {
-    int size, runs, threads, oiio, scalar;
+    int size, runs, threads, oiio, scalar, gl;
     float cache_mb; /* 0: resident textures, OIIO's default cache */
+    const char *gl_device;
     size_t queries, batch;
     unsigned sets, formats; /* bit masks */
     const char *json, *tmpdir, *save, *filters;
@@ -116,6 +124,12 @@ static int parse_args(int argc, char **argv, bench_opts *o)
             o->runs = 3;
         } else if (cli_opt(argc, argv, &i, "--no-oiio", NULL)) {
             o->oiio = 0;
+        } else if (cli_opt(argc, argv, &i, "--gl", NULL)) {
+            o->gl = 1;
+        } else if (cli_opt(argc, argv, &i, "--gl-device", &v)) {
+            if (!v || !*v) return cli_usage_error("bench", "--gl-device needs a name");
+            o->gl = 1;
+            o->gl_device = v;
         } else if (cli_opt(argc, argv, &i, "--scalar", NULL)) {
             o->scalar = 1;
         } else if (cli_opt(argc, argv, &i, "--size", &v)) {
@@ -207,6 +221,9 @@ typedef struct bench_run {
     oiio_ts *ts;
     bench_result *res;
     size_t nres;
+    tool_backend gl; /* --gl: opened once */
+    bench_gl_result *glres;
+    size_t ngl;
 } bench_run;
 
 /* Is engine e measured? Every engine is one the filters named (the table
@@ -297,7 +314,9 @@ static int run_all(bench_run *b, const char *files)
     total = (size_t)(count_bits(b->o.sets) * count_bits(b->o.formats) * nsel *
                      (b->o.threads > 1 ? 2 : 1));
     b->res = calloc(total ? total : 1, sizeof *b->res);
-    if (!content || !q || !b->res) {
+    b->glres = calloc((size_t)(count_bits(b->o.sets) * count_bits(b->o.formats) * b->nours) + 1,
+                      sizeof *b->glres);
+    if (!content || !q || !b->res || !b->glres) {
         rc = cli_runtime_error("bench", "out of memory");
         goto done;
     }
@@ -321,6 +340,12 @@ static int run_all(bench_run *b, const char *files)
             }
             if (measure(b, &tex, (bench_format)fmt, (bench_set)set, q, &done, total) != 0)
                 rc = EXIT_RUNTIME;
+            for (e = 0; e < b->nours && b->gl.ops && rc == 0; ++e) {
+                bench_gl_result *g = &b->glres[b->ngl++];
+                if (bench_gl_measure(&b->gl, &b->eng[e], e, &tex, (bench_set)set, (bench_format)fmt,
+                                     q, b->o.queries, b->o.runs, g) != 0)
+                    rc = cli_runtime_error("bench", "OpenGL %s: %s", b->eng[e].name, g->note);
+            }
         }
         bench_texture_stats(&tex, stderr);
         bench_texture_free(&tex);
@@ -377,7 +402,7 @@ static int make_engines(bench_run *b)
 int cmd_bench(int argc, char **argv)
 {
     bench_run b;
-    char dir[1024];
+    char dir[1024], glerr[512];
     const char *tmp;
     char *command = NULL;
     double load[2];
@@ -419,6 +444,11 @@ int cmd_bench(int argc, char **argv)
         if (!b.o.save) rmdir(dir);
         return cli_runtime_error("bench", "cannot create an OpenImageIO TextureSystem");
     }
+    if (b.o.gl && tool_backend_gl_open(&b.gl, b.o.gl_device, glerr, sizeof glerr) != 0) {
+        oiio_ts_destroy(b.ts);
+        if (b.o.oiio && !b.o.save) remove_files(dir);
+        return cli_runtime_error("bench", "OpenGL: %s", glerr);
+    }
     if (getloadavg(&load[0], 1) != 1) load[0] = -1.0;
     rc = run_all(&b, b.o.oiio || b.o.save || b.o.cache_mb > 0.0f ? dir : NULL);
     if (getloadavg(&load[1], 1) != 1) load[1] = -1.0;
@@ -439,6 +469,9 @@ int cmd_bench(int argc, char **argv)
         r.queries = b.o.queries;
         r.batch = b.o.batch;
         r.command = command ? command : "texsample bench";
+        r.gl = b.glres;
+        r.ngl = b.ngl;
+        r.gl_driver = b.gl.driver;
         if (!b.o.json || strcmp(b.o.json, "-") != 0) bench_print_table(&r);
         if (b.o.json && bench_write_json(&r, b.o.json) != 0) rc = EXIT_RUNTIME;
         if (b.o.save) {
@@ -449,6 +482,8 @@ int cmd_bench(int argc, char **argv)
     oiio_ts_destroy(b.ts);
     if ((b.o.oiio || b.o.cache_mb > 0.0f) && !b.o.save) remove_files(dir);
     free(b.res);
+    free(b.glres);
+    tool_backend_close(&b.gl);
     free(command);
     return rc;
 }

@@ -48,6 +48,33 @@ static void cell(const bench_result *x)
     printf("  %-20s", buf);
 }
 
+/* The OpenGL rows (--gl): per set, format and filter, the sampling speed
+ * and the transfers beside it. */
+static void print_gl(const bench_report *r)
+{
+    size_t k;
+    printf("\nOpenGL: %s\ntexture = upload of all levels (once); queries, read-back = per pass; "
+           "sampling = the draw alone,\nmillions of samples per second, median [min-max] of %d "
+           "runs after a warm-up.\n",
+           r->gl_driver, r->runs);
+    printf("  %-15s %-6s %-16s %10s %10s  %-22s %10s\n", "set", "format", "filter", "texture ms",
+           "queries ms", "sampling", "read ms");
+    for (k = 0; k < r->ngl; ++k) {
+        const bench_gl_result *g = &r->gl[k];
+        char buf[64];
+        printf("  %-15s %-6s %-16s ", bench_set_names[g->set], bench_format_names[g->format],
+               r->engines[g->engine].name);
+        if (g->na) {
+            printf("n/a: %s\n", g->note);
+            continue;
+        }
+        snprintf(buf, sizeof buf, "%.2f [%.2f-%.2f]", g->sampling.median * 1e-6,
+                 g->sampling.min * 1e-6, g->sampling.max * 1e-6);
+        printf("%10.2f %10.2f  %-22s %10.2f\n", 1e3 * g->texture_upload_s, 1e3 * g->query_upload_s,
+               buf, 1e3 * g->readback_s);
+    }
+}
+
 void bench_print_table(const bench_report *r)
 {
     int set, fmt, e, k, nthr = r->threads_max > 1 ? 2 : 1, nw = 13;
@@ -103,6 +130,7 @@ void bench_print_table(const bench_report *r)
         printf("\n(ratio1: 1 thread, ratio*: %d threads)\n", r->threads_max);
     else
         printf("\n(ratio1: 1 thread)\n");
+    if (r->ngl) print_gl(r);
 }
 
 void bench_json_string(FILE *f, const char *s)
@@ -144,6 +172,32 @@ static void json_results(FILE *f, const bench_report *r)
     }
 }
 
+static void json_gl(FILE *f, const bench_report *r)
+{
+    size_t k;
+    fprintf(f, ",\n  \"gl\": {\"driver\": ");
+    bench_json_string(f, r->gl_driver);
+    fprintf(f, ", \"results\": [");
+    for (k = 0; k < r->ngl; ++k) {
+        const bench_gl_result *g = &r->gl[k];
+        fprintf(f, "%s\n    {\"set\": \"%s\", \"format\": \"%s\", \"filter\": \"%s\", ",
+                k ? "," : "", bench_set_names[g->set], bench_format_names[g->format],
+                r->engines[g->engine].name);
+        if (g->na) {
+            fprintf(f, "\"n/a\": ");
+            bench_json_string(f, g->note);
+            fprintf(f, "}");
+            continue;
+        }
+        fprintf(f, "\"texture_upload_s\": %.6g, \"query_upload_s\": %.6g, \"readback_s\": %.6g,\n"
+                   "     \"sampling_samples_per_s\": {\"median\": %.6g, \"min\": %.6g, \"max\": %.6g, "
+                   "\"runs\": %d}}",
+                g->texture_upload_s, g->query_upload_s, g->readback_s, g->sampling.median,
+                g->sampling.min, g->sampling.max, g->sampling.runs);
+    }
+    fprintf(f, "\n  ]}");
+}
+
 int bench_write_json(const bench_report *r, const char *path)
 {
     char *buf = NULL;
@@ -161,7 +215,9 @@ int bench_write_json(const bench_report *r, const char *path)
     fprintf(f, ",\n  \"load_before\": %.3g, \"load_after\": %.3g,\n  \"results\": [", r->load[0],
             r->load[1]);
     json_results(f, r);
-    fprintf(f, "\n  ]\n}\n");
+    fprintf(f, "\n  ]");
+    if (r->ngl) json_gl(f, r);
+    fprintf(f, "\n}\n");
     if (fclose(f) != 0) {
         free(buf);
         return cli_runtime_error("bench", "out of memory");

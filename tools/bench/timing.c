@@ -173,6 +173,15 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+void bench_timing_of(double *v, int n, bench_timing *out)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    out->runs = n;
+    out->min = v[0];
+    out->max = v[n - 1];
+    out->median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 struct bench_timer {
     job *jobs;
     pthread_t *tid;
@@ -265,11 +274,7 @@ int bench_timer_close(bench_timer *tm, bench_timing *out)
     int rc = -1;
     if (!tm) return -1;
     if (tm->done == tm->runs) {
-        qsort(tm->sps, (size_t)tm->runs, sizeof *tm->sps, cmp_double);
-        out->runs = tm->runs;
-        out->min = tm->sps[0];
-        out->max = tm->sps[tm->runs - 1];
-        out->median = tm->runs % 2 ? tm->sps[tm->runs / 2] : 0.5 * (tm->sps[tm->runs / 2 - 1] + tm->sps[tm->runs / 2]);
+        bench_timing_of(tm->sps, tm->runs, out);
         rc = 0;
     }
     timer_stop(tm);

@@ -17,7 +17,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-enum { MAX_SCENES = 32 };
+enum { MAX_SCENES = 32, MAX_PROGRAMS = 4 };
 
 typedef struct opts {
     const char *scenes[MAX_SCENES];
@@ -26,11 +26,19 @@ typedef struct opts {
     const char *out;
     cmp_config cfg[CMP_MAX_CONFIGS];
     int ncfg;
+    const char *gl_device;
+    tool_program_row prog[MAX_PROGRAMS];
+    int nprog;
+    tool_backend gl, progb[MAX_PROGRAMS]; /* opened by open_backends */
 } opts;
 
 /* The rows compare runs: any registry pick, corners included; OpenImageIO's
- * twins unless --no-oiio. */
-static unsigned accepted(int no_oiio) { return TOOL_PICK_CORNERS | (no_oiio ? 0u : TOOL_PICK_OIIO); }
+ * twins unless --no-oiio; OpenGL's where the build has EGL. */
+static unsigned accepted(int no_oiio)
+{
+    return TOOL_PICK_CORNERS | (no_oiio ? 0u : TOOL_PICK_OIIO) |
+           (tool_backend_gl_available() ? TOOL_PICK_GL : 0u);
+}
 
 static void usage(void)
 {
@@ -69,6 +77,7 @@ static void usage(void)
            "                      registry (doc/comparison.md); default, or 'all': those\n"
            "                      marked *\n");
     tool_picks_help(stdout, "                     ", cmp_default_configs, accepted(0));
+    tool_backend_help(stdout, 22);
     printf("  --no-oiio           leave out OpenImageIO's TextureSystem\n"
            "  --raw               also write float32 RGBA images (truth.f32, CONFIG.f32) and\n"
            "                      the metric mask (mask.u8) into each scene's folder\n\n"
@@ -120,6 +129,21 @@ static int parse_args(int argc, char **argv, opts *o)
             configs = v;
         } else if (cli_opt(argc, argv, &i, "--no-oiio", NULL)) {
             no_oiio = 1;
+        } else if (cli_opt(argc, argv, &i, "--gl-device", &v)) {
+            if (!v || !*v) return cli_usage_error("compare", "--gl-device needs a name (or 'list')");
+            if (strcmp(v, "list") == 0) {
+                char why[512];
+                return tool_backend_gl_list(stdout, why, sizeof why) < 0
+                           ? cli_runtime_error("compare", "%s", why)
+                           : EXIT_OK;
+            }
+            o->gl_device = v;
+        } else if (cli_opt(argc, argv, &i, "--backend-program", &v)) {
+            if (o->nprog == MAX_PROGRAMS)
+                return cli_usage_error("compare", "at most %d --backend-program", MAX_PROGRAMS);
+            if (tool_program_row_parse(v, o->prog, o->nprog, err, sizeof err) != 0)
+                return cli_usage_error("compare", "--backend-program: %s", err);
+            ++o->nprog;
         } else if (cli_opt(argc, argv, &i, "--raw", NULL)) {
             o->raw = 1;
         } else {
@@ -129,10 +153,48 @@ static int parse_args(int argc, char **argv, opts *o)
     /* After the loop: --no-oiio may follow --configs. */
     o->ncfg = cmp_configs_parse(configs, accepted(no_oiio), o->cfg, CMP_MAX_CONFIGS, err, sizeof err);
     if (o->ncfg < 0) return cli_usage_error("compare", "--configs: %s", err);
+    for (k = 0; k < o->ncfg; ++k)
+        if (o->cfg[k].pick.gl) o->cfg[k].tb = &o->gl;
+    if (o->ncfg + o->nprog > CMP_MAX_CONFIGS)
+        return cli_usage_error("compare", "at most %d rows in all", CMP_MAX_CONFIGS);
+    /* The programs' rows after the registry's. */
+    for (k = 0; k < o->nprog; ++k) {
+        cmp_config *c = &o->cfg[o->ncfg++];
+        const char *name = o->prog[k].name;
+        _Static_assert(sizeof c->name >= sizeof o->prog[k].name &&
+                           sizeof c->label >= sizeof o->prog[k].name + sizeof " (program)",
+                       "a program's name fits a row's name and label");
+        memset(c, 0, sizeof *c);
+        memcpy(c->name, name, strlen(name) + 1);
+        memcpy(c->label, name, strlen(name));
+        memcpy(c->label + strlen(name), " (program)", sizeof " (program)");
+        c->tb = &o->progb[k];
+    }
     if (o->ncfg == 0) return cli_usage_error("compare", "--configs names no configuration");
     if (o->nscenes == 0)
         for (k = 0; cmp_default_scenes[k]; ++k) o->scenes[o->nscenes++] = cmp_default_scenes[k];
     return -1;
+}
+
+/* The OpenGL context (once, for every gl-* row) and the programs. */
+static int open_backends(opts *o)
+{
+    char err[512];
+    int k, gl = 0;
+    for (k = 0; k < o->ncfg; ++k) gl |= o->cfg[k].pick.gl;
+    if (gl && tool_backend_gl_open(&o->gl, o->gl_device, err, sizeof err) != 0)
+        return cli_runtime_error("compare", "OpenGL: %s", err);
+    for (k = 0; k < o->nprog; ++k)
+        if (tool_backend_program_open(&o->progb[k], o->prog[k].command, err, sizeof err) != 0)
+            return cli_runtime_error("compare", "%s: %s", o->prog[k].name, err);
+    return EXIT_OK;
+}
+
+static void close_backends(opts *o)
+{
+    int k;
+    tool_backend_close(&o->gl);
+    for (k = 0; k < o->nprog; ++k) tool_backend_close(&o->progb[k]);
 }
 
 /* mkdir -p */
@@ -229,7 +291,18 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
         cmp_result r;
         w->cfg = c;
         fprintf(stderr, "compare %s: %s\n", s->label, c->label);
-        if (c->pick.oiio
+        if (c->tb) {
+            int st = cmp_run_backend(&v, c, o->runs, &r, w->note, sizeof w->note);
+            if (st == TOOL_BACKEND_NA) {
+                w->na = 1;
+                fprintf(stderr, "texsample compare: %s: %s: n/a: %s\n", s->label, c->name, w->note);
+                continue;
+            }
+            if (st != 0) {
+                cli_runtime_error("compare", "%s: %s: %s", s->label, c->name, w->note);
+                goto out;
+            }
+        } else if (c->pick.oiio
                 ? cmp_run_oiio(&v, c, dir, o->threads, o->runs, &r, w->note, sizeof w->note)
                 : cmp_run_sample(&v, c, o->threads, o->runs, &r, w->note, sizeof w->note)) {
             fprintf(stderr, "texsample compare: %s: %s (left out)\n", s->label, w->note);
@@ -288,7 +361,7 @@ static void print_table(const cmp_scene_result *s)
     for (r = 0; r < s->nrows; ++r) {
         const cmp_row *w = &s->rows[r];
         if (!w->ok) {
-            printf("  %-*s not run: %s\n", lw, w->cfg->label, w->note);
+            printf("  %-*s %s: %s\n", lw, w->cfg->label, w->na ? "n/a" : "not run", w->note);
             continue;
         }
         printf("  %-*s %9.5f %9.2f %10.1f ", lw, w->cfg->label, w->m.rmse, w->m.psnr,
@@ -313,12 +386,22 @@ int cmd_compare(int argc, char **argv)
         return EXIT_OK;
     }
     if ((k = parse_args(argc, argv, &o)) >= 0) return k;
-    if (make_dirs(o.out)) return cli_runtime_error("compare", "cannot create folder %s", o.out);
+    if ((k = open_backends(&o)) != EXIT_OK) {
+        close_backends(&o);
+        return k;
+    }
+    if (make_dirs(o.out)) {
+        close_backends(&o);
+        return cli_runtime_error("compare", "cannot create folder %s", o.out);
+    }
     len = (size_t)snprintf(command, sizeof command, "texsample compare");
     for (k = 1; k < argc && len < sizeof command; ++k)
         len += (size_t)snprintf(command + len, sizeof command - len, " %s", argv[k]);
     res = calloc((size_t)o.nscenes, sizeof *res);
-    if (!res) return cli_runtime_error("compare", "out of memory");
+    if (!res) {
+        close_backends(&o);
+        return cli_runtime_error("compare", "out of memory");
+    }
     for (k = 0; k < o.nscenes && rc == EXIT_OK; ++k) rc = compare_scene(&o, o.scenes[k], &res[k]);
     if (rc == EXIT_OK) {
         snprintf(path, sizeof path, "%s/results.csv", o.out);
@@ -339,5 +422,6 @@ int cmd_compare(int argc, char **argv)
                    res[k].label, o.out, res[k].label);
     }
     free(res);
+    close_backends(&o);
     return rc;
 }

@@ -6,6 +6,8 @@
  *   view.c        one ray cast per pixel: the queries every filter answers
  *   run.c         one configuration over a view (libsample), timed
  *   oiio.c        the same through OpenImageIO's TextureSystem
+ *   backends.c    the same through a backend of tools/backend.h (OpenGL,
+ *                 outside programs)
  *   truth.c       the ground truth of DESIGN §8 and the metric mask
  *   metrics.c     RMSE, PSNR, per-pixel error, the worst crop
  *   picture.c     8-bit pictures: tone, heat map + legend, crops, contact sheet;
@@ -19,6 +21,7 @@
 #ifndef TEXSAMPLE_CMP_INTERNAL_H
 #define TEXSAMPLE_CMP_INTERNAL_H
 
+#include "backend.h"
 #include "filters.h"
 #include "render/render.h"
 #include "sample/sample.h"
@@ -27,13 +30,15 @@
 
 /* ---- Configurations (configs.c) -------------------------------------- */
 
-#define CMP_MAX_CONFIGS 16
+#define CMP_MAX_CONFIGS 32
 
-/* One row: a registry pick (libsample or its OpenImageIO twin). */
+/* One row: a registry pick (libsample, its OpenImageIO or OpenGL twin), or
+ * an outside program (pick.f NULL: the program's own filter). */
 typedef struct cmp_config {
     tool_pick pick;
     char name[TOOL_FILTER_NAME_MAX];   /* command-line and file name: "trilinear" */
     char label[TOOL_FILTER_LABEL_MAX]; /* what the page calls it */
+    tool_backend *tb; /* OpenGL and program rows: the backend that samples */
 } cmp_config;
 
 /* compare's default rows, NULL-terminated registry names. */
@@ -104,6 +109,12 @@ int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, int runs
 int cmp_oiio_available(void);
 int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, int threads,
                  int runs, cmp_result *r, char *err, size_t errlen);
+/* A row on c->tb (backends.c): every textured pixel, one batch per
+ * texture, `runs` times; ns_per_sample is the sampling alone (the
+ * backend's upload and read-back left out). Returns 0, TOOL_BACKEND_NA or
+ * TOOL_BACKEND_ERROR with the reason in err. */
+int cmp_run_backend(const cmp_view *v, const cmp_config *c, int runs, cmp_result *r, char *err,
+                    size_t errlen);
 void cmp_result_free(cmp_result *r);
 
 /* Background and untextured pixels, shared by every engine. */
@@ -210,6 +221,7 @@ int cmp_pic_write(const char *path, const cmp_pic *p, char *err, size_t errlen);
 typedef struct cmp_row {
     const cmp_config *cfg;
     int ok;             /* 0: not run (note says why) */
+    int na;             /* not run because the backend cannot do the scene's state */
     char note[200];
     cmp_metrics m;
     double seconds, ns_per_sample, texels; /* texels < 0: not known */

@@ -24,6 +24,7 @@ int cmp_configs_parse(const char *list, unsigned accept, cmp_config *out, int ma
                                 max < CMP_MAX_CONFIGS ? max : CMP_MAX_CONFIGS, err, errlen);
     for (k = 0; k < n; ++k) {
         out[k].pick = picks[k];
+        out[k].tb = NULL;
         tool_pick_name(&picks[k], out[k].name, sizeof out[k].name);
         tool_pick_label(&picks[k], out[k].label, sizeof out[k].label);
     }
@@ -33,5 +34,5 @@ int cmp_configs_parse(const char *list, unsigned accept, cmp_config *out, int ma
 void cmp_config_sampler(const cmp_config *c, const sample_sampler *scene, sample_sampler *out)
 {
     *out = *scene;
-    tool_filter_apply(c->pick.f, out);
+    if (c->pick.f) tool_filter_apply(c->pick.f, out);
 }

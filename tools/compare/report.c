@@ -118,6 +118,7 @@ int cmp_write_csv(const char *path, const cmp_scene_result *s, int n)
             bprintf(&b, ",%zu,%d,%d,\"", s[k].measured, s[k].truth_samples, s[k].runs);
             {
                 const char *c;
+                if (w->na) bprintf(&b, "n/a: ");
                 for (c = w->note; *c; ++c) bprintf(&b, *c == '"' ? "\"\"" : "%c", *c);
             }
             bprintf(&b, "\"\n");
@@ -165,6 +166,10 @@ int cmp_write_json(const char *path, const cmp_scene_result *s, int n, const cha
             jstr(&b, "config", w->cfg->name);
             bprintf(&b, ", ");
             jstr(&b, "label", w->cfg->label);
+            if (w->cfg->tb) {
+                bprintf(&b, ", ");
+                jstr(&b, "driver", w->cfg->tb->driver);
+            }
             if (w->ok) {
                 bprintf(&b, ", \"rmse\": ");
                 bnum(&b, w->m.rmse, "null");
@@ -186,7 +191,7 @@ int cmp_write_json(const char *path, const cmp_scene_result *s, int n, const cha
                 jstr(&b, "crop", p);
             } else {
                 bprintf(&b, ", ");
-                jstr(&b, "error", w->note);
+                jstr(&b, w->na ? "n/a" : "error", w->note);
             }
             bprintf(&b, "}");
         }
@@ -264,8 +269,14 @@ static void html_table(buf *b, const cmp_scene_result *c)
         const cmp_row *w = &c->rows[r];
         bprintf(b, "<tr%s><td class=\"l\">", w->ok && w->m.rmse == best ? " class=\"best\"" : "");
         bescape(b, w->cfg->label, 0);
+        if (w->cfg->tb) {
+            /* Which driver and device, or which program, produced the row. */
+            bprintf(b, "<br><small>");
+            bescape(b, w->cfg->tb->driver, 0);
+            bprintf(b, "</small>");
+        }
         if (!w->ok) {
-            bprintf(b, "</td><td class=\"l\" colspan=\"6\">not run: ");
+            bprintf(b, "</td><td class=\"l\" colspan=\"6\">%s: ", w->na ? "n/a" : "not run");
             bescape(b, w->note, 0);
             bprintf(b, "</td></tr>\n");
             continue;

@@ -2,6 +2,7 @@
  * doc/frequency-tests.md). Options, the filter list and the run; the
  * measurement is in the texsample_freq library. */
 #define _POSIX_C_SOURCE 200809L
+#include "backend.h"
 #include "cli.h"
 #include "commands.h"
 #include "freq_cli.h"
@@ -13,7 +14,8 @@
 #include <unistd.h>
 
 #define MAX_LIST 16
-#define MAX_BACKENDS 16
+#define MAX_BACKENDS 32
+#define MAX_PROGRAMS 4
 
 static const char help[] =
     "usage: texsample freq [options]\n"
@@ -37,21 +39,23 @@ static const char help[] =
     "  --filters LIST     comma-separated filters, from the list below (default:\n"
     "                     those marked *, as far as available; 'all' is the same)\n"
     "  --no-oiio          leave out OpenImageIO's TextureSystem\n"
+
     "  --size N           texture side, a power of two 16..8192 (default 512)\n"
     "  --step F           screen-frequency grid step, cycles/pixel (default 1/64)\n"
     "  --fmax F           top of the grid, cycles/pixel (default 2)\n"
     "  --width N, --rows N, --phases N\n"
     "                     pixels per row, rows, offsets (default 16, 1, 64)\n"
-    "  --no-png           no PNG pictures (no zone plates)\n"
-    "\n"
-    "Filters (the tools' shared registry, doc/comparison.md):\n";
+    "  --no-png           no PNG pictures (no zone plates)\n";
+static const char help_filters[] = "\nFilters (the tools' shared registry, doc/comparison.md):\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
 /* The picks freq can run in this build: libsample's entries without the
- * exact corners (the sweep has only Jacobians), OIIO twins with the shim. */
+ * exact corners (the sweep has only Jacobians), OIIO twins with the shim,
+ * OpenGL twins with EGL. */
 static unsigned accepted(int no_oiio)
 {
-    return fq_oiio_available() && !no_oiio ? TOOL_PICK_OIIO : 0u;
+    return (fq_oiio_available() && !no_oiio ? TOOL_PICK_OIIO : 0u) |
+           (tool_backend_gl_available() ? TOOL_PICK_GL : 0u);
 }
 
 static int parse_list(const char *s, double *out, int *n, double lo, double hi)
@@ -107,7 +111,12 @@ int cmd_freq(int argc, char **argv)
     int nm = 0, nt = 0, nr = 0, quick = 0, no_oiio = 0, png = 1, i, k, rc = EXIT_OK;
     int size = 0, width = 0, rows = 0, phases = 0, npicks, any_oiio = 0;
     float step = 0.0f, fmax = 2.0f;
-    const char *out_dir = "freq-out", *filters = NULL;
+    const char *out_dir = "freq-out", *filters = NULL, *gl_device = NULL;
+    tool_program_row prog[MAX_PROGRAMS];
+    tool_backend gl, progb[MAX_PROGRAMS];
+    fq_tool_cfg tool_cfg[MAX_BACKENDS];
+    fq_na_row na[MAX_BACKENDS];
+    int nprog = 0, nna = 0;
     const fq_backend *list[MAX_BACKENDS];
     fq_backend backends[MAX_BACKENDS];
     tool_pick picks[MAX_BACKENDS];
@@ -122,6 +131,8 @@ int cmd_freq(int argc, char **argv)
         const char *v = NULL;
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
+            tool_backend_help(stdout, 21);
+            fputs(help_filters, stdout);
             tool_picks_help(stdout, "  ", fq_default_filters, accepted(0));
             fputs(help_tail, stdout);
             return EXIT_OK;
@@ -137,6 +148,18 @@ int cmd_freq(int argc, char **argv)
         } else if (cli_opt(argc, argv, &i, "--filters", &v)) {
             if (!v || !*v) return cli_usage_error("freq", "--filters needs a list");
             filters = v;
+        } else if (cli_opt(argc, argv, &i, "--gl-device", &v)) {
+            if (!v || !*v) return cli_usage_error("freq", "--gl-device needs a name (or 'list')");
+            if (strcmp(v, "list") == 0) return tool_backend_gl_list(stdout, err, sizeof err) < 0
+                                                   ? cli_runtime_error("freq", "%s", err)
+                                                   : EXIT_OK;
+            gl_device = v;
+        } else if (cli_opt(argc, argv, &i, "--backend-program", &v)) {
+            if (nprog == MAX_PROGRAMS)
+                return cli_usage_error("freq", "at most %d --backend-program", MAX_PROGRAMS);
+            if (tool_program_row_parse(v, prog, nprog, err, sizeof err) != 0)
+                return cli_usage_error("freq", "--backend-program: %s", err);
+            ++nprog;
         } else if (cli_opt(argc, argv, &i, "--m", &v)) {
             if (!parse_list(v, m, &nm, 1.0 / 64, 1024))
                 return cli_usage_error("freq", "--m: up to %d numbers in [1/64, 1024]", MAX_LIST);
@@ -189,7 +212,9 @@ int cmd_freq(int argc, char **argv)
     npicks = tool_picks_parse("freq", filters ? filters : "all", fq_default_filters,
                               accepted(no_oiio), picks, MAX_BACKENDS, err, sizeof err);
     if (npicks < 0) return cli_usage_error("freq", "--filters: %s", err);
-    if (npicks == 0) return cli_usage_error("freq", "--filters names no filter");
+    if (npicks == 0 && nprog == 0) return cli_usage_error("freq", "--filters names no filter");
+    if (npicks + nprog > MAX_BACKENDS)
+        return cli_usage_error("freq", "at most %d rows in all", MAX_BACKENDS);
     for (k = 0; k < npicks; ++k) any_oiio |= picks[k].oiio;
 
     /* OpenImageIO writes a texture file per grating into a private folder. */
@@ -202,12 +227,54 @@ int cmd_freq(int argc, char **argv)
         fq_oiio_file_init(&oiio_file, tmp);
     }
     memset(&plan, 0, sizeof plan);
-    for (k = 0; k < npicks; ++k) {
-        if (picks[k].oiio)
-            fq_oiio_backend(&picks[k], &oiio_file, &oiio_cfg[k], &backends[k]);
-        else
-            fq_libsample_backend(picks[k].f, &backends[k]);
+    memset(&gl, 0, sizeof gl);
+    memset(progb, 0, sizeof progb);
+    for (k = 0; k < npicks + nprog; ++k) {
+        const tool_pick *p = k < npicks ? &picks[k] : NULL;
+        if (p && p->oiio) {
+            fq_oiio_backend(p, &oiio_file, &oiio_cfg[k], &backends[k]);
+        } else if (p && !p->gl) {
+            fq_libsample_backend(p->f, &backends[k]);
+        } else {
+            /* OpenGL and outside programs: opened here, and tried once so
+             * that a configuration they cannot do is a row "n/a: why". */
+            char name[TOOL_FILTER_NAME_MAX], label[TOOL_FILTER_LABEL_MAX];
+            tool_backend *tb = p ? &gl : &progb[k - npicks];
+            int st;
+            if (!tb->ops &&
+                (p ? tool_backend_gl_open(tb, gl_device, err, sizeof err)
+                   : tool_backend_program_open(tb, prog[k - npicks].command, err, sizeof err)) != 0) {
+                rc = cli_runtime_error("freq", "%s: %s", p ? "OpenGL" : prog[k - npicks].name, err);
+                goto done;
+            }
+            if (p) {
+                tool_pick_name(p, name, sizeof name);
+                tool_pick_label(p, label, sizeof label);
+            } else {
+                snprintf(name, sizeof name, "%s", prog[k - npicks].name);
+                snprintf(label, sizeof label, "%s (program)", prog[k - npicks].name);
+            }
+            fq_tool_backend(tb, p ? p->f : NULL, name, label, &tool_cfg[k], &backends[k]);
+            if ((st = fq_tool_probe(&backends[k], err, sizeof err)) == TOOL_BACKEND_NA) {
+                na[nna].label = tool_cfg[k].label;
+                na[nna].driver = tb->driver;
+                snprintf(na[nna++].reason, sizeof na[0].reason, "%.*s",
+                         (int)sizeof na[0].reason - 1, err);
+                fprintf(stderr, "texsample freq: %s: n/a: %s\n", name, err);
+                continue;
+            }
+            if (st != 0) {
+                rc = cli_runtime_error("freq", "%s: %s", name, err);
+                goto done;
+            }
+        }
         list[plan.nbackends++] = &backends[k];
+    }
+    plan.na = na;
+    plan.nna = nna;
+    if (plan.nbackends == 0) {
+        rc = cli_runtime_error("freq", "no row can run here (each is n/a)");
+        goto done;
     }
     plan.m = m;
     plan.nm = nm;
@@ -252,6 +319,8 @@ int cmd_freq(int argc, char **argv)
     printf("wrote %s/index.html (%zu points)\n", out_dir, sweep.count);
 done:
     for (k = 0; k < MAX_BACKENDS; ++k) free(zone[k]);
+    tool_backend_close(&gl);
+    for (k = 0; k < MAX_PROGRAMS; ++k) tool_backend_close(&progb[k]);
     fq_sweep_free(&sweep);
     fq_oiio_file_clear(&oiio_file);
     if (tmp[0]) rmdir(tmp);

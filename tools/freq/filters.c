@@ -75,4 +75,5 @@ void fq_libsample_backend(const tool_filter *f, fq_backend *out)
     out->release = lib_release;
     out->config = f;
     out->counts_texels = 1;
+    out->driver = NULL;
 }

@@ -105,7 +105,19 @@ typedef struct fq_backend {
     void (*release)(void *ctx);
     const void *config; /* backend data: the sampler state for libsample */
     int counts_texels;  /* 0: texels per sample is not known (OpenImageIO) */
+    /* What produced the row (tools/backend.h: GL_RENDERER and GL_VERSION,
+     * a program's command); NULL: libsample or OpenImageIO, named by the
+     * label. */
+    const char *driver;
 } fq_backend;
+
+/* A row asked for that its backend cannot run (tools/backend.h,
+ * TOOL_BACKEND_NA): the tables show it as "n/a: reason". */
+typedef struct fq_na_row {
+    const char *label;
+    const char *driver; /* may be NULL */
+    char reason[200];
+} fq_na_row;
 
 /* freq's default rows, NULL-terminated registry names (tools/filters.h):
  * the OpenGL ladder, cubic, the footprint filters and OpenImageIO's
@@ -167,6 +179,7 @@ typedef struct fq_plan {
     double f_max;     /* top of the grid (2) */
     int width, rows, phases;
     const fq_backend *const *backends; int nbackends;
+    const fq_na_row *na; int nna; /* rows not run, for the tables */
     /* Called after each grating texture is done (may be NULL). */
     void (*progress)(size_t done, size_t total);
 } fq_plan;

@@ -35,6 +35,21 @@ void fq_oiio_backend(const tool_pick *p, fq_oiio_file *file, fq_oiio_cfg *cfg, f
 /* Remove the current file, free the copy and the TextureSystem. */
 void fq_oiio_file_clear(fq_oiio_file *file);
 
+/* A row on a backend of tools/backend.h (backends.c): the OpenGL twin of
+ * a registry entry, or an outside program (f NULL: the program's own
+ * filter). Caller-owned, must outlive the fq_backend. */
+typedef struct fq_tool_cfg {
+    struct tool_backend *tb;
+    const tool_filter *f;
+    char name[TOOL_FILTER_NAME_MAX], label[TOOL_FILTER_LABEL_MAX];
+} fq_tool_cfg;
+/* The row as a backend of the sweep: REPEAT on both axes, f's settings. */
+void fq_tool_backend(struct tool_backend *tb, const tool_filter *f, const char *name,
+                     const char *label, fq_tool_cfg *cfg, fq_backend *out);
+/* Try the row on a small texture and one query: 0 (it runs),
+ * TOOL_BACKEND_NA or TOOL_BACKEND_ERROR with the reason in err. */
+int fq_tool_probe(const fq_backend *b, char *err, size_t errlen);
+
 /* Write every output of a finished sweep into `dir` (created if missing):
  * freq.csv, summary.csv, summary.md, plot_r*_t*.svg, zone_*.png (when
  * built with libsample_io and png is set), index.html. `zone` holds

@@ -162,6 +162,7 @@ void fq_oiio_backend(const tool_pick *p, fq_oiio_file *file, fq_oiio_cfg *cfg, f
     out->release = oiio_release;
     out->config = cfg;
     out->counts_texels = 0;
+    out->driver = NULL;
 }
 
 #else

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 void fq_report_csv(const fq_plan *plan, const fq_sweep *s, fq_buf *out)
 {
@@ -99,6 +100,22 @@ static void header(fq_buf *out, const table_fmt *t, const char *const *cols, int
     }
 }
 
+/* The rows that did not run, with the reason in the first number's
+ * column and the other `ncols` − 2 cells empty. */
+static void na_rows(const fq_plan *plan, const table_fmt *t, int ncols, fq_buf *out)
+{
+    int k, c;
+    char text[256];
+    for (k = 0; k < plan->nna; ++k) {
+        fq_buf_printf(out, "%s", t->row);
+        cell_text(out, t, 0, plan->na[k].label);
+        snprintf(text, sizeof text, "n/a: %s", plan->na[k].reason);
+        cell_text(out, t, 0, text);
+        for (c = 2; c < ncols; ++c) cell_text(out, t, 0, "");
+        fq_buf_printf(out, "%s", t->row_end);
+    }
+}
+
 /* Per filter, everything folded: the two numbers with their worst case and
  * the cost. */
 static void table_overall(const fq_plan *plan, const fq_sweep *s, const table_fmt *t, fq_buf *out)
@@ -121,6 +138,7 @@ static void table_overall(const fq_plan *plan, const fq_sweep *s, const table_fm
         cell_num(out, t, st.ns, "%.0f");
         fq_buf_printf(out, "%s", t->row_end);
     }
+    na_rows(plan, t, 7, out);
     fq_buf_printf(out, "%s", t->end);
 }
 
@@ -148,6 +166,7 @@ static void table_by_r(const fq_plan *plan, const fq_sweep *s, const table_fmt *
         }
         fq_buf_printf(out, "%s", t->row_end);
     }
+    na_rows(plan, t, n + 1, out);
     fq_buf_printf(out, "%s", t->end);
 }
 
@@ -162,6 +181,35 @@ static void html_list(fq_buf *out, const double *v, int n, const char *unit)
 {
     int k;
     for (k = 0; k < n; ++k) fq_buf_printf(out, "%s%g%s", k ? ", " : "", v[k], unit);
+}
+
+/* s with <, > and & escaped. */
+static void html_text(fq_buf *out, const char *s)
+{
+    for (; *s; ++s) {
+        if (*s == '<') fq_buf_printf(out, "&lt;");
+        else if (*s == '>') fq_buf_printf(out, "&gt;");
+        else if (*s == '&') fq_buf_printf(out, "&amp;");
+        else fq_buf_printf(out, "%c", *s);
+    }
+}
+
+/* Which sampler produced each row: the driver and device of an OpenGL row
+ * (GL_RENDERER; GL_VERSION), an outside program's command. */
+static void html_drivers(const fq_plan *plan, fq_buf *out)
+{
+    int b;
+    fq_buf_printf(out, "<h2>Samplers</h2>\n<table>\n<tr><th>row</th><th>produced by</th></tr>\n");
+    for (b = 0; b < plan->nbackends + plan->nna; ++b) {
+        const char *label = b < plan->nbackends ? plan->backends[b]->label : plan->na[b - plan->nbackends].label;
+        const char *driver = b < plan->nbackends ? plan->backends[b]->driver : plan->na[b - plan->nbackends].driver;
+        fq_buf_printf(out, "<tr><td>");
+        html_text(out, label);
+        fq_buf_printf(out, "</td><td>");
+        html_text(out, driver ? driver : strncmp(label, "OpenImageIO", 11) == 0 ? "OpenImageIO TextureSystem" : "libsample " SAMPLE_VERSION_STRING);
+        fq_buf_printf(out, "</td></tr>\n");
+    }
+    fq_buf_printf(out, "</table>\n");
 }
 
 void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *svgs,
@@ -180,15 +228,7 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *s
                   "</style></head><body>\n"
                   "<h1>Frequency tests</h1>\n<p>Produced by <code>",
                   FQ_ZONE_PIXELS);
-    {
-        const char *c;
-        for (c = command; *c; ++c) {
-            if (*c == '<') fq_buf_printf(out, "&lt;");
-            else if (*c == '>') fq_buf_printf(out, "&gt;");
-            else if (*c == '&') fq_buf_printf(out, "&amp;");
-            else fq_buf_printf(out, "%c", *c);
-        }
-    }
+    html_text(out, command);
     fq_buf_printf(out,
                   "</code>. A sinusoidal grating of f cycles/texel is sampled with m texels "
                   "per pixel along its wave vector and m&middot;r across it; the curves give "
@@ -210,6 +250,7 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *s
                        "mean of any one curve.</p>\n");
     table_overall(plan, s, &HTML, out);
     table_by_r(plan, s, &HTML, out);
+    html_drivers(plan, out);
     fq_buf_printf(out, "<h2>Curves</h2>\n<p>One figure per (&theta;, r), one panel per m "
                        "(left to right, top to bottom: m = ");
     html_list(out, plan->m, plan->nm, "");

@@ -1,0 +1,127 @@
+/*
+ * Backends (doc/backends.md): the samplers that compare, freq and bench
+ * measure, behind one interface, so that every row is asked the same
+ * queries on the same texels and scored against the same ground truth.
+ *
+ *   backends/libsample.c  libsample itself (sample_batch), any registry entry
+ *   backends/gl.c         an OpenGL driver through EGL: textureGrad in a
+ *                         fragment shader (Mesa llvmpipe by default, any
+ *                         EGL device by name)
+ *   backends/program.c    an outside program that speaks the `lookup` file
+ *                         protocol (texture and query files in, RGBA float32
+ *                         out)
+ *
+ * A backend is opened once (a GL context, a command line) and then serves
+ * any number of (texture, sampler) pairs: prepare moves the texture's levels
+ * to it and fixes the sampler state, sample answers a batch of 2D queries,
+ * release forgets the texture. A backend that cannot do a configuration
+ * (a wrap mode OpenGL lacks, a cube map, a footprint filter) says why from
+ * prepare with TOOL_BACKEND_NA, so the tools print the row as "n/a: reason"
+ * instead of leaving it out.
+ */
+#ifndef TEXSAMPLE_BACKEND_H
+#define TEXSAMPLE_BACKEND_H
+
+#include "sample/sample.h"
+
+#include <stddef.h>
+#include <stdio.h>
+
+/* prepare's and sample's results besides 0 (success). */
+enum {
+    TOOL_BACKEND_ERROR = -1, /* something failed: err says what */
+    TOOL_BACKEND_NA = -2,    /* the backend cannot do this configuration: err says why */
+};
+
+/* Where a batch's time went (seconds, added to): moving texels and queries
+ * in, sampling, moving results out. A backend that cannot tell the parts
+ * apart puts everything in `sample`. */
+typedef struct tool_backend_times {
+    double upload, sample, readback;
+} tool_backend_times;
+
+typedef struct tool_backend tool_backend;
+typedef struct tool_backend_tex tool_backend_tex;
+
+typedef struct tool_backend_ops {
+    /* tex: a 2D or other texture of libsample (its levels are what the
+     * backend receives); smp: the full sampler state. Returns 0 with *out
+     * set, TOOL_BACKEND_NA or TOOL_BACKEND_ERROR with a message. */
+    int (*prepare)(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
+                   tool_backend_tex **out, tool_backend_times *t, char *err, size_t errlen);
+    /* n queries → n × 4 floats; texels (may be NULL) gets the texels read
+     * added, by backends that count them (libsample). Returns 0, or
+     * TOOL_BACKEND_NA (an outside program may find out only here) or
+     * TOOL_BACKEND_ERROR with a message. */
+    int (*sample)(tool_backend *b, tool_backend_tex *tx, const sample_query *q, size_t n,
+                  float *rgba, double *texels, tool_backend_times *t, char *err, size_t errlen);
+    void (*release)(tool_backend *b, tool_backend_tex *tx);
+    void (*close)(tool_backend *b);
+} tool_backend_ops;
+
+struct tool_backend {
+    const tool_backend_ops *ops;
+    /* What produced the rows, for tables and pages: "libsample 1.2",
+     * "llvmpipe (LLVM 15.0.6, 256 bits); 4.5 (Core Profile) Mesa 22.3.6",
+     * "program: python3 tools/examples/bilinear.py". */
+    char driver[384];
+    int counts_texels; /* 1: sample adds the texels read */
+    void *impl;
+};
+
+/* ---- Opening ------------------------------------------------------------- */
+
+/* libsample (sample_batch; the reference path when `reference`). Never
+ * fails. */
+void tool_backend_libsample(tool_backend *b, int reference);
+
+/* 1 when this build has the OpenGL backend (EGL found at configure time). */
+int tool_backend_gl_available(void);
+/* An OpenGL 3.3 core context through EGL without a window: device NULL or
+ * "" is Mesa's surfaceless platform (llvmpipe unless the environment picks
+ * another Mesa driver); otherwise an EGL device (EGL_EXT_device_enumeration)
+ * whose index, DRM node path or GL_RENDERER (a case-insensitive part of it)
+ * matches `device`. Returns 0, or TOOL_BACKEND_ERROR with a message (no
+ * EGL, no such device, no context). */
+int tool_backend_gl_open(tool_backend *b, const char *device, char *err, size_t errlen);
+/* The EGL devices and what each renders with, one a line, on out. Returns
+ * how many, or −1 with a message in err when EGL has none to list. */
+int tool_backend_gl_list(FILE *out, char *err, size_t errlen);
+
+/* An outside program (doc/backends.md, "The lookup protocol"): `command`
+ * runs through /bin/sh with the protocol's arguments appended; its files go
+ * in a private folder under $TMPDIR. Returns 0, or TOOL_BACKEND_ERROR. */
+int tool_backend_program_open(tool_backend *b, const char *command, char *err, size_t errlen);
+
+/* ---- Using ---------------------------------------------------------------- */
+
+int tool_backend_prepare(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
+                         tool_backend_tex **out, tool_backend_times *t, char *err, size_t errlen);
+int tool_backend_sample(tool_backend *b, tool_backend_tex *tx, const sample_query *q, size_t n,
+                        float *rgba, double *texels, tool_backend_times *t, char *err,
+                        size_t errlen);
+void tool_backend_release(tool_backend *b, tool_backend_tex *tx);
+/* Accepts a backend that was never opened (zeroed). */
+void tool_backend_close(tool_backend *b);
+
+/* ---- Named rows: "NAME=COMMAND" ------------------------------------------ */
+
+/* An outside program named on a command line. */
+typedef struct tool_program_row {
+    char name[48];  /* the row's name: letters, digits, '-', '_', '.' */
+    const char *command;
+} tool_program_row;
+
+/* Split "NAME=COMMAND" (the --backend-program value) into rows[n]: NAME
+ * must be new among rows[0 … n) and no registry name (tools/filters.h), as
+ * it names the row's files and table lines. Returns 0, or −1 with what is
+ * wrong in err. */
+int tool_program_row_parse(const char *spec, tool_program_row *rows, int n, char *err,
+                           size_t errlen);
+
+/* The usage text of the backend options the tools share (--gl-device,
+ * --backend-program): options from column 2, descriptions from column
+ * `col`. */
+void tool_backend_help(FILE *out, int col);
+
+#endif
