@@ -172,16 +172,13 @@ static void unit_deriv(const double u[3], const double dD[3], double len, double
     for (i = 0; i < 3; ++i) out[i] = (dD[i] - u[i] * k) / len;
 }
 
-void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
-                const double V[3], const double dVdx[3], const double dVdy[3], float out[4])
+void env_query(const rn_env *e, const render_hit *h, const double V[3], const double dVdx[3],
+               const double dVdy[3], sample_query3 *q)
 {
-    double R[3], dR[2][3], dir[3], ddir[2][3];
+    double R[3], dR[2][3], dir[3], ddir[2][3], m[3];
     const double *dN[2] = {h->dNdx, h->dNdy}, *dV[2] = {dVdx, dVdy}, *dP[2] = {h->dPdx, h->dPdy};
     double nv = v3_dot(h->N, V);
     int a, i;
-    out[0] = out[1] = out[2] = 0.0f;
-    out[3] = 1.0f;
-    if (e->kind == RN_ENV_NONE || !e->tex) return;
     env_reflect(h->N, V, R);
     /* dR = 2[(dN·V + N·dV) N + (N·V) dN] − dV */
     for (a = 0; a < 2; ++a) {
@@ -190,13 +187,13 @@ void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
     }
     if (e->radius > 0.0) {
         /* Blinn–Newell's correction: D = P − c + λR on |D| = radius. */
-        double q[3], qr, disc, lam, D[3], len;
-        v3_sub(q, h->P, e->centre);
-        qr = v3_dot(q, R);
-        disc = qr * qr - (v3_dot(q, q) - e->radius * e->radius);
+        double c[3], qr, disc, lam, D[3], len;
+        v3_sub(c, h->P, e->centre);
+        qr = v3_dot(c, R);
+        disc = qr * qr - (v3_dot(c, c) - e->radius * e->radius);
         lam = disc > 0.0 ? -qr + sqrt(disc) : 0.0;
         if (lam < 0.0) lam = 0.0;
-        v3_madd(D, q, R, lam);
+        v3_madd(D, c, R, lam);
         len = v3_len(D);
         if (!(len > 0.0)) {
             v3_copy(D, R);
@@ -215,25 +212,89 @@ void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
         v3_scale(dir, R, 1.0 / len);
         for (a = 0; a < 2; ++a) unit_deriv(dir, dR[a], len, ddir[a]);
     }
-    {
-        /* The direction and its exact derivatives, in the map's frame: the
-         * library maps them to the map's coordinates and their Jacobian. */
-        sample_query3 q;
-        sample_batch3_args a3;
-        double m[3];
-        memset(&a3, 0, sizeof a3);
-        env_to_map(dir, m);
-        for (i = 0; i < 3; ++i) q.p[i] = (float)m[i];
-        env_to_map(ddir[0], m);
-        for (i = 0; i < 3; ++i) q.dpdx[i] = (float)m[i];
-        env_to_map(ddir[1], m);
-        for (i = 0; i < 3; ++i) q.dpdy[i] = (float)m[i];
-        a3.count = 1;
-        a3.queries = &q;
-        a3.rgba = out;
-        if ((e->kind == RN_ENV_CUBE ? sample_batch_cube(e->tex, smp, &a3) : sample_batch_latlong(e->tex, smp, &a3)) !=
-            SAMPLE_OK)
-            out[0] = out[1] = out[2] = 0.0f;
-    }
+    /* In the map's frame: the library maps direction and derivatives to
+     * the map's coordinates and their exact Jacobian. */
+    env_to_map(dir, m);
+    for (i = 0; i < 3; ++i) q->p[i] = (float)m[i];
+    env_to_map(ddir[0], m);
+    for (i = 0; i < 3; ++i) q->dpdx[i] = (float)m[i];
+    env_to_map(ddir[1], m);
+    for (i = 0; i < 3; ++i) q->dpdy[i] = (float)m[i];
+}
+
+int env_sample(const rn_env *e, const sample_sampler *smp, const sample_query3 *q, size_t n, float *rgba,
+               sample_stats *stats)
+{
+    sample_batch3_args a;
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.queries = q;
+    a.rgba = rgba;
+    a.stats = stats;
+    return (e->kind == RN_ENV_CUBE ? sample_batch_cube(e->tex, smp, &a) : sample_batch_latlong(e->tex, smp, &a)) ==
+           SAMPLE_OK;
+}
+
+void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
+                const double V[3], const double dVdx[3], const double dVdy[3], float out[4])
+{
+    sample_query3 q;
+    int i;
+    out[0] = out[1] = out[2] = 0.0f;
+    out[3] = 1.0f;
+    if (e->kind == RN_ENV_NONE || !e->tex) return;
+    env_query(e, h, V, dVdx, dVdy, &q);
+    if (!env_sample(e, smp, &q, 1, out, NULL)) out[0] = out[1] = out[2] = 0.0f;
     for (i = 0; i < 3; ++i) out[i] *= e->strength;
+}
+
+/* ---- What compare asks of a scene's environment (render.h) --------------- */
+
+/* A hit's material mirrors the environment. */
+static const rn_env *mirror_env(const render_scene *sc, const render_hit *h)
+{
+    if (h->object < 0 || sc->env.kind == RN_ENV_NONE || !sc->env.tex) return NULL;
+    if (h->material < 0 || h->material >= sc->nmat || !(sc->mat[h->material].reflect > 0.0f)) return NULL;
+    return &sc->env;
+}
+
+int render_scene_env_query(const render_scene *sc, const render_hit *h, sample_query3 *q)
+{
+    const rn_env *e = mirror_env(sc, h);
+    double V[3], dV[2][3];
+    if (!e) return 0;
+    rn_view_vector(sc, h, V, dV);
+    env_query(e, h, V, dV[0], dV[1], q);
+    return 1;
+}
+
+int render_scene_env_sample(const render_scene *sc, const sample_sampler *smp, const sample_query3 *q, size_t n,
+                            float *rgba, sample_stats *stats)
+{
+    return sc->env.tex && env_sample(&sc->env, smp, q, n, rgba, stats);
+}
+
+const sample_texture *render_scene_env(const render_scene *sc, int *cube)
+{
+    if (cube) *cube = sc->env.kind == RN_ENV_CUBE;
+    return sc->env.kind != RN_ENV_NONE ? sc->env.tex : NULL;
+}
+
+int render_scene_env_truth(const render_scene *sc, const render_hit *h, float out[4])
+{
+    static const double zero[3] = {0, 0, 0};
+    const rn_env *e = mirror_env(sc, h);
+    sample_sampler smp;
+    sample_query3 q;
+    double V[3], dV[2][3];
+    if (!e) return 0;
+    /* The exact direction (no derivatives: a point), read from the base
+     * level by LINEAR alone (λ held at 0 by max_lod: magnification). */
+    rn_view_vector(sc, h, V, dV);
+    env_query(e, h, V, zero, zero, &q);
+    sample_sampler_init(&smp);
+    smp.min_filter = smp.mag_filter = SAMPLE_LINEAR;
+    smp.max_lod = 0.0f;
+    if (!env_sample(e, &smp, &q, 1, out, NULL)) out[0] = out[1] = out[2] = out[3] = 0.0f;
+    return 1;
 }

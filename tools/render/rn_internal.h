@@ -262,8 +262,17 @@ void env_reflect(const double N[3], const double V[3], double R[3]);
 void env_sky(const double R[3], float out[4]);
 /* Bake env_sky into a lat-long map (w × w/2) or a cube map (w × w faces). */
 int env_build_sky(rn_env *e, rn_env_kind kind, int w, char *err, size_t errlen);
-/* Filtered lookup in direction of the reflected ray at a hit: the direction,
- * and its screen derivatives from dN/dx, dP/dx. */
+/* The lookup of the reflected ray at a hit: the direction (in the maps'
+ * frame) and its exact screen derivatives, from dN/dx, dP/dx and the view
+ * vector V (surface → eye, unit) with its derivatives. */
+void env_query(const rn_env *e, const render_hit *h, const double V[3], const double dVdx[3],
+               const double dVdy[3], sample_query3 *q);
+/* n such queries through the map (sample_batch_cube / _latlong); 1 on
+ * success. The result is not scaled by e->strength. */
+int env_sample(const rn_env *e, const sample_sampler *smp, const sample_query3 *q, size_t n, float *rgba,
+               sample_stats *stats);
+/* Filtered lookup in direction of the reflected ray at a hit, scaled by
+ * the environment's strength. */
 void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
                 const double V[3], const double dVdx[3], const double dVdy[3], float out[4]);
 void env_release(rn_env *e);
@@ -317,6 +326,10 @@ struct render_scene {
     float background[4];
     sample_sampler sampler;
 };
+
+/* The unit view vector at a hit (surface → eye) and its screen
+ * derivatives dV = −(dP − V (V·dP)) / |E − P| (shade.c). */
+void rn_view_vector(const render_scene *sc, const render_hit *h, double V[3], double dV[2][3]);
 
 /* Allocation helpers for builders (scene.c); 0 on failure. */
 int scene_add_object(render_scene *sc, const rn_object *o);
