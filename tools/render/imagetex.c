@@ -150,6 +150,22 @@ int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double 
     }
     sample_texture_info_get(e->tex, &info);
     e->kind = info.kind == SAMPLE_TEXTURE_CUBE ? RN_ENV_CUBE : RN_ENV_LATLONG;
+    if (info.channels <= 2) {
+        /* Grey as for colour textures (libsample reads one channel as
+         * red); a lat-long map only. */
+        rn_texture g = *t;
+        if (e->kind == RN_ENV_CUBE) {
+            rn_seterr(err, errlen, "file '%s': a grey cube map is not read; give it three channels", t->path);
+            return 0;
+        }
+        g.tex = e->tex;
+        e->tex = NULL;
+        if (!broadcast_grey(&g, err, errlen)) {
+            sample_texture_destroy(g.tex);
+            return 0;
+        }
+        e->tex = g.tex;
+    }
     if ((e->file_kind != RN_ENV_NONE && e->file_kind != e->kind) || e->file_size) {
         rn_env_kind want = e->file_kind != RN_ENV_NONE ? e->file_kind : e->kind;
         if (sample_io_env_convert(e->tex, want == RN_ENV_CUBE ? SAMPLE_TEXTURE_CUBE : SAMPLE_TEXTURE_2D,
