@@ -198,42 +198,6 @@ static void lib_run(const sample_texture *tex, const sample_sampler *s, const fl
 
 /* ---- texsample lookup by files ------------------------------------------------ */
 
-static int write_file(const char *path, const void *p, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    int ok = f && fwrite(p, 1, n, f) == n;
-    if (f && fclose(f) != 0) ok = 0;
-    return ok;
-}
-
-static int read_file(const char *path, void *p, size_t n)
-{
-    FILE *f = fopen(path, "rb");
-    int ok = f && fread(p, 1, n, f) == n;
-    if (f) fclose(f);
-    return ok;
-}
-
-static void dump_levels(const char *dir, const sample_texture *tex)
-{
-    sample_texture_info info;
-    int k, i, j;
-    sample_texture_info_get(tex, &info);
-    for (k = 0; k < info.levels; ++k) {
-        char path[4096];
-        int w, h;
-        float *d;
-        sample_texture_level_size(tex, k, &w, &h);
-        d = (float *)malloc((size_t)w * h * 4 * sizeof(float));
-        for (j = 0; j < h; ++j)
-            for (i = 0; i < w; ++i) sample_texture_texel(tex, k, i, j, d + 4 * ((size_t)j * w + i));
-        if (k == 0) snprintf(path, sizeof path, "%s/tex.raw", dir);
-        else snprintf(path, sizeof path, "%s/tex.%d.raw", dir, k);
-        write_file(path, d, (size_t)w * h * 4 * sizeof(float));
-        free(d);
-    }
-}
-
 /* Runs `texsample lookup` on the dumped files; 1 when it ran and `out` holds
  * its results. The command line is printed with -v, to be copied. Only
  * textureGrad queries go through the tool: a query file has no per-query λ
@@ -245,22 +209,13 @@ static int texsample_run(const char *exe, const char *dir, const sample_sampler 
     int i;
     for (i = 0; i < NQ; ++i) memcpy(q6 + 6 * i, q7 + 7 * i, 6 * sizeof(float));
     snprintf(path, sizeof path, "%s/queries.bin", dir);
-    if (!write_file(path, q6, sizeof q6)) return 0;
+    if (!mesa_write_file(path, q6, sizeof q6)) return 0;
     snprintf(cmd, sizeof cmd,
              "'%s' lookup --raw '%s/tex.raw' --w %d --h %d --levels '%s/tex' --queries '%s/queries.bin' "
-             "--out '%s/ours.bin' --wrap-s %s --wrap-t %s --min %s --mag %s --border %g,%g,%g,%g "
-             "--lod-bias %g --min-lod %g --max-lod %g --base-level %d --max-level %d --nearest-level-floor",
-             exe, dir, TW, TH, dir, dir, dir, sample_wrap_name(s->wrap_s), sample_wrap_name(s->wrap_t),
-             sample_filter_name(s->min_filter), sample_filter_name(s->mag_filter), s->border_color[0],
-             s->border_color[1], s->border_color[2], s->border_color[3], s->lod_bias, s->min_lod, s->max_lod,
-             s->base_level, s->max_level);
-    if (verbose) fprintf(stderr, "%s\n", cmd);
-    if (system(cmd) != 0) {
-        fprintf(stderr, "mesa_check: texsample lookup failed: %s\n", cmd);
-        return 0;
-    }
-    snprintf(path, sizeof path, "%s/ours.bin", dir);
-    return read_file(path, out, NQ * 4 * sizeof(float));
+             "--out '%s/ours.bin' ",
+             exe, dir, TW, TH, dir, dir, dir);
+    mesa_sampler_args(cmd + strlen(cmd), sizeof cmd - strlen(cmd), s);
+    return mesa_lookup_run(cmd, dir, verbose, out, NQ);
 }
 
 /* ---- Comparison ------------------------------------------------------------ */
@@ -323,7 +278,7 @@ int main(int argc, char **argv)
         } else {
             mkdir(dump, 0777);
         }
-        dump_levels(dump, tex);
+        mesa_dump_levels(dump, tex, 1);
     }
 
     /* Every wrap mode (both axes) × mag × the six min filters, then extra

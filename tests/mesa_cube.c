@@ -23,7 +23,11 @@
  *     the mean of the three (§8.13.1); queries whose LINEAR blocks reach a
  *     corner on a level they read are counted and reported, not compared.
  *
- *   GALLIUM_DRIVER=softpipe mesa_cube [-v]
+ * With --texsample PATH the textureGrad states also run through
+ * `texsample lookup --cube` on dumped files (the faces of each level one
+ * after the other, as the tool reads them).
+ *
+ *   GALLIUM_DRIVER=softpipe mesa_cube [--texsample PATH] [--dump DIR] [-v]
  *
  * Exit 0: agreement; 1: a difference over the bound; 77: no usable OSMesa
  * context (ctest SKIP).
@@ -37,6 +41,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define SKIP 77
 #define QW 32  /* queries per framebuffer row */
@@ -146,6 +151,28 @@ static void lib_run(const sample_texture *tex, const sample_sampler *s, const fl
     if (sample_batch_cube(tex, s, &a) != SAMPLE_OK) fprintf(stderr, "mesa_cube: sample_batch_cube failed\n");
 }
 
+/* `texsample lookup --cube` on the dumped faces and the textureGrad
+ * queries of q (10 floats each, as make_queries); 1 when `out` holds its
+ * results. */
+static int texsample_run(const char *exe, const char *dir, const sample_sampler *s, const float *q, float *out)
+{
+    static float q9[NQ * 9];
+    char cmd[8192], path[4096];
+    int i;
+    for (i = 0; i < NQ; ++i) {
+        memcpy(q9 + 9 * i, q + 10 * i, 3 * sizeof(float));
+        memcpy(q9 + 9 * i + 3, q + 10 * i + 4, 6 * sizeof(float));
+    }
+    snprintf(path, sizeof path, "%s/queries.bin", dir);
+    if (!mesa_write_file(path, q9, sizeof q9)) return 0;
+    snprintf(cmd, sizeof cmd,
+             "'%s' lookup --cube '%s/tex.raw' --size %d --levels '%s/tex' --queries '%s/queries.bin' --out "
+             "'%s/ours.bin' ",
+             exe, dir, N, dir, dir, dir);
+    mesa_sampler_args(cmd + strlen(cmd), sizeof cmd - strlen(cmd), s);
+    return mesa_lookup_run(cmd, dir, verbose, out, NQ);
+}
+
 /* Whether a LINEAR block on an n × n face at (s, t) holds a corner texel. */
 static int corner_block(double s, double t, int n)
 {
@@ -170,7 +197,11 @@ static int touches_corner(const float *x, const sample_sampler *s, const sample_
 
 int main(int argc, char **argv)
 {
-    static float q[NQ * 10], qt[NQ * 12], mesa[NQ * 4], ours[NQ * 4];
+    static float q[NQ * 10], qt[NQ * 12], mesa[NQ * 4], ours[NQ * 4], tool[NQ * 4];
+    const char *texsample = NULL, *dump = NULL;
+    char tmpdir[] = "/tmp/mesa_cube.XXXXXX";
+    int tool_runs = 0;
+    float worst_tool = 0.0f;
     static sample_stats st[NQ];
     static float base[6][N * N * 4];
     mesa_gl g;
@@ -184,9 +215,12 @@ int main(int argc, char **argv)
 
     for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "-v")) verbose = 1;
+        else if (!strcmp(argv[i], "--texsample") && i + 1 < argc) texsample = argv[++i];
+        else if (!strcmp(argv[i], "--dump") && i + 1 < argc) dump = argv[++i];
         else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: mesa_cube [-v]\n"
-                   "Compares sample_batch_cube with Mesa softpipe's seamless cube maps through OSMesa.\n"
+            printf("usage: mesa_cube [--texsample PATH] [--dump DIR] [-v]\n"
+                   "Compares sample_batch_cube (and texsample lookup --cube) with Mesa softpipe's\n"
+                   "seamless cube maps through OSMesa; --dump DIR keeps the files lookup read.\n"
                    "Run with GALLIUM_DRIVER=softpipe. Exit 0 agree, 1 differ, 77 no OSMesa context.\n");
             return 0;
         } else {
@@ -209,6 +243,15 @@ int main(int argc, char **argv)
     for (k = 0; k < info.levels; ++k)
         for (f = 0; f < 6; ++f) mesa_gl_upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, tex, k, f);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    if (texsample || dump) {
+        if (!dump) {
+            if (!mkdtemp(tmpdir)) return 1;
+            dump = tmpdir;
+        } else {
+            mkdir(dump, 0777);
+        }
+        mesa_dump_levels(dump, tex, 6);
+    }
 
     for (mag = 0; mag < 2; ++mag)
         for (min = 0; min < 6 + 3; ++min)
@@ -252,6 +295,19 @@ int main(int argc, char **argv)
                     if (corner) ++corners;
                     else ++compared;
                 }
+                if (texsample && !use_lod) {
+                    float dt = 0.0f;
+                    if (!texsample_run(texsample, dump, &s, q, tool)) return 1;
+                    ++tool_runs;
+                    for (i = 0; i < NQ * 4; ++i)
+                        if (!touches_corner(q + 10 * (i / 4), &s, &st[i / 4])) dt = fmaxf(dt, fabsf(mesa[i] - tool[i]));
+                    if (dt > worst_tool) worst_tool = dt;
+                    if (!(dt <= TOL)) {
+                        ++failures;
+                        fprintf(stderr, "DIFF %.3g texsample lookup --cube vs mesa, mag %s min %s\n", dt,
+                                sample_filter_name(s.mag_filter), sample_filter_name(s.min_filter));
+                    }
+                }
                 if (d > worst_all) worst_all = d;
                 if (dc > worst_corner) worst_corner = dc;
                 if (!(d <= TOL)) {
@@ -274,8 +330,10 @@ int main(int argc, char **argv)
                 }
             }
     printf("mesa_cube: %d configurations x %d queries: %d compared, max |mesa - libsample| = %.3g (bound %.3g); "
-           "%d reach a corner (softpipe's corner rule differs: max difference %.3g); %d over the bound\n",
-           configs, NQ, compared, (double)worst_all, (double)TOL, corners, (double)worst_corner, failures);
+           "%d reach a corner (softpipe's corner rule differs: max difference %.3g)",
+           configs, NQ, compared, (double)worst_all, (double)TOL, corners, (double)worst_corner);
+    if (tool_runs) printf("; %d texsample lookup --cube runs, max |mesa - texsample| = %.3g", tool_runs, (double)worst_tool);
+    printf("; %d over the bound\n", failures);
     sample_texture_destroy(tex);
     mesa_gl_destroy(&g);
     return failures ? 1 : 0;

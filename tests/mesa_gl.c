@@ -180,3 +180,64 @@ float mesa_grad_scale(uint32_t *state, int emin, int emax)
     int e = (int)(mesa_rnd_u32(state) % (uint32_t)(emax - emin + 1)) + emin, m = (int)(mesa_rnd_u32(state) % 256);
     return ldexpf(1.0f + (float)m / 256.0f, e);
 }
+
+int mesa_write_file(const char *path, const void *p, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    int ok = f && fwrite(p, 1, n, f) == n;
+    if (f && fclose(f) != 0) ok = 0;
+    return ok;
+}
+
+int mesa_read_file(const char *path, void *p, size_t n)
+{
+    FILE *f = fopen(path, "rb");
+    int ok = f && fread(p, 1, n, f) == n;
+    if (f) fclose(f);
+    return ok;
+}
+
+void mesa_dump_levels(const char *dir, const sample_texture *tex, int layers)
+{
+    sample_texture_info info;
+    int k, i, j, l;
+    sample_texture_info_get(tex, &info);
+    for (k = 0; k < info.levels; ++k) {
+        char path[4096];
+        int w, h;
+        float *d;
+        sample_texture_level_size(tex, k, &w, &h);
+        d = (float *)malloc((size_t)layers * w * h * 4 * sizeof(float));
+        if (!d) return;
+        for (l = 0; l < layers; ++l)
+            for (j = 0; j < h; ++j)
+                for (i = 0; i < w; ++i)
+                    sample_texture_texel_layer(tex, k, l, i, j, d + 4 * (((size_t)l * h + j) * w + i));
+        if (k == 0) snprintf(path, sizeof path, "%s/tex.raw", dir);
+        else snprintf(path, sizeof path, "%s/tex.%d.raw", dir, k);
+        mesa_write_file(path, d, (size_t)layers * w * h * 4 * sizeof(float));
+        free(d);
+    }
+}
+
+void mesa_sampler_args(char *buf, size_t size, const sample_sampler *s)
+{
+    snprintf(buf, size,
+             "--wrap-s %s --wrap-t %s --min %s --mag %s --border %g,%g,%g,%g --lod-bias %g --min-lod %g "
+             "--max-lod %g --base-level %d --max-level %d --nearest-level-floor",
+             sample_wrap_name(s->wrap_s), sample_wrap_name(s->wrap_t), sample_filter_name(s->min_filter),
+             sample_filter_name(s->mag_filter), s->border_color[0], s->border_color[1], s->border_color[2],
+             s->border_color[3], s->lod_bias, s->min_lod, s->max_lod, s->base_level, s->max_level);
+}
+
+int mesa_lookup_run(const char *cmd, const char *dir, int verbose, float *out, int n)
+{
+    char path[4096];
+    if (verbose) fprintf(stderr, "%s\n", cmd);
+    if (system(cmd) != 0) {
+        fprintf(stderr, "texsample lookup failed: %s\n", cmd);
+        return 0;
+    }
+    snprintf(path, sizeof path, "%s/ours.bin", dir);
+    return mesa_read_file(path, out, (size_t)n * 4 * sizeof(float));
+}

@@ -18,6 +18,7 @@
 
 #include "sample/sample.h"
 
+#include <stddef.h>
 #include <stdint.h>
 
 typedef struct mesa_gl {
@@ -50,6 +51,20 @@ void mesa_gl_sampler(GLenum target, const sample_sampler *s);
 void mesa_gl_upload(GLenum image_target, const sample_texture *tex, int level, int layer);
 
 void mesa_gl_destroy(mesa_gl *g);
+
+/* `texsample lookup` by files (the checks' --texsample): write and read
+ * whole files (1 on success); every level of tex as DIR/tex.raw and
+ * DIR/tex.K.raw, each level's `layers` layers (a cube map's six faces)
+ * one after the other, float32 RGBA; the sampler state as lookup options
+ * (wraps, filters, border, bias, lod clamps, base/max level, and Mesa's
+ * ⌊λ + ½⌋ rounding) appended to buf; and running a command line that
+ * writes DIR/ours.bin, read into out (n RGBA results; 0 on failure,
+ * reported; the command printed when verbose). */
+int mesa_write_file(const char *path, const void *p, size_t n);
+int mesa_read_file(const char *path, void *p, size_t n);
+void mesa_dump_levels(const char *dir, const sample_texture *tex, int layers);
+void mesa_sampler_args(char *buf, size_t size, const sample_sampler *s);
+int mesa_lookup_run(const char *cmd, const char *dir, int verbose, float *out, int n);
 
 /* The checks' random numbers: xorshift32 on *state, a float in [0, 1)
  * from its top 24 bits, and a texel-space scale 2^e·(1 + m/256) with e in

@@ -28,7 +28,6 @@
  * texels, plus one for the rounding of its ends. */
 #define MIP_MAX_TAPS 20
 
-
 /* ---- Kernels ------------------------------------------------------------- */
 
 static double sinc(double x)
