@@ -168,7 +168,10 @@ extern "C" sample_status io_exr_tiled_open(const char *path, const void *data, s
             std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", a->value().c_str());
         if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("wrapmodes"))
             std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", a->value().c_str());
-        // OIIO's reader turns the envmap attribute into textureformat.
+        // OIIO's reader calls a mip-mapped file (all this reader takes) a
+        // plain texture unless it says otherwise, and turns the envmap
+        // attribute into textureformat.
+        std::snprintf(inf.textureformat, sizeof inf.textureformat, "Plain Texture");
         if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("textureformat"))
             std::snprintf(inf.textureformat, sizeof inf.textureformat, "%s", a->value().c_str());
         if (Imf::hasEnvmap(h))

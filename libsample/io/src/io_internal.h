@@ -11,7 +11,8 @@
  *   ocio.cpp        OpenColorIO: config, name resolution, conversions
  *   exr_mip.cpp     OpenEXR: tiled mip-mapped writer
  *   exr_read.cpp    OpenEXR: direct reader of tiled mip-mapped files
- *   io_env.c        environment maps: layouts, conversion, files
+ *   io_env.c        environment maps: layouts, files in and out
+ *   io_env_convert.c  environment maps: resampling between layouts
  */
 #ifndef SAMPLE_IO_INTERNAL_H
 #define SAMPLE_IO_INTERNAL_H
@@ -171,6 +172,10 @@ typedef enum io_env { IO_ENV_NONE = 0, IO_ENV_LATLONG = 1, IO_ENV_CUBE = 2 } io_
 sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
                                const sample_io_exr_options *o, const io_colour_label *label, io_env env,
                                size_t *overflows, sample_error *err);
+/* io_env.c: `mip` with a lat-long map's wrap modes (periodic across the
+ * seam, clamped at the poles, as maketx --envlatl records them) in *copy;
+ * NULL stays NULL. */
+const sample_mip_params *io_env_latlong_mip(const sample_mip_params *mip, sample_mip_params *copy);
 /* io_mip_write.c: sample_io_write_mip_exr with the environment attributes. */
 sample_status io_write_mip_env(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
                                io_env env, sample_error *err);
