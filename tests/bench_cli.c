@@ -5,7 +5,7 @@
  * exact texel counts of the filters whose cost is fixed (nearest 1,
  * bilinear 4, bicubic 16 on every query), and ratios exactly where an OIIO
  * twin exists; the instruction set it ran on (LIBSAMPLE_ISA) in the table
- * and the JSON. No speed is asserted.
+ * and the JSON; and a tiny --env run's table. No speed is asserted.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -55,6 +55,22 @@ static const char *str(const cJSON *o, const char *k)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, k);
     return cJSON_IsString(v) ? v->valuestring : "";
+}
+
+/* bench --env: a tiny run prints a row for each set × filter × map
+ * (lat-long, cube, OIIO's lat-long where the build has OIIO); --env with
+ * an option it does not take is a usage error. */
+static void tiny_env(void)
+{
+    char *out;
+    CHECK(run("--env --json x.json") == 2, "--env --json exits 2");
+    CHECK(run("--env --size 64 --queries 512 --runs 1 --threads 2 --filters nearest,ewa") == 0, "--env run");
+    out = check_slurp_in(dir, "out.txt");
+    CHECK(out && strstr(out, "env-random       ewa                        cube") &&
+              strstr(out, "env-reflection   nearest                    latlong") &&
+              strstr(out, "env-reflection   oiio-nearest               latlong"),
+          "the table: %s", out ? out : "(none)");
+    free(out);
 }
 
 static void tiny_json(void)
@@ -142,5 +158,6 @@ int main(int argc, char **argv)
     mkdir(dir, 0777);
     RUN(help_and_usage);
     RUN(tiny_json);
+    RUN(tiny_env);
     return check_finish();
 }

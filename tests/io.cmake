@@ -7,7 +7,7 @@ if(TARGET sample_io)
   # The command-line tools some tests compare with: passed as an empty
   # argument where missing, and those tests then exit 77 (ctest: Skipped)
   # after checking everything else (doc/testing.md, "Skipped, not passed").
-  foreach(tool maketx oiiotool exrheader)
+  foreach(tool maketx oiiotool exrheader exrenvmap)
     string(TOUPPER ${tool} TOOL)
     find_program(SAMPLE_${TOOL} ${tool})
     if(SAMPLE_${TOOL})
@@ -32,6 +32,17 @@ if(TARGET sample_io)
   endforeach()
   # io_mip compares with maketx's pyramids through oiiotool.
   set_tests_properties(io_mip io_make_mip PROPERTIES SKIP_RETURN_CODE 77)
+  # Environment maps: maketx --envlatl output, OpenImageIO's reading of the
+  # attributes, OpenEXR's exrenvmap as the judge of the cube layout.
+  add_executable(io_env ${CMAKE_CURRENT_SOURCE_DIR}/io_env.c)
+  target_link_libraries(io_env PRIVATE sample_io sample m)
+  target_include_directories(io_env PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  target_compile_options(io_env PRIVATE ${SAMPLE_WARNINGS})
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/io_env_scratch)
+  add_test(NAME io_env COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec \"$0\" \"$@\""
+    $<TARGET_FILE:io_env> ${PROJECT_SOURCE_DIR}/testimages ${scratch}
+    "${SAMPLE_MAKETX_ARG}" "${SAMPLE_OIIOTOOL_ARG}" "${SAMPLE_EXRENVMAP_ARG}")
+  set_tests_properties(io_env PROPERTIES TIMEOUT 120 SKIP_RETURN_CODE 77 ENVIRONMENT "OCIO=;${SAMPLE_IO_SAN_ENV}")
   # Interrupted writes, through the library and through texsample mip
   # (an empty argument where texsample is not built: that part skipped).
   add_executable(io_signal ${CMAKE_CURRENT_SOURCE_DIR}/io_signal.c)

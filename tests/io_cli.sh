@@ -22,6 +22,10 @@ check "mip exits 0" '[ $? -eq 0 ] && [ -f "$dir/m.exr" ]'
 check "output .png: usage error 2 (got $rc)" '[ $rc -eq 2 ] && grep -q ".png files hold no mip levels" "$dir/err"'
 "$ts" mip "$img/rgb8.png" "$dir/x.exr" --format u8 >/dev/null 2>&1; check "u8 OpenEXR: 2" '[ $? -eq 2 ]'
 "$ts" mip "$img/rgb8.png" "$dir/x.exr" --format int7 >/dev/null 2>&1; check "bad --format: 2" '[ $? -eq 2 ]'
+"$ts" mip "$img/rgb8.png" "$dir/x.png" --env cube >/dev/null 2>&1; check "--env to .png: 2" '[ $? -eq 2 ]'
+"$ts" mip "$img/rgb8.png" "$dir/x.exr" --env sphere >/dev/null 2>&1; check "--env sphere: 2" '[ $? -eq 2 ]'
+"$ts" mip "$img/rgb8.png" "$dir/x.exr" --env cube 2>"$dir/err"; rc=$?
+check "--env on a 19 x 13 image: 1 (got $rc)" '[ $rc -eq 1 ] && grep -q "neither shape" "$dir/err"'
 check "no output after failures" '[ ! -e "$dir/x.exr" ] && [ ! -e "$dir/x.png" ]'
 "$ts" mip "$img/rgba8.png" "$dir/a.tx" --format u8 --tile 16; check "mip --format u8 to .tx exits 0" '[ $? -eq 0 ]'
 
@@ -52,6 +56,14 @@ if [ -n "$oiio" ]; then
   check "half overflow warned" 'grep -q "warning: 5 values beyond +-65504 became +-inf in half" "$dir/err"'
   "$ts" mip "$dir/big.exr" "$dir/big_clamp.exr" --half-clamp 2>"$dir/err"
   check "half overflow clamped" 'grep -q "warning: 5 values beyond +-65504 became +-65504 in half" "$dir/err"'
+  # A 2:1 image is a lat-long map: its cube (the library's tests,
+  # tests/io_env.c, cover both directions and the files' contents).
+  "$oiio" --pattern fill:top=1,0,0:bottom=0,0,1 16x8 3 -d float -o "$dir/ll_in.exr"
+  "$ts" mip "$dir/ll_in.exr" "$dir/env_cube.exr" --env cube --float
+  check "mip --env cube exits 0" '[ $? -eq 0 ]'
+  out=$("$oiio" --info -v "$dir/env_cube.exr")
+  check "a 4 x 24 cube with its levels" 'echo "$out" | grep -q "MIP-map levels: 4x24 2x12 1x6 1x3 1x1"'
+  check "OpenImageIO reads it as an environment" 'echo "$out" | grep -q "CubeFace Environment"'
 else
   echo "SKIP: oiiotool not found: the file not checked through OpenImageIO's eyes"; skipped=1
 fi

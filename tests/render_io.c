@@ -179,6 +179,64 @@ static int exr_channels(const char *path, char names[][16], int max)
     return -1;
 }
 
+/* Environment files: a cube map of one colour per face written by
+ * sample_io_write_env, seen in a mirror sphere from −y. The pixel at the
+ * sphere's centre reflects −y (the world is z up), the maps' +z (y up), so
+ * it shows the +Z face's colour exactly (a 2° view: the footprint is
+ * smaller than a texel), whether the scene keeps the cube
+ * or resamples it into a lat-long map ("type", "size"). */
+static void test_env_file(void)
+{
+    static const char *const scenes[] = {
+        "{\"width\":9,\"height\":9,\"camera\":{\"eye\":[0,-5,0],\"look\":[0,0,0],\"up\":[0,0,1],\"fov\":2},"
+        "\"materials\":[{\"name\":\"m\",\"ambient\":0,\"diffuse\":[0,0,0],\"gloss\":0,\"reflect\":1}],"
+        "\"environment\":{\"file\":\"env.exr\"},\"objects\":[{\"type\":\"sphere\",\"material\":\"m\"}]}",
+        "{\"width\":9,\"height\":9,\"camera\":{\"eye\":[0,-5,0],\"look\":[0,0,0],\"up\":[0,0,1],\"fov\":2},"
+        "\"materials\":[{\"name\":\"m\",\"ambient\":0,\"diffuse\":[0,0,0],\"gloss\":0,\"reflect\":1}],"
+        "\"environment\":{\"file\":\"env.exr\",\"type\":\"latlong\",\"size\":32},"
+        "\"objects\":[{\"type\":\"sphere\",\"material\":\"m\"}]}"};
+    float px[6 * 4 * 4 * 4];
+    sample_image faces[6];
+    sample_texture *cube = NULL;
+    sample_io_exr_options o;
+    sample_error e;
+    char path[128], json[128], err[256] = "";
+    size_t k;
+    int f;
+    for (k = 0; k < sizeof px / sizeof px[0]; ++k) px[k] = k % 4 == 3 ? 1.0f : (float)(k / 64 + 1) * 0.125f * (float)(k % 4 + 1);
+    for (f = 0; f < 6; ++f) {
+        faces[f].width = faces[f].height = 4;
+        faces[f].channels = 4;
+        faces[f].format = SAMPLE_FORMAT_F32;
+        faces[f].data = px + f * 64;
+        faces[f].row_stride = 0;
+    }
+    sample_io_exr_options_init(&o);
+    o.use_float = 1;
+    path_in(path, sizeof path, "env.exr");
+    CHECK(sample_texture_create_cube(faces, NULL, &cube, &e) == SAMPLE_OK, "%s", e.message);
+    CHECK(cube && sample_io_write_env(path, cube, &o, &e) == SAMPLE_OK, "%s", e.message);
+    sample_texture_destroy(cube);
+    path_in(json, sizeof json, "env.json");
+    for (k = 0; k < 2; ++k) {
+        render_scene *sc = NULL;
+        render_options ro;
+        render_image img;
+        CHECK(write_text(json, scenes[k]), "writing %s", json);
+        CHECK(render_scene_load(json, 0, 0, &sc, err, sizeof err) == 0, "scene %zu: %s", k, err);
+        if (!sc) continue;
+        render_options_init(&ro);
+        ro.threads = 1;
+        CHECK(render_image_run(sc, &ro, &img, err, sizeof err) == 0, "%s", err);
+        if (img.rgba) {
+            const float *c = img.rgba + 4 * (4 * 9 + 4), *want = px + 4 * 64; /* face 4: +Z */
+            for (f = 0; f < 3; ++f) CHECK(c[f] == want[f], "scene %zu channel %d: %.9g, +Z face %.9g", k, f, c[f], want[f]);
+        }
+        render_image_free(&img);
+        render_scene_destroy(sc);
+    }
+}
+
 static void test_buffers_exr(void)
 {
     render_scene *sc = quad_setup();
@@ -341,9 +399,10 @@ int main(void)
     RUN(test_image_texture_pictures);
     RUN(test_buffers_exr);
     RUN(test_photo_plane);
+    RUN(test_env_file);
     {
         static const char *const files[] = {"tex.png", "scene.json", "out.exr", "out.png",
-                                            "buffers.exr", "photo.exr", "photo.png"};
+                                            "buffers.exr", "photo.exr", "photo.png", "env.exr", "env.json"};
         char p[128];
         size_t k;
         for (k = 0; k < sizeof files / sizeof files[0]; ++k) {

@@ -67,11 +67,11 @@ static void test_unknown_keys(void)
     FAILS("{\"objects\":[{\"type\":\"polygons\",\"polygons\":[{\"v\":[[0,0,0],[1,0,0],[0,1,0]],"
           "\"st\":[[0,0],[1,0],[0,1]],\"n\":[0,0,1]}]}]}",
           "polygon 0", "unknown key 'n'");
-    /* A cube map has six faces; a file environment is one lat-long image. */
-    FAILS("{\"environment\":{\"type\":\"cube\",\"file\":\"sky.exr\"}," SPHERE "}",
-          "environment", "lat-long");
-    FAILS("{\"environment\":{\"file\":\"sky.exr\",\"size\":64}," SPHERE "}",
-          "'size' does not apply to an environment file");
+    /* Environments: an unknown key, and a file's key on the procedural sky. */
+    FAILS("{\"environment\":{\"type\":\"cube\",\"file\":\"sky.exr\",\"radios\":3}," SPHERE "}",
+          "environment", "unknown key 'radios'", "did you mean 'radius'");
+    FAILS("{\"environment\":{\"type\":\"cube\",\"colorspace\":\"srgb\"}," SPHERE "}",
+          "'colorspace' does not apply to the procedural environment");
 }
 
 static void test_types_and_duplicates(void)

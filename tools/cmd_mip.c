@@ -32,7 +32,16 @@ static const char help[] =
     "                                sRGB-encoded, as maketx -d uint8, and need .tx/.tif\n"
     "  --half | --float              the same as --format half | --format float\n"
     "  --half-clamp                  half: values beyond +-65504 become +-65504, not +-inf\n"
-    "                                (without it, a warning counts them)\n\n"
+    "                                (without it, a warning counts them)\n"
+    "  --env cube|latlong            write an OpenEXR environment map (.exr only) that\n"
+    "                                OpenImageIO reads as one: INPUT is a cube map (1:6,\n"
+    "                                OpenEXR's stacked faces) or a lat-long map (2:1, or\n"
+    "                                any shape its envmap attribute calls lat-long),\n"
+    "                                resampled into the other layout by EWA over each new\n"
+    "                                texel's footprint. Pyramids: cube across face edges,\n"
+    "                                lat-long periodic in s (--wrap options are refused)\n"
+    "  --env-size N                  the output's cube face side or lat-long height\n"
+    "                                (default: lat-long width / 4, 2 x the face side)\n\n"
     "Progress goes to stderr when it is a terminal (or TEXSAMPLE_PROGRESS is set).\n"
     "Exit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
@@ -67,6 +76,30 @@ static int parse_format(const char *v, sample_io_type *t)
     return 0;
 }
 
+/* --env: read an environment map, resample it into `to` where the layout
+ * or size changes, write it with its layout's attributes. */
+static int run_env(const char *sub, const char *in, const char *outp, int to, int size, const sample_io_options *o,
+                   const sample_mip_params *mip, const sample_io_exr_options *x)
+{
+    sample_texture *src = NULL, *dst = NULL;
+    sample_texture_info inf;
+    sample_error err;
+    sample_status st;
+    char ext[16];
+    const char *dot = strrchr(outp, '.');
+    snprintf(ext, sizeof ext, "%s", dot ? dot + 1 : "");
+    if (strcmp(ext, "exr") != 0 && strcmp(ext, "EXR") != 0)
+        return cli_usage_error(sub, "--env writes OpenEXR (.exr): the envmap attribute is OpenEXR's, not '%s'", outp);
+    if ((st = sample_io_read_env(in, o, mip, &src, &err)) != SAMPLE_OK) return cli_runtime_error(sub, "%s", err.message);
+    sample_texture_info_get(src, &inf);
+    if ((int)inf.kind != to || size)
+        st = sample_io_env_convert(src, (sample_texture_kind)to, size, mip, &dst, &err);
+    if (st == SAMPLE_OK) st = sample_io_write_env(outp, dst ? dst : src, x, &err);
+    sample_texture_destroy(src);
+    sample_texture_destroy(dst);
+    return st == SAMPLE_OK ? EXIT_OK : cli_runtime_error(sub, "%s", err.message);
+}
+
 #endif
 
 int cmd_mip(int argc, char **argv)
@@ -80,7 +113,7 @@ int cmd_mip(int argc, char **argv)
     sample_error err;
     size_t overflows = 0;
     sample_status st;
-    int i;
+    int i, env = -1, env_size = 0, wrap_given = 0;
     sample_io_options_init(&o);
     sample_io_exr_options_init(&x);
     sample_mip_params_init(&mip);
@@ -97,11 +130,14 @@ int cmd_mip(int argc, char **argv)
             mip.filter = (sample_mipgen)m;
         } else if (cli_opt(argc, argv, &i, "--wrap", &v)) {
             if (parse_wrap(sub, "--wrap", v, &mip.wrap_s) != 0) return EXIT_USAGE;
+            wrap_given = 1;
             mip.wrap_t = mip.wrap_s;
         } else if (cli_opt(argc, argv, &i, "--wrap-s", &v)) {
             if (parse_wrap(sub, "--wrap-s", v, &mip.wrap_s) != 0) return EXIT_USAGE;
+            wrap_given = 1;
         } else if (cli_opt(argc, argv, &i, "--wrap-t", &v)) {
             if (parse_wrap(sub, "--wrap-t", v, &mip.wrap_t) != 0) return EXIT_USAGE;
+            wrap_given = 1;
         } else if (cli_opt(argc, argv, &i, "--colorspace", &v)) {
             o.colorspace = v;
         } else if (cli_opt(argc, argv, &i, "--ocio", &v)) {
@@ -122,6 +158,13 @@ int cmd_mip(int argc, char **argv)
             x.type = SAMPLE_IO_TYPE_FLOAT;
         } else if (cli_opt(argc, argv, &i, "--half-clamp", NULL)) {
             x.half_clamp = 1;
+        } else if (cli_opt(argc, argv, &i, "--env", &v)) {
+            if (strcmp(v, "cube") == 0) env = SAMPLE_TEXTURE_CUBE;
+            else if (strcmp(v, "latlong") == 0) env = SAMPLE_TEXTURE_2D;
+            else return cli_usage_error(sub, "--env: expected cube or latlong, not '%s'", v);
+        } else if (cli_opt(argc, argv, &i, "--env-size", &v)) {
+            if (!cli_parse_int(v, &env_size) || env_size < 1 || env_size > 16384)
+                return cli_usage_error(sub, "--env-size needs a size from 1 to 16384, not '%s'", v);
         } else if (argv[i][0] != '-' && !in) {
             in = argv[i];
         } else if (argv[i][0] != '-' && !outp) {
@@ -133,6 +176,15 @@ int cmd_mip(int argc, char **argv)
         }
     }
     if (!in || !outp) return cli_usage_error(sub, "an input image and an output file are required");
+    if (env_size && env < 0) return cli_usage_error(sub, "--env-size needs --env");
+    if (env >= 0 && wrap_given)
+        return cli_usage_error(sub, "--env: an environment map's edges are its layout's (no --wrap)");
+    if (env >= 0) {
+        /* As for a plain texture: float, straight alpha multiplied in. */
+        o.float_storage = 1;
+        o.premultiply = 1;
+        return run_env(sub, in, outp, env, env_size, &o, &mip, &x);
+    }
     x.progress = progress;
     x.half_overflows = &overflows;
     /* A wrong output name or type is the command line's fault: exit 2. */

@@ -100,7 +100,12 @@ typedef struct bench_engine {
     sample_sampler smp;
     int reference;     /* libsample rows: 1 runs sample_batch_reference (--scalar) */
     oiio_ts_opts opts;
+    /* 0: 2D queries (sample_query); BENCH_ENV_*: direction queries
+     * (sample_query3) of an environment map (env.c) */
+    int env;
 } bench_engine;
+
+enum { BENCH_ENV_LATLONG = 1, BENCH_ENV_CUBE = 2 };
 
 /* bench's default filters, NULL-terminated registry names. */
 extern const char *const bench_default_filters[];
@@ -112,9 +117,10 @@ int bench_engines_of(const tool_filter *const *filters, int count, bench_engine 
 int bench_engines(bench_engine *out, int max);
 
 /* Sample queries [0, n) with an engine into rgba (n × 4), optionally with
- * stats (libsample only). Returns 0, or −1 (reported). */
+ * stats (libsample only). q: sample_query, or sample_query3 for an
+ * environment engine (e->env). Returns 0, or −1 (reported). */
 int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-                     const sample_query *q, size_t n, float *rgba, sample_stats *stats);
+                     const void *q, size_t n, float *rgba, sample_stats *stats);
 
 /* ---- Timing (timing.c) ------------------------------------------------ */
 
@@ -130,7 +136,7 @@ void bench_timing_of(double *v, int n, bench_timing *out);
  * first come first served, in batches of `batch`), after one untimed
  * warm-up pass. Returns 0, or −1 if a pass failed. */
 int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-               const sample_query *q, size_t n, int threads, int runs, size_t batch,
+               const void *q, size_t n, int threads, int runs, size_t batch,
                bench_timing *out);
 
 /* bench_time in three steps, so that several engines' passes can take
@@ -139,7 +145,7 @@ int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
  * `runs`), close fills *out once all `runs` passes are timed (0; −1
  * otherwise) and frees the timer either way. */
 typedef struct bench_timer bench_timer;
-bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const sample_query *q,
+bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const void *q,
                               size_t n, int threads, int runs, size_t batch);
 int bench_timer_pass(bench_timer *tm);
 int bench_timer_close(bench_timer *tm, bench_timing *out);
@@ -167,6 +173,18 @@ struct tool_backend;
 int bench_gl_measure(struct tool_backend *gl, const bench_engine *e, int engine,
                      const bench_texture *t, bench_set set, bench_format fmt,
                      const sample_query *q, size_t n, int runs, bench_gl_result *out);
+/* ---- Environment maps (env.c) ------------------------------------------ */
+
+/* bench --env: environment lookups of libsample (lat-long and cube maps)
+ * beside OpenImageIO's environment() (lat-long), on random directions and
+ * on a mirror sphere's reflection frame; prints its table. `filters`: a
+ * registry list or NULL (bench's defaults). Returns an exit code. */
+typedef struct bench_env_opts {
+    int size, runs, threads, oiio;
+    size_t queries, batch;
+    const char *filters, *tmpdir;
+} bench_env_opts;
+int bench_env(const bench_env_opts *o);
 
 /* ---- Report (report.c) ------------------------------------------------ */
 

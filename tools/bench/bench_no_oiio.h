@@ -25,4 +25,12 @@ int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *t, const oiio_ts_opts *o, const sam
     return -1;
 }
 
+int oiio_ts_environment(oiio_ts *ts, oiio_ts_tex *t, const oiio_ts_opts *o, const sample_query3 *q, size_t n,
+                        float *rgba, char *err, size_t errlen)
+{
+    (void)ts, (void)t, (void)o, (void)q, (void)n, (void)rgba;
+    snprintf(err, errlen, "not built with OpenImageIO");
+    return -1;
+}
+
 #endif /* BENCH_NO_OIIO_H */

@@ -64,14 +64,21 @@ static const char help[] =
     "                     s, t, dsdx, dtdx, dsdy, dtdy per query), OIIO's texture\n"
     "                     files (written even with --no-oiio) and manifest.json\n"
     "                     (layout, settings of both sides, 1-thread samples/s),\n"
-    "                     for re-timing by tools/bench/oiio_replay\n\n"
+    "                     for re-timing by tools/bench/oiio_replay\n"
+    "  --env              environment lookups instead: libsample's lat-long map\n"
+    "                     (--size x --size/2) and cube map (--size/4 faces) beside\n"
+    "                     OpenImageIO's environment() on the lat-long map, on\n"
+    "                     random directions (env-random: 2.5-texel footprints) and\n"
+    "                     a mirror sphere's reflection frame (env-reflection);\n"
+    "                     takes --size, --queries, --runs, --threads, --batch,\n"
+    "                     --filters, --no-oiio, --tmpdir, --quick\n\n"
     "Filters:\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
 enum { MAX_ENGINES = 32 };
 
 typedef struct bench_opts {
-    int size, runs, threads, oiio, scalar, gl;
+    int size, runs, threads, oiio, scalar, gl, env;
     float cache_mb; /* 0: resident textures, OIIO's default cache */
     const char *gl_device;
     size_t queries, batch;
@@ -132,6 +139,8 @@ static int parse_args(int argc, char **argv, bench_opts *o)
             o->gl_device = v;
         } else if (cli_opt(argc, argv, &i, "--scalar", NULL)) {
             o->scalar = 1;
+        } else if (cli_opt(argc, argv, &i, "--env", NULL)) {
+            o->env = 1;
         } else if (cli_opt(argc, argv, &i, "--size", &v)) {
             if (parse_size("--size", v, 16, SAMPLE_MAX_SIZE / 4, &x)) return -1;
             o->size = (int)x;
@@ -427,6 +436,22 @@ int cmd_bench(int argc, char **argv)
     b.o.formats = (1u << BENCH_FMT_COUNT) - 1;
     b.o.filters = "all";
     if (parse_args(argc, argv, &b.o) != 0 || make_engines(&b) != 0) return EXIT_USAGE;
+    if (b.o.env) {
+        bench_env_opts eo;
+        if (b.o.json || b.o.save || b.o.scalar || b.o.sets != (1u << BENCH_SET_COUNT) - 1 ||
+            b.o.formats != (1u << BENCH_FMT_COUNT) - 1)
+            return cli_usage_error("bench", "--env takes no --json, --save, --scalar, --sets or --formats");
+        tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
+        eo.size = b.o.size;
+        eo.runs = b.o.runs;
+        eo.threads = b.o.threads;
+        eo.oiio = b.o.oiio;
+        eo.queries = b.o.queries;
+        eo.batch = b.o.batch;
+        eo.filters = b.o.filters;
+        eo.tmpdir = tmp && *tmp ? tmp : "/tmp";
+        return bench_env(&eo);
+    }
     for (i = 0; i < b.neng; ++i)
         if (b.o.scalar && !b.eng[i].oiio) b.eng[i].reference = 1;
 

@@ -51,8 +51,28 @@ int bench_engines(bench_engine *out, int max)
 }
 
 int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-                     const sample_query *q, size_t n, float *rgba, sample_stats *stats)
+                     const void *q, size_t n, float *rgba, sample_stats *stats)
 {
+    if (e->env) {
+        char err[512];
+        sample_batch3_args a;
+        sample_status st;
+        if (e->oiio) {
+            if (oiio_ts_environment(ts, t->theirs, &e->opts, q, n, rgba, err, sizeof err) == 0) return 0;
+            fprintf(stderr, "texsample bench: OIIO environment %s: %s\n", e->name, err);
+            return -1;
+        }
+        memset(&a, 0, sizeof a);
+        a.count = n;
+        a.queries = q;
+        a.rgba = rgba;
+        a.stats = stats;
+        st = e->env == BENCH_ENV_CUBE ? sample_batch_cube(t->ours, &e->smp, &a)
+                                      : sample_batch_latlong(t->ours, &e->smp, &a);
+        if (st == SAMPLE_OK) return 0;
+        fprintf(stderr, "texsample bench: %s: %s\n", e->name, sample_strerror(st));
+        return -1;
+    }
     if (e->oiio) {
         char err[512];
         if (oiio_ts_sample(ts, t->theirs, &e->opts, q, n, rgba, err, sizeof err) != 0) {

@@ -43,7 +43,8 @@ typedef struct job {
     const bench_engine *e;
     const bench_texture *t;
     oiio_ts *ts;
-    const sample_query *q;
+    const void *q;      /* n queries of qsize bytes */
+    size_t qsize;
     float *rgba;
     size_t n, batch, tile;
     int failed;
@@ -114,7 +115,8 @@ static void run_tiles(job *j)
         size_t i, hi = j->n - lo < tile ? j->n : lo + tile;
         for (i = lo; i < hi && !j->failed; i += j->batch) {
             size_t m = hi - i < j->batch ? hi - i : j->batch;
-            if (bench_engine_run(j->e, j->t, j->ts, j->q + i, m, j->rgba + 4 * i, NULL) != 0) j->failed = 1;
+            if (bench_engine_run(j->e, j->t, j->ts, (const char *)j->q + i * j->qsize, m, j->rgba + 4 * i, NULL) != 0)
+                j->failed = 1;
         }
     }
 }
@@ -210,7 +212,7 @@ static void timer_stop(bench_timer *tm)
     free(tm);
 }
 
-bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const sample_query *q,
+bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const void *q,
                               size_t n, int threads, int runs, size_t batch)
 {
     bench_timer *tm;
@@ -242,6 +244,7 @@ bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oii
         j->t = t;
         j->ts = ts;
         j->q = q;
+        j->qsize = e->env ? sizeof(sample_query3) : sizeof(sample_query);
         j->rgba = tm->rgba;
         j->batch = batch;
         j->n = n;
@@ -282,7 +285,7 @@ int bench_timer_close(bench_timer *tm, bench_timing *out)
 }
 
 int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-               const sample_query *q, size_t n, int threads, int runs, size_t batch,
+               const void *q, size_t n, int threads, int runs, size_t batch,
                bench_timing *out)
 {
     bench_timer *tm = bench_timer_open(e, t, ts, q, n, threads, runs, batch);

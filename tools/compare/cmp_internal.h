@@ -68,7 +68,10 @@ typedef struct cmp_view {
     const render_scene *sc;
     render_cache *cache;
     int w, h;
-    int *tex;              /* per pixel: texture index; −1 surface without texture; −2 background */
+    int *tex;              /* per pixel: texture index; −1 surface without texture; −2 background;
+                              env_tex: a mirror of the environment */
+    int env_tex;           /* the environment's index (the scene's texture count), −1 none */
+    sample_query3 *q3;     /* per pixel where tex is env_tex: reflected direction, exact derivatives */
     int *object;           /* per pixel: object hit at the centre, −1 background */
     sample_query *q;       /* per pixel: (s, t) and exact Jacobian at the centre */
     sample_quad *quad;     /* per pixel: exact corners, where quad_ok */
@@ -93,10 +96,11 @@ typedef struct cmp_result {
 } cmp_result;
 
 /* An engine: filter n queries of one texture (quad: exact corners or NULL)
- * into n × 4 floats; stats may be NULL. Returns 0 on success. Called from
- * many threads at once. */
-typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
-                            size_t n, float *rgba, sample_stats *stats);
+ * into n × 4 floats; stats may be NULL. For the environment (texture ==
+ * env_tex) q is NULL and q3 holds the direction queries; else q3 is NULL.
+ * Returns 0 on success. Called from many threads at once. */
+typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
+                            const sample_quad *quad, size_t n, float *rgba, sample_stats *stats);
 /* Run an engine over every textured pixel of the view, `runs` times (≥ 1)
  * (run.c): the times are the medians over the runs (one run's time moves
  * with whatever else the machine does); the image and texel counts are the

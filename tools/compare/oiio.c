@@ -14,6 +14,9 @@
 
 #ifdef TEXSAMPLE_HAVE_OIIO
 #include "oiio_ts.h"
+#ifdef TEXSAMPLE_HAVE_IO
+#include "sample/sample_io.h"
+#endif
 
 typedef struct oiio_ctx {
     oiio_ts *ts;
@@ -21,14 +24,47 @@ typedef struct oiio_ctx {
     oiio_ts_opts opts;
 } oiio_ctx;
 
-static int oiio_fn(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
-                   size_t n, float *rgba, sample_stats *stats)
+static int oiio_fn(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
+                   const sample_quad *quad, size_t n, float *rgba, sample_stats *stats)
 {
     oiio_ctx *c = ctx;
     (void)quad;
     (void)stats;
     if (!c->tex[texture]) return 1;
+    if (q3) return oiio_ts_environment(c->ts, c->tex[texture], &c->opts, q3, n, rgba, NULL, 0) == 0 ? 0 : 1;
     return oiio_ts_sample(c->ts, c->tex[texture], &c->opts, q, n, rgba, NULL, 0) == 0 ? 0 : 1;
+}
+
+/* The environment as OpenImageIO's own environment map: the same texels
+ * and pyramid, written with the attributes that make OIIO read it as a
+ * y-up lat-long map with texel centres at (i + ½)/w (sample_io_write_env).
+ * OIIO's environment() samples lat-long maps only. */
+static oiio_ts_tex *oiio_prepare_env(const cmp_view *v, oiio_ts *ts, const char *workdir, char *err,
+                                     size_t errlen)
+{
+#ifdef TEXSAMPLE_HAVE_IO
+    int cube = 0;
+    const sample_texture *tex = render_scene_env(v->sc, &cube);
+    sample_io_exr_options o;
+    sample_error e;
+    char path[1024];
+    if (cube) {
+        snprintf(err, errlen, "OpenImageIO's environment() reads lat-long maps only, not cube maps");
+        return NULL;
+    }
+    sample_io_exr_options_init(&o);
+    o.use_float = 1;
+    snprintf(path, sizeof path, "%s/oiio_environment.exr", workdir);
+    if (sample_io_write_env(path, tex, &o, &e) != SAMPLE_OK) {
+        snprintf(err, errlen, "%.*s", (int)(errlen > 1 ? errlen - 1 : 0), e.message);
+        return NULL;
+    }
+    return oiio_ts_open(ts, path, err, errlen);
+#else
+    (void)v, (void)ts, (void)workdir;
+    snprintf(err, errlen, "this build has no libsample_io to write the environment map");
+    return NULL;
+#endif
 }
 
 /* Write texture k's base level as OIIO's own mip-mapped file. */
@@ -79,7 +115,7 @@ int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, in
     ctx.opts.wrap_s = v->sampler.wrap_s;
     ctx.opts.wrap_t = v->sampler.wrap_t;
     ctx.ts = oiio_ts_create(0.0);
-    ctx.tex = calloc(ntex > 0 ? (size_t)ntex : 1, sizeof *ctx.tex);
+    ctx.tex = calloc((size_t)ntex + 1, sizeof *ctx.tex); /* + the environment (env_tex = ntex) */
     if (!ctx.ts || !ctx.tex) {
         snprintf(err, errlen, "%s: cannot start OpenImageIO's TextureSystem", c->name);
         goto out;
@@ -89,6 +125,9 @@ int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, in
         k = v->tex[px];
         if (k >= 0 && k < ntex && !ctx.tex[k] &&
             !(ctx.tex[k] = oiio_prepare(v, ctx.ts, k, workdir, err, errlen)))
+            goto out;
+        if (k >= 0 && k == v->env_tex && !ctx.tex[k] &&
+            !(ctx.tex[k] = oiio_prepare_env(v, ctx.ts, workdir, err, errlen)))
             goto out;
     }
     if (cmp_run(v, 0, oiio_fn, &ctx, 0, threads, runs, r)) {

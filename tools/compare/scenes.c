@@ -3,8 +3,9 @@
  * built-in checkerboard plane to the horizon and photograph on a tilted
  * plane, and compare's own framings: the grid teapot and the teapot with
  * the photograph, whole in the picture, and two zone plates, one minified
- * face-on and one on an oblique plane. Compare shows the filtered texture
- * only, so its own scenes carry no lights or environment.
+ * face-on and one on an oblique plane; and mirrors in an environment map.
+ * Compare shows the filtered texture (or the reflected environment) only,
+ * so its own scenes carry no lights.
  */
 #include "cmp_internal.h"
 
@@ -12,7 +13,7 @@
 #include <string.h>
 
 const char *const cmp_scene_names[] = {"plane",         "teapot",      "teapot-image", "zoneplate",
-                                       "zoneplate-oblique", "photo-plane", NULL};
+                                       "zoneplate-oblique", "photo-plane", "mirrors", NULL};
 const char *const cmp_default_scenes[] = {"plane", "teapot", NULL};
 
 /* The renderer's teapot scenes (Fig. 10 of Blinn & Newell) look from the
@@ -65,9 +66,26 @@ static const char zoneplate_oblique_json[] =
     "{\"camera\":{\"eye\":[0.5,-0.15,0.15],\"look\":[0.5,0.6,0],\"up\":[0,0,1],\"fov\":50},"
     ZONEPLATE_SQUARE(300, 1024, 2);
 
+/* Mirrors in an environment: a teapot and a sphere that reflect the
+ * renderer's procedural room (sky, sun, a band of windows, a checkered
+ * floor) baked into a 512 × 256 lat-long map, infinitely far. Each pixel
+ * asks for the reflected direction with its exact screen derivatives
+ * (curvature through dN/dx: the sphere's reflection minifies the whole
+ * room into its rim, the teapot's spout and handle strongly), the truth is
+ * the map's bilinear base level over the exact reflected directions, and
+ * OpenImageIO's environment() reads the same map (doc/comparison.md). */
+static const char mirrors_json[] =
+    "{\"camera\":{\"eye\":[5.5,-9.5,4.6],\"look\":[1.35,0.5,1.25],\"up\":[0,0,1],\"fov\":38},"
+    "\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\"},"
+    "\"materials\":[{\"name\":\"mirror\",\"reflect\":1}],"
+    "\"environment\":{\"type\":\"latlong\",\"size\":512},"
+    "\"objects\":[{\"type\":\"teapot\",\"material\":\"mirror\"},"
+    "{\"type\":\"sphere\",\"centre\":[3.1,1.6,1],\"radius\":1,\"material\":\"mirror\"}]}";
+
 static const struct {
     const char *name, *json;
 } own_scenes[] = {
+    {"mirrors", mirrors_json},
     {"teapot", teapot_json},
     {"teapot-image", teapot_image_json},
     {"zoneplate", zoneplate_json},

@@ -4,7 +4,9 @@
  * it, through the exact screen → (s, t) mapping, by stratified
  * supersampling: n × n strata over the footprint, one jittered sample per
  * stratum, each evaluated at its exact (s, t) (render_scene_texture_truth:
- * analytic for procedural textures, bilinear base level for images).
+ * analytic for procedural textures, bilinear base level for images) or, on
+ * a mirror, at its exact reflected direction (render_scene_env_truth: the
+ * environment map's bilinear base level).
  *
  * Sharing samples. With n/2 strata per pixel the strata of neighbouring
  * pixels coincide (the footprints overlap by a whole pixel), so one global
@@ -88,7 +90,10 @@ static void truth_sample(const cmp_view *v, double x, double y, float out[4], sa
         return;
     }
     tex = render_scene_material_texture(v->sc, h.material);
-    if (tex >= 0)
+    if (v->env_tex >= 0 && render_scene_env_truth(v->sc, &h, out)) {
+        /* A mirror: the environment's base level in the exact reflected
+         * direction at this point (render.h). */
+    } else if (tex >= 0)
         render_scene_texture_truth(v->sc, tex, h.s, h.t, h.P, out);
     else
         for (k = 0; k < 4; ++k) out[k] = 1.0f;

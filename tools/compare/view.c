@@ -3,7 +3,9 @@
  * answers exactly the same queries (the same (s, t), the same exact
  * Jacobian, the same corners), OpenImageIO included, and the timings measure
  * the filters, not the ray casting. The same per-pixel hits seed the ground
- * truth's supersampling (render_cache).
+ * truth's supersampling (render_cache). A mirror of the scene's
+ * environment asks for the reflected direction with its exact screen
+ * derivatives instead (render_scene_env_query).
  */
 #include "cmp_internal.h"
 
@@ -22,6 +24,12 @@ static void view_row(void *ctx, int j)
         v->quad_ok[px] = 0;
         if (h->object < 0) {
             v->tex[px] = -2;
+            continue;
+        }
+        /* A mirror answers one question, the environment's, whatever
+         * texture its material also has. */
+        if (v->env_tex >= 0 && render_scene_env_query(v->sc, h, &v->q3[px])) {
+            v->tex[px] = v->env_tex;
             continue;
         }
         v->tex[px] = render_scene_material_texture(v->sc, h->material);
@@ -53,9 +61,11 @@ int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, 
     v->tex = malloc(n * sizeof *v->tex);
     v->object = malloc(n * sizeof *v->object);
     v->q = calloc(n, sizeof *v->q);
+    v->env_tex = render_scene_env(sc, NULL) ? render_scene_texture_count(sc) : -1;
+    v->q3 = v->env_tex >= 0 ? calloc(n, sizeof *v->q3) : NULL;
     v->quad = calloc(n, sizeof *v->quad);
     v->quad_ok = calloc(n, 1);
-    if (!v->cache || !v->tex || !v->object || !v->q || !v->quad || !v->quad_ok) {
+    if (!v->cache || !v->tex || !v->object || !v->q || !v->quad || !v->quad_ok || (v->env_tex >= 0 && !v->q3)) {
         cmp_view_free(v);
         snprintf(err, errlen, "out of memory for a %d x %d view", v->w, v->h);
         return 1;
@@ -70,11 +80,13 @@ void cmp_view_free(cmp_view *v)
     free(v->tex);
     free(v->object);
     free(v->q);
+    free(v->q3);
     free(v->quad);
     free(v->quad_ok);
     v->cache = NULL;
     v->tex = v->object = NULL;
     v->q = NULL;
+    v->q3 = NULL;
     v->quad = NULL;
     v->quad_ok = NULL;
 }

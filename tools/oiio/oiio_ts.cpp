@@ -3,6 +3,8 @@
 // more, so that every decision about the comparison is visible in C.
 #include "oiio_ts.h"
 
+// Before OpenImageIO's headers, which otherwise declare Imath::V3f only.
+#include <Imath/ImathVec.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -239,6 +241,32 @@ extern "C" int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *tex, const oiio_ts_opts 
         if (!ts->sys->texture(tex->handle, pt, opt, k.s, k.t, k.dsdx, k.dtdx, k.dsdy, k.dtdy, 4,
                               out)) {
             set_err(err, errlen, "texture lookup failed: " + ts->sys->geterror());
+            return -1;
+        }
+    }
+    return 0;
+}
+
+extern "C" int oiio_ts_environment(oiio_ts *ts, oiio_ts_tex *tex, const oiio_ts_opts *o,
+                                   const sample_query3 *q, size_t count, float *rgba, char *err,
+                                   size_t errlen)
+{
+    if (!ts || !tex || !o || (count && (!q || !rgba)) || (unsigned)o->mode >= OIIO_TS_MODE_COUNT) {
+        set_err(err, errlen, "oiio_ts_environment: bad argument");
+        return -1;
+    }
+    TextureOpt opt;
+    opt.anisotropic = o->max_aniso;
+    opt.conservative_filter = o->conservative != 0;
+    opt.interpmode = mode_opts[o->mode].interp;
+    opt.mipmode = mode_opts[o->mode].mip;
+    TextureSystem::Perthread *pt = ts->sys->get_perthread_info();
+    for (size_t i = 0; i < count; ++i) {
+        const sample_query3 &k = q[i];
+        Imath::V3f R(k.p[0], k.p[1], k.p[2]), dx(k.dpdx[0], k.dpdx[1], k.dpdx[2]),
+            dy(k.dpdy[0], k.dpdy[1], k.dpdy[2]);
+        if (!ts->sys->environment(tex->handle, pt, opt, R, dx, dy, 4, rgba + 4 * i)) {
+            set_err(err, errlen, "environment lookup failed: " + ts->sys->geterror());
             return -1;
         }
     }

@@ -118,6 +118,18 @@ int oiio_ts_sample(oiio_ts *ts, oiio_ts_tex *tex, const oiio_ts_opts *opts,
                    const sample_query *queries, size_t count, float *rgba, char *err,
                    size_t errlen);
 
+/* Environment lookups, TextureSystem::environment(R, dRdx, dRdy): each
+ * query is sample_query3's direction and its full-pixel derivatives. OIIO
+ * 2.4 samples lat-long maps only (its environment() sets LayoutLatLong
+ * whatever the file's textureformat), in the file's convention: y up where
+ * the file says oiio:updirection "y" (sample_io_write_env writes it),
+ * texel centres at (i + ½)/w unless oiio:sampleborder is 1. The wrap modes
+ * of `opts` are not used (environment() sets periodic in s, clamp in t);
+ * mode and max_aniso are. Returns as oiio_ts_sample. */
+int oiio_ts_environment(oiio_ts *ts, oiio_ts_tex *tex, const oiio_ts_opts *opts,
+                        const sample_query3 *queries, size_t count, float *rgba, char *err,
+                        size_t errlen);
+
 #ifdef __cplusplus
 }
 #endif

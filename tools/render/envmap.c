@@ -2,17 +2,19 @@
  * Reflection mapping (Blinn–Newell 1976, "Reflection in Curved Surfaces").
  *
  * The environment is a picture painted inside a large sphere, indexed by the
- * reflected direction: lat-long (azimuth across, polar angle down, as the
- * paper plots its maps) or a cube map (OpenGL's face layout). With a finite
+ * reflected direction: a lat-long map or a cube map, the library's own
+ * environment textures (doc/environment-maps.md): a cube map is one
+ * texture filtered seamlessly across its face edges (GL 4.6 §8.13.1), a
+ * lat-long map filtered across its seam and over its poles. With a finite
  * radius the lookup uses the surface position as well as the normal — the
  * paper's correction for silhouettes that otherwise all reflect the point
  * opposite the eye: the reflected ray from P is intersected with the
  * environment sphere and the direction to that point indexes the map.
  *
- * The lookup is filtered: the screen derivatives of the map coordinates come
- * from the chain rule through the reflection (dN/dx from the surface's
- * second derivatives, jacobian.c), the sphere intersection and the map's own
- * coordinate functions.
+ * The lookup is filtered by the exact screen derivatives of the looked-up
+ * direction: the chain rule through the reflection (dN/dx from the
+ * surface's second derivatives, jacobian.c) and the sphere intersection;
+ * the library takes them through its map's own coordinate functions.
  */
 #include "rn_internal.h"
 
@@ -25,63 +27,24 @@ void env_reflect(const double N[3], const double V[3], double R[3])
     for (i = 0; i < 3; ++i) R[i] = k * N[i] - V[i];
 }
 
-void env_latlong(const double R[3], double st[2], double dst_dR[2][3])
+/* The maps' frame is OpenEXR's and OpenImageIO's, y up (ImfEnvmap.h;
+ * sample_batch_latlong's convention, and the frame cube files are in); the
+ * scenes' world is z up. A proper rotation takes one to the other:
+ * map = (x, z, −y), world = (x, −z, y). */
+void env_to_map(const double w[3], double m[3])
 {
-    double rho2 = R[0] * R[0] + R[1] * R[1], z = R[2], phi;
-    if (z > 1.0) z = 1.0;
-    if (z < -1.0) z = -1.0;
-    phi = atan2(R[1], R[0]);
-    if (phi < 0.0) phi += 2.0 * RN_PI;
-    st[0] = phi / (2.0 * RN_PI);
-    if (st[0] >= 1.0) st[0] = 0.0;
-    st[1] = acos(z) / RN_PI;
-    if (dst_dR) {
-        /* ∂φ/∂R = (−y, x, 0)/ρ²; ∂θ/∂z = −1/√(1 − z²) = −1/ρ on the unit
-         * sphere. Both blow up at the poles; a floor on ρ keeps the footprint
-         * finite (the filter clamps it to its texel budget anyway). */
-        double r2 = rho2 > 1e-12 ? rho2 : 1e-12;
-        dst_dR[0][0] = -R[1] / (2.0 * RN_PI * r2);
-        dst_dR[0][1] = R[0] / (2.0 * RN_PI * r2);
-        dst_dR[0][2] = 0.0;
-        dst_dR[1][0] = 0.0;
-        dst_dR[1][1] = 0.0;
-        dst_dR[1][2] = -1.0 / (RN_PI * sqrt(r2));
-    }
+    double y = w[1];
+    m[0] = w[0];
+    m[1] = w[2];
+    m[2] = -y;
 }
 
-/* OpenGL 4.6 table 8.19: major axis → face, sc, tc. Ties go to x, then y. */
-int env_cube(const double R[3], double st[2], double dst_dR[2][3])
+static void env_to_world(const double m[3], double w[3])
 {
-    static const struct { int is, it; double ss, ts; } tab[6] = {
-        {2, 1, -1.0, -1.0}, /* +X: sc = −rz, tc = −ry */
-        {2, 1, 1.0, -1.0},  /* −X: sc = +rz, tc = −ry */
-        {0, 2, 1.0, 1.0},   /* +Y: sc = +rx, tc = +rz */
-        {0, 2, 1.0, -1.0},  /* −Y: sc = +rx, tc = −rz */
-        {0, 1, 1.0, -1.0},  /* +Z: sc = +rx, tc = −ry */
-        {0, 1, -1.0, -1.0}, /* −Z: sc = −rx, tc = −ry */
-    };
-    double ax = fabs(R[0]), ay = fabs(R[1]), az = fabs(R[2]), ma, sc, tc;
-    int im, face, k;
-    if (ax >= ay && ax >= az) im = 0;
-    else if (ay >= az) im = 1;
-    else im = 2;
-    face = 2 * im + (R[im] < 0.0);
-    ma = fabs(R[im]);
-    if (!(ma > 0.0)) ma = 1e-300;
-    sc = tab[face].ss * R[tab[face].is];
-    tc = tab[face].ts * R[tab[face].it];
-    st[0] = 0.5 * (sc / ma + 1.0);
-    st[1] = 0.5 * (tc / ma + 1.0);
-    if (dst_dR) {
-        double sgn = R[im] < 0.0 ? -1.0 : 1.0;
-        for (k = 0; k < 3; ++k) dst_dR[0][k] = dst_dR[1][k] = 0.0;
-        /* Quotient rule on ½ (sc/|ma| + 1). */
-        dst_dR[0][tab[face].is] = 0.5 * tab[face].ss / ma;
-        dst_dR[0][im] = -0.5 * sc * sgn / (ma * ma);
-        dst_dR[1][tab[face].it] = 0.5 * tab[face].ts / ma;
-        dst_dR[1][im] = -0.5 * tc * sgn / (ma * ma);
-    }
-    return face;
+    double y = m[1];
+    w[0] = m[0];
+    w[1] = -m[2];
+    w[2] = y;
 }
 
 /* A room seen from its centre, like the paper's Figure 8: a sky with a sun
@@ -113,39 +76,33 @@ void env_sky(const double R[3], float out[4])
     out[3] = 1.0f;
 }
 
-/* Direction of texel centre (s, t) of a map. */
+/* World direction of point (s, t) of a map: a lat-long map as
+ * sample_batch_latlong reads it (φ = 2π(s − ½), θ = π(½ − t)), a cube
+ * face as table 8.19 lays it out, both in the map's frame. */
 static void map_dir(rn_env_kind kind, int face, double s, double t, double R[3])
 {
+    double m[3];
     if (kind == RN_ENV_LATLONG) {
-        double ph = 2.0 * RN_PI * s, th = RN_PI * t;
-        v3_set(R, sin(th) * cos(ph), sin(th) * sin(ph), cos(th));
-        return;
-    }
-    {
+        double ph = 2.0 * RN_PI * (s - 0.5), th = RN_PI * (0.5 - t);
+        v3_set(m, -sin(ph) * cos(th), sin(th), cos(ph) * cos(th));
+    } else {
         double sc = 2.0 * s - 1.0, tc = 2.0 * t - 1.0;
         switch (face) {
-        case 0: v3_set(R, 1.0, -tc, -sc); break;
-        case 1: v3_set(R, -1.0, -tc, sc); break;
-        case 2: v3_set(R, sc, 1.0, tc); break;
-        case 3: v3_set(R, sc, -1.0, -tc); break;
-        case 4: v3_set(R, sc, -tc, 1.0); break;
-        default: v3_set(R, -sc, -tc, -1.0); break;
+        case 0: v3_set(m, 1.0, -tc, -sc); break;
+        case 1: v3_set(m, -1.0, -tc, sc); break;
+        case 2: v3_set(m, sc, 1.0, tc); break;
+        case 3: v3_set(m, sc, -1.0, -tc); break;
+        case 4: v3_set(m, sc, -tc, 1.0); break;
+        default: v3_set(m, -sc, -tc, -1.0); break;
         }
     }
+    env_to_world(m, R);
 }
 
-static sample_texture *bake_map(rn_env_kind kind, int face, int w, int h, char *err, size_t errlen)
+/* env_sky over a w × h map (or face), 2 × 2 samples a texel, into px. */
+static void bake_map(rn_env_kind kind, int face, int w, int h, float *px)
 {
-    float *px = malloc(sizeof *px * 4 * (size_t)w * (size_t)h);
-    sample_texture *tex = NULL;
-    sample_image img;
-    sample_mip_params mip;
-    sample_error e;
     int i, j;
-    if (!px) {
-        rn_seterr(err, errlen, "out of memory for the environment map");
-        return NULL;
-    }
     for (j = 0; j < h; ++j)
         for (i = 0; i < w; ++i) {
             double acc[4] = {0, 0, 0, 0};
@@ -160,45 +117,51 @@ static sample_texture *bake_map(rn_env_kind kind, int face, int w, int h, char *
                 }
             for (c = 0; c < 4; ++c) px[4 * ((size_t)j * w + i) + c] = (float)acc[c];
         }
-    img.width = w;
-    img.height = h;
-    img.channels = 4;
-    img.format = SAMPLE_FORMAT_F32;
-    img.data = px;
-    img.row_stride = 0;
-    sample_mip_params_init(&mip);
-    mip.wrap_s = kind == RN_ENV_LATLONG ? SAMPLE_WRAP_REPEAT : SAMPLE_WRAP_CLAMP_TO_EDGE;
-    mip.wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
-    if (sample_texture_create(&img, &mip, &tex, &e) != SAMPLE_OK) {
-        rn_seterr(err, errlen, "environment map: %s", e.message);
-        tex = NULL;
-    }
-    free(px);
-    return tex;
 }
 
 int env_build_sky(rn_env *e, rn_env_kind kind, int w, char *err, size_t errlen)
 {
-    int f;
+    int h = kind == RN_ENV_LATLONG ? (w / 2 > 0 ? w / 2 : 1) : w, faces = kind == RN_ENV_LATLONG ? 1 : 6, f;
+    size_t plane = 4 * (size_t)w * (size_t)h;
+    float *px = malloc(sizeof *px * plane * (size_t)faces);
+    sample_image img[6];
+    sample_mip_params mip;
+    sample_error er;
+    sample_status st;
     e->kind = kind;
-    if (kind == RN_ENV_LATLONG) {
-        e->map = bake_map(kind, 0, w, w / 2 > 0 ? w / 2 : 1, err, errlen);
-        return e->map != NULL;
+    if (!px) {
+        rn_seterr(err, errlen, "out of memory for the environment map");
+        return 0;
     }
-    for (f = 0; f < 6; ++f)
-        if (!(e->face[f] = bake_map(kind, f, w, w, err, errlen))) return 0;
+    for (f = 0; f < faces; ++f) {
+        bake_map(kind, f, w, h, px + (size_t)f * plane);
+        img[f].width = w;
+        img[f].height = h;
+        img[f].channels = 4;
+        img[f].format = SAMPLE_FORMAT_F32;
+        img[f].data = px + (size_t)f * plane;
+        img[f].row_stride = 0;
+    }
+    sample_mip_params_init(&mip);
+    /* Lat-long: periodic across the seam (the library's pyramids of a
+     * cube map read across face edges by themselves). */
+    mip.wrap_s = SAMPLE_WRAP_REPEAT;
+    mip.wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
+    st = kind == RN_ENV_LATLONG ? sample_texture_create(img, &mip, &e->tex, &er)
+                                : sample_texture_create_cube(img, &mip, &e->tex, &er);
+    free(px);
+    if (st != SAMPLE_OK) {
+        rn_seterr(err, errlen, "environment map: %s", er.message);
+        e->tex = NULL;
+        return 0;
+    }
     return 1;
 }
 
 void env_release(rn_env *e)
 {
-    int f;
-    sample_texture_destroy(e->map);
-    e->map = NULL;
-    for (f = 0; f < 6; ++f) {
-        sample_texture_destroy(e->face[f]);
-        e->face[f] = NULL;
-    }
+    sample_texture_destroy(e->tex);
+    e->tex = NULL;
 }
 
 /* Derivative of the unit vector D/|D| given dD. */
@@ -209,19 +172,13 @@ static void unit_deriv(const double u[3], const double dD[3], double len, double
     for (i = 0; i < 3; ++i) out[i] = (dD[i] - u[i] * k) / len;
 }
 
-void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
-                const double V[3], const double dVdx[3], const double dVdy[3], float out[4])
+void env_query(const rn_env *e, const render_hit *h, const double V[3], const double dVdx[3],
+               const double dVdy[3], sample_query3 *q)
 {
-    double R[3], dR[2][3], dir[3], ddir[2][3], st[2], dst[2][3];
+    double R[3], dR[2][3], dir[3], ddir[2][3], m[3];
     const double *dN[2] = {h->dNdx, h->dNdy}, *dV[2] = {dVdx, dVdy}, *dP[2] = {h->dPdx, h->dPdy};
     double nv = v3_dot(h->N, V);
-    const sample_texture *tex;
-    sample_sampler s = *smp;
-    sample_query query;
-    int a, i, face = 0;
-    out[0] = out[1] = out[2] = 0.0f;
-    out[3] = 1.0f;
-    if (e->kind == RN_ENV_NONE) return;
+    int a, i;
     env_reflect(h->N, V, R);
     /* dR = 2[(dN·V + N·dV) N + (N·V) dN] − dV */
     for (a = 0; a < 2; ++a) {
@@ -230,13 +187,13 @@ void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
     }
     if (e->radius > 0.0) {
         /* Blinn–Newell's correction: D = P − c + λR on |D| = radius. */
-        double q[3], qr, disc, lam, D[3], len;
-        v3_sub(q, h->P, e->centre);
-        qr = v3_dot(q, R);
-        disc = qr * qr - (v3_dot(q, q) - e->radius * e->radius);
+        double c[3], qr, disc, lam, D[3], len;
+        v3_sub(c, h->P, e->centre);
+        qr = v3_dot(c, R);
+        disc = qr * qr - (v3_dot(c, c) - e->radius * e->radius);
         lam = disc > 0.0 ? -qr + sqrt(disc) : 0.0;
         if (lam < 0.0) lam = 0.0;
-        v3_madd(D, q, R, lam);
+        v3_madd(D, c, R, lam);
         len = v3_len(D);
         if (!(len > 0.0)) {
             v3_copy(D, R);
@@ -255,22 +212,89 @@ void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
         v3_scale(dir, R, 1.0 / len);
         for (a = 0; a < 2; ++a) unit_deriv(dir, dR[a], len, ddir[a]);
     }
-    if (e->kind == RN_ENV_LATLONG) {
-        env_latlong(dir, st, dst);
-        tex = e->map;
-        s.wrap_s = SAMPLE_WRAP_REPEAT; /* the seam at azimuth 0 = 2π */
-        s.wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
-    } else {
-        face = env_cube(dir, st, dst);
-        tex = e->face[face];
-        s.wrap_s = s.wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
-    }
-    query.s = (float)st[0];
-    query.t = (float)st[1];
-    query.dsdx = (float)v3_dot(dst[0], ddir[0]);
-    query.dtdx = (float)v3_dot(dst[1], ddir[0]);
-    query.dsdy = (float)v3_dot(dst[0], ddir[1]);
-    query.dtdy = (float)v3_dot(dst[1], ddir[1]);
-    if (sample_one(tex, &s, &query, out) != SAMPLE_OK) out[0] = out[1] = out[2] = 0.0f;
+    /* In the map's frame: the library maps direction and derivatives to
+     * the map's coordinates and their exact Jacobian. */
+    env_to_map(dir, m);
+    for (i = 0; i < 3; ++i) q->p[i] = (float)m[i];
+    env_to_map(ddir[0], m);
+    for (i = 0; i < 3; ++i) q->dpdx[i] = (float)m[i];
+    env_to_map(ddir[1], m);
+    for (i = 0; i < 3; ++i) q->dpdy[i] = (float)m[i];
+}
+
+int env_sample(const rn_env *e, const sample_sampler *smp, const sample_query3 *q, size_t n, float *rgba,
+               sample_stats *stats)
+{
+    sample_batch3_args a;
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.queries = q;
+    a.rgba = rgba;
+    a.stats = stats;
+    return (e->kind == RN_ENV_CUBE ? sample_batch_cube(e->tex, smp, &a) : sample_batch_latlong(e->tex, smp, &a)) ==
+           SAMPLE_OK;
+}
+
+void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
+                const double V[3], const double dVdx[3], const double dVdy[3], float out[4])
+{
+    sample_query3 q;
+    int i;
+    out[0] = out[1] = out[2] = 0.0f;
+    out[3] = 1.0f;
+    if (e->kind == RN_ENV_NONE || !e->tex) return;
+    env_query(e, h, V, dVdx, dVdy, &q);
+    if (!env_sample(e, smp, &q, 1, out, NULL)) out[0] = out[1] = out[2] = 0.0f;
     for (i = 0; i < 3; ++i) out[i] *= e->strength;
+}
+
+/* ---- What compare asks of a scene's environment (render.h) --------------- */
+
+/* A hit's material mirrors the environment. */
+static const rn_env *mirror_env(const render_scene *sc, const render_hit *h)
+{
+    if (h->object < 0 || sc->env.kind == RN_ENV_NONE || !sc->env.tex) return NULL;
+    if (h->material < 0 || h->material >= sc->nmat || !(sc->mat[h->material].reflect > 0.0f)) return NULL;
+    return &sc->env;
+}
+
+int render_scene_env_query(const render_scene *sc, const render_hit *h, sample_query3 *q)
+{
+    const rn_env *e = mirror_env(sc, h);
+    double V[3], dV[2][3];
+    if (!e) return 0;
+    rn_view_vector(sc, h, V, dV);
+    env_query(e, h, V, dV[0], dV[1], q);
+    return 1;
+}
+
+int render_scene_env_sample(const render_scene *sc, const sample_sampler *smp, const sample_query3 *q, size_t n,
+                            float *rgba, sample_stats *stats)
+{
+    return sc->env.tex && env_sample(&sc->env, smp, q, n, rgba, stats);
+}
+
+const sample_texture *render_scene_env(const render_scene *sc, int *cube)
+{
+    if (cube) *cube = sc->env.kind == RN_ENV_CUBE;
+    return sc->env.kind != RN_ENV_NONE ? sc->env.tex : NULL;
+}
+
+int render_scene_env_truth(const render_scene *sc, const render_hit *h, float out[4])
+{
+    static const double zero[3] = {0, 0, 0};
+    const rn_env *e = mirror_env(sc, h);
+    sample_sampler smp;
+    sample_query3 q;
+    double V[3], dV[2][3];
+    if (!e) return 0;
+    /* The exact direction (no derivatives: a point), read from the base
+     * level by LINEAR alone (λ held at 0 by max_lod: magnification). */
+    rn_view_vector(sc, h, V, dV);
+    env_query(e, h, V, zero, zero, &q);
+    sample_sampler_init(&smp);
+    smp.min_filter = smp.mag_filter = SAMPLE_LINEAR;
+    smp.max_lod = 0.0f;
+    if (!env_sample(e, &smp, &q, 1, out, NULL)) out[0] = out[1] = out[2] = out[3] = 0.0f;
+    return 1;
 }

@@ -75,6 +75,30 @@ static int broadcast_grey(rn_texture *t, char *err, size_t errlen)
     return 1;
 }
 
+/* Checks the file (a regular one: `what` names it in the message) and
+ * sets the reading options every scene file shares. */
+static int read_options(const rn_texture *t, const char *path, const char *what, double max_texels,
+                        sample_io_options *o, char *err, size_t errlen)
+{
+    size_t size;
+    int fd;
+    /* Checked here so that a missing file (e.g. a built-in scene whose
+     * testimages/ file is absent) says so plainly, not as a decoder error,
+     * and so that no decoder ever opens a FIFO or a device. */
+    if ((fd = rn_open_regular(path, what, SIZE_MAX, &size, err, errlen)) < 0) return 0;
+    close(fd);
+    sample_io_options_init(o);
+    /* Data maps (bump, normal) hold numbers, not colours: raw unless the
+     * scene names a space (the OCIO role "data" exists in every config). */
+    o->colorspace = t->colorspace[0] ? t->colorspace : t->use == RN_USE_DATA ? "data" : NULL;
+    /* The scene's texel budget, as float RGBA bytes (sample_io's measure):
+     * a file claiming more is refused before its pixels are decoded. */
+    o->max_bytes = max_texels * 16.0 >= (double)SIZE_MAX ? SIZE_MAX
+                   : max_texels >= 1.0              ? (size_t)(max_texels * 16.0)
+                                                    : 1;
+    return 1;
+}
+
 int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
                size_t errlen)
 {
@@ -83,27 +107,12 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
     sample_mip_params mip;
     sample_texture_info info;
     sample_error e;
-    size_t size;
-    int fd;
     if (!resolve(base_dir, t->path, path, sizeof path)) {
         rn_seterr(err, errlen, "image texture '%s': path too long", t->path);
         return 0;
     }
-    /* Checked here so that a missing file (e.g. a built-in scene whose
-     * testimages/ file is absent) says so plainly, not as a decoder error,
-     * and so that no decoder ever opens a FIFO or a device. */
     snprintf(what, sizeof what, "image texture '%s' at", t->path);
-    if ((fd = rn_open_regular(path, what, SIZE_MAX, &size, err, errlen)) < 0) return 0;
-    close(fd);
-    sample_io_options_init(&o);
-    /* Data maps (bump, normal) hold numbers, not colours: raw unless the
-     * scene names a space (the OCIO role "data" exists in every config). */
-    o.colorspace = t->colorspace[0] ? t->colorspace : t->use == RN_USE_DATA ? "data" : NULL;
-    /* The scene's texel budget, as float RGBA bytes (sample_io's measure):
-     * a file claiming more is refused before its pixels are decoded. */
-    o.max_bytes = max_texels * 16.0 >= (double)SIZE_MAX ? SIZE_MAX
-                  : max_texels >= 1.0              ? (size_t)(max_texels * 16.0)
-                                                   : 1;
+    if (!read_options(t, path, what, max_texels, &o, err, errlen)) return 0;
     sample_mip_params_init(&mip);
     mip.wrap_s = t->wrap_s;
     mip.wrap_t = t->wrap_t;
@@ -118,6 +127,61 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
     return 1;
 }
 
+int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
+                   char *err, size_t errlen)
+{
+    char path[4096], what[600];
+    sample_io_options o;
+    sample_mip_params mip;
+    sample_texture_info info;
+    sample_texture *conv = NULL;
+    sample_error er;
+    if (!resolve(base_dir, t->path, path, sizeof path)) {
+        rn_seterr(err, errlen, "file '%s': path too long", t->path);
+        return 0;
+    }
+    snprintf(what, sizeof what, "environment file '%s' at", t->path);
+    if (!read_options(t, path, what, max_texels, &o, err, errlen)) return 0;
+    sample_mip_params_init(&mip);
+    if (sample_io_read_env(path, &o, &mip, &e->tex, &er) != SAMPLE_OK) {
+        e->tex = NULL;
+        rn_seterr(err, errlen, "file '%s': %s", t->path, er.message);
+        return 0;
+    }
+    sample_texture_info_get(e->tex, &info);
+    e->kind = info.kind == SAMPLE_TEXTURE_CUBE ? RN_ENV_CUBE : RN_ENV_LATLONG;
+    if (info.channels <= 2) {
+        /* Grey as for colour textures (libsample reads one channel as
+         * red); a lat-long map only. */
+        rn_texture g = *t;
+        if (e->kind == RN_ENV_CUBE) {
+            rn_seterr(err, errlen, "file '%s': a grey cube map is not read; give it three channels", t->path);
+            return 0;
+        }
+        g.tex = e->tex;
+        e->tex = NULL;
+        if (!broadcast_grey(&g, err, errlen)) {
+            sample_texture_destroy(g.tex);
+            return 0;
+        }
+        e->tex = g.tex;
+    }
+    if ((e->file_kind != RN_ENV_NONE && e->file_kind != e->kind) || e->file_size) {
+        rn_env_kind want = e->file_kind != RN_ENV_NONE ? e->file_kind : e->kind;
+        if (sample_io_env_convert(e->tex, want == RN_ENV_CUBE ? SAMPLE_TEXTURE_CUBE : SAMPLE_TEXTURE_2D,
+                                  e->file_size, &mip, &conv, &er) != SAMPLE_OK) {
+            rn_seterr(err, errlen, "file '%s': %s", t->path, er.message);
+            return 0;
+        }
+        sample_texture_destroy(e->tex);
+        e->tex = conv;
+        e->kind = want;
+        sample_texture_info_get(e->tex, &info);
+    }
+    *texels = (double)info.width * (double)info.height * (info.kind == SAMPLE_TEXTURE_CUBE ? 6.0 : 1.0);
+    return 1;
+}
+
 #else
 
 int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
@@ -128,6 +192,17 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
     *texels = 0;
     rn_seterr(err, errlen, "image texture '%s': this build has no image support (libsample_io)",
               t->path);
+    return 0;
+}
+
+int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
+                   char *err, size_t errlen)
+{
+    (void)e;
+    (void)base_dir;
+    (void)max_texels;
+    *texels = 0;
+    rn_seterr(err, errlen, "file '%s': this build has no image support (libsample_io)", t->path);
     return 0;
 }
 

@@ -175,6 +175,26 @@ int render_scene_texture_exact(const render_scene *sc, int texture, double s, do
 void render_scene_texture_truth(const render_scene *sc, int texture, double s, double t,
                                 const double P[3], float out[4]);
 
+/* ---- Environment (doc/environment-maps.md, "Renderer") -------------- */
+
+/* Where a hit's material reflects the scene's environment ("reflect" > 0):
+ * 1, with q the reflected direction, in the maps' y-up frame, and its
+ * exact screen derivatives (what the renderer's own lookup asks); else 0. */
+int render_scene_env_query(const render_scene *sc, const render_hit *h, sample_query3 *q);
+/* n such queries through the environment map (sample_batch_cube or
+ * sample_batch_latlong) with `smp`, unscaled by the environment's strength;
+ * 1 on success. */
+int render_scene_env_sample(const render_scene *sc, const sample_sampler *smp, const sample_query3 *q, size_t n,
+                            float *rgba, sample_stats *stats);
+/* The environment map (NULL if the scene has none); *cube: 1 for a cube
+ * map, 0 for lat-long. */
+const sample_texture *render_scene_env(const render_scene *sc, int *cube);
+/* Ground truth at a hit that reflects the environment: the base level of
+ * the map, bilinear (LINEAR, seamless across edges, seam and poles), in
+ * the exact reflected direction at that point, unscaled by the strength.
+ * 0 if the hit does not reflect it. */
+int render_scene_env_truth(const render_scene *sc, const render_hit *h, float out[4]);
+
 /* ---- Rendering ------------------------------------------------------ */
 
 /* Progress report: `what` is being done, done of total units. Called from

@@ -239,32 +239,48 @@ typedef enum rn_env_kind { RN_ENV_NONE = 0, RN_ENV_LATLONG = 1, RN_ENV_CUBE = 2 
 
 typedef struct rn_env {
     rn_env_kind kind;
-    sample_texture *map;      /* lat-long; owned */
-    sample_texture *face[6];  /* cube: +X, −X, +Y, −Y, +Z, −Z; owned */
+    /* A cube map (SAMPLE_TEXTURE_CUBE) or a lat-long 2D texture, in the
+     * maps' y-up frame (env_to_map); owned. */
+    sample_texture *tex;
     double radius;            /* > 0: the paper's position correction, the
                                  environment painted on a sphere this big
                                  around `centre`; 0: infinitely far */
     double centre[3];
     float strength;
+    /* An environment file: the layout to resample it into (NONE: the
+     * file's own) and the size (0: from the file). */
+    rn_env_kind file_kind;
+    int file_size;
 } rn_env;
 
-/* Unit direction → lat-long (s, t): azimuth across, polar angle (from +z)
- * down; with the 2 × 3 derivative d(s,t)/dR when dst_dR is not NULL. */
-void env_latlong(const double R[3], double st[2], double dst_dR[2][3]);
-/* Cube-map face (0..5 = +X, −X, +Y, −Y, +Z, −Z) and (s, t) on it (OpenGL
- * 4.6 table 8.19), with the derivative when asked. */
-int env_cube(const double R[3], double st[2], double dst_dR[2][3]);
+/* A world (z-up) direction in the maps' frame (y up, OpenEXR's and
+ * OpenImageIO's): (x, y, z) → (x, z, −y). */
+void env_to_map(const double w[3], double m[3]);
 /* Mirror reflection of the unit view vector V (surface → eye) about N. */
 void env_reflect(const double N[3], const double V[3], double R[3]);
 /* The procedural environment of the built-in scenes, exact. */
 void env_sky(const double R[3], float out[4]);
-/* Bake env_sky into a lat-long map (w × w/2) or six cube faces (w × w). */
+/* Bake env_sky into a lat-long map (w × w/2) or a cube map (w × w faces). */
 int env_build_sky(rn_env *e, rn_env_kind kind, int w, char *err, size_t errlen);
-/* Filtered lookup in direction of the reflected ray at a hit: the direction,
- * and its screen derivatives from dN/dx, dP/dx. */
+/* The lookup of the reflected ray at a hit: the direction (in the maps'
+ * frame) and its exact screen derivatives, from dN/dx, dP/dx and the view
+ * vector V (surface → eye, unit) with its derivatives. */
+void env_query(const rn_env *e, const render_hit *h, const double V[3], const double dVdx[3],
+               const double dVdy[3], sample_query3 *q);
+/* n such queries through the map (sample_batch_cube / _latlong); 1 on
+ * success. The result is not scaled by e->strength. */
+int env_sample(const rn_env *e, const sample_sampler *smp, const sample_query3 *q, size_t n, float *rgba,
+               sample_stats *stats);
+/* Filtered lookup in direction of the reflected ray at a hit, scaled by
+ * the environment's strength. */
 void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
                 const double V[3], const double dVdx[3], const double dVdy[3], float out[4]);
 void env_release(rn_env *e);
+/* An environment file (t->path, t->colorspace) into e->tex: its own layout
+ * (sample_io_read_env), resampled into e->file_kind at e->file_size where
+ * that is set; *texels as image_load (imagetex.c). */
+int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
+                   char *err, size_t errlen);
 
 /* ---- Scene (scene.c) ---------------------------------------------------- */
 
@@ -306,10 +322,14 @@ struct render_scene {
     rn_light light[RN_MAX_LIGHTS];
     int nlight;
     rn_env env;
-    rn_texture env_image; /* a lat-long environment "file" until read into env.map */
+    rn_texture env_image; /* an environment "file" until read into env.tex */
     float background[4];
     sample_sampler sampler;
 };
+
+/* The unit view vector at a hit (surface → eye) and its screen
+ * derivatives dV = −(dP − V (V·dP)) / |E − P| (shade.c). */
+void rn_view_vector(const render_scene *sc, const render_hit *h, double V[3], double dV[2][3]);
 
 /* Allocation helpers for builders (scene.c); 0 on failure. */
 int scene_add_object(render_scene *sc, const rn_object *o);

@@ -234,13 +234,11 @@ int scene_finish(render_scene *sc, const char *base_dir, double texels_left, cha
     if (sc->env_image.path[0]) {
         double n = 0.0;
         char inner[400];
-        if (!image_load(&sc->env_image, base_dir, texels_left, &n, err, errlen)) {
+        if (!env_image_load(&sc->env_image, &sc->env, base_dir, texels_left, &n, err, errlen)) {
             snprintf(inner, sizeof inner, "%s", err ? err : "");
             rn_seterr(err, errlen, "environment: %s", inner);
             return 0;
         }
-        sc->env.map = sc->env_image.tex;
-        sc->env_image.tex = NULL;
     }
     for (k = 0; k < sc->nobj; ++k)
         if (sc->obj[k].material < 0 || sc->obj[k].material >= sc->nmat) sc->obj[k].material = 0;

@@ -588,30 +588,29 @@ static int parse_light(jctx *c, uint32_t o)
     return 1;
 }
 
-/* "environment": the procedural sky baked as a lat-long or cube map, or a
- * lat-long image file (azimuth across, polar angle from +z down; REPEAT
- * across the seam, CLAMP_TO_EDGE at the poles), read in scene_finish. */
+/* "environment": the procedural sky baked as a lat-long or cube map, or an
+ * environment file (a lat-long map or OpenEXR's cube layout, read in
+ * scene_finish by sample_io_read_env), resampled into "type" at "size"
+ * where those are given. */
 static int parse_env(jctx *c, uint32_t o)
 {
     static const char *const sky_keys[] = {"type", "size", "radius", "centre", "strength", NULL};
-    static const char *const file_keys[] = {"type", "file", "colorspace", "radius", "centre",
+    static const char *const file_keys[] = {"type", "size", "file", "colorspace", "radius", "centre",
                                             "strength", NULL};
     rn_env *e = &c->sc->env;
     const char *type;
-    int size = 512, file = rn_json_get(c->j, o, "file") != RN_JNONE;
+    int size = 0, file = rn_json_get(c->j, o, "file") != RN_JNONE;
     double strength = 1.0;
     rn_env_kind kind;
     if (!jstr(c, o, "type", &type)) return 0;
-    if (!type || strcmp(type, "latlong") == 0) kind = RN_ENV_LATLONG;
+    if (!type) kind = file ? RN_ENV_NONE : RN_ENV_LATLONG;
+    else if (strcmp(type, "latlong") == 0) kind = RN_ENV_LATLONG;
     else if (strcmp(type, "cube") == 0) kind = RN_ENV_CUBE;
     else return jfail(c, rn_json_get(c->j, o, "type"), "environment type must be latlong or cube");
-    if (file && kind == RN_ENV_CUBE)
-        return jfail(c, rn_json_get(c->j, o, "file"),
-                     "a cube environment cannot come from a file (six faces); use a lat-long image");
     if (!jkeys(c, o, file ? file_keys : sky_keys, file ? sky_keys : file_keys,
                file ? "an environment file" : "the procedural environment"))
         return 0;
-    if (kind == RN_ENV_CUBE) size = 128;
+    if (!file) size = kind == RN_ENV_CUBE ? 128 : 512;
     if (!jint(c, o, "size", 2, 8192, &size) || !jnum(c, o, "radius", 0, 1e9, &e->radius) ||
         !jvec(c, o, "centre", 3, e->centre) || !jnum(c, o, "strength", 0, 1e6, &strength))
         return 0;
@@ -619,10 +618,14 @@ static int parse_env(jctx *c, uint32_t o)
     if (file) {
         rn_texture *t = &c->sc->env_image;
         proc_defaults(t, RN_TEX_IMAGE);
-        t->wrap_s = SAMPLE_WRAP_REPEAT;
-        t->wrap_t = SAMPLE_WRAP_CLAMP_TO_EDGE;
         t->use = RN_USE_COLOUR;
-        e->kind = RN_ENV_LATLONG;
+        e->file_kind = kind;
+        e->file_size = size;
+        if (size) {
+            /* The resampled map counts against the budget as a baked one. */
+            double n = kind == RN_ENV_CUBE ? 6.0 * size * size : (double)size * 2 * size;
+            if (!budget(c, o, "environment", n, 4.0 * n)) return 0;
+        }
         return jfile(c, o, t);
     }
     {

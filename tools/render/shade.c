@@ -76,6 +76,20 @@ static void mapped_normal(const rn_object *o, const render_hit *h, const float c
     if (!(v3_normalize(N) > 0.0)) v3_copy(N, h->N);
 }
 
+void rn_view_vector(const render_scene *sc, const render_hit *h, double V[3], double dV[2][3])
+{
+    double dist;
+    int l, k;
+    v3_sub(V, sc->cam.eye, h->P);
+    dist = v3_normalize(V);
+    /* dV = −(dP − V (V·dP)) / |E − P| */
+    for (l = 0; l < 2; ++l) {
+        const double *dP = l ? h->dPdy : h->dPdx;
+        double k2 = v3_dot(V, dP);
+        for (k = 0; k < 3; ++k) dV[l][k] = -(dP[k] - V[k] * k2) / dist;
+    }
+}
+
 void shade_hit(const render_scene *sc, const render_options *o, const render_hit *h,
                const sample_quad *quad, float out[4], sample_stats *stats)
 {
@@ -83,7 +97,7 @@ void shade_hit(const render_scene *sc, const render_options *o, const render_hit
     const rn_object *obj = &sc->obj[h->object];
     const sample_sampler *smp = &o->sampler;
     float T[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    double N[3], V[3], dV[2][3], toeye[3], dist, c[3] = {0, 0, 0};
+    double N[3], V[3], dV[2][3], c[3] = {0, 0, 0};
     int k, l;
     if (m->texture >= 0) {
         const rn_texture *tx = &sc->tex[m->texture];
@@ -106,15 +120,7 @@ void shade_hit(const render_scene *sc, const render_options *o, const render_hit
         if (tex_lookup(sc->tex[m->normal_map].tex, smp, h, NULL, v, NULL, NULL, NULL))
             mapped_normal(obj, h, v, N);
     }
-    v3_sub(toeye, sc->cam.eye, h->P);
-    dist = v3_normalize(toeye);
-    v3_copy(V, toeye);
-    /* dV = −(dP − V (V·dP)) / |E − P| */
-    for (l = 0; l < 2; ++l) {
-        const double *dP = l ? h->dPdy : h->dPdx;
-        double k2 = v3_dot(V, dP);
-        for (k = 0; k < 3; ++k) dV[l][k] = -(dP[k] - V[k] * k2) / dist;
-    }
+    rn_view_vector(sc, h, V, dV);
     for (k = 0; k < 3; ++k) c[k] = m->ambient * m->diffuse[k] * T[k];
     for (l = 0; l < sc->nlight; ++l) {
         const rn_light *L = &sc->light[l];

@@ -6,6 +6,8 @@
 #include "io_internal.h"
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfEnvmapAttribute.h>
+#include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfStandardAttributes.h>
@@ -19,7 +21,7 @@
 
 extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
                                           const sample_io_exr_options *o, const io_colour_label *label,
-                                          size_t *overflows, sample_error *err)
+                                          io_env env, size_t *overflows, sample_error *err)
 {
     static const char *const rgba[4] = {"R", "G", "B", "A"};
     const char *const *names = o->channel_names ? o->channel_names : rgba;
@@ -36,6 +38,21 @@ extern "C" sample_status io_exr_write_mip(const char *tmp_path, const sample_tex
         for (int c = 0; c < inf.channels; ++c) hdr.channels().insert(names[c], Imf::Channel(pt));
         hdr.compression() = Imf::ZIP_COMPRESSION; // maketx's default, lossless
         std::string wrap = std::string(io_wrap_word(o->wrap_s)) + "," + io_wrap_word(o->wrap_t);
+        // An environment map says so twice: OpenEXR's envmap attribute
+        // (ImfEnvmap.h) and the textureformat string OpenImageIO's
+        // TextureSystem reads; a lat-long map as maketx --envlatl labels it
+        // (y up, periodic in s, clamped in t).
+        if (env == IO_ENV_LATLONG) {
+            Imf::addEnvmap(hdr, Imf::ENVMAP_LATLONG);
+            hdr.insert("textureformat", Imf::StringAttribute("LatLong Environment"));
+            hdr.insert("oiio:updirection", Imf::StringAttribute("y"));
+            wrap = "periodic,clamp";
+            hdr.insert("oiio:sampleborder", Imf::IntAttribute(0));
+        } else if (env == IO_ENV_CUBE) {
+            Imf::addEnvmap(hdr, Imf::ENVMAP_CUBE);
+            hdr.insert("textureformat", Imf::StringAttribute("CubeFace Environment"));
+            hdr.insert("oiio:sampleborder", Imf::IntAttribute(0));
+        }
         hdr.insert("wrapmodes", Imf::StringAttribute(wrap));
         // OpenEXR defines colour as premultiplied by alpha; a writer handed
         // straight colour says so rather than leaving a reader to guess.

@@ -8,6 +8,7 @@
 
 #include <OpenEXR/Iex.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
@@ -167,6 +168,15 @@ extern "C" sample_status io_exr_tiled_open(const char *path, const void *data, s
             std::snprintf(inf.colorspace, sizeof inf.colorspace, "%s", a->value().c_str());
         if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("wrapmodes"))
             std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", a->value().c_str());
+        // OIIO's reader calls a mip-mapped file (all this reader takes) a
+        // plain texture unless it says otherwise, and turns the envmap
+        // attribute into textureformat.
+        std::snprintf(inf.textureformat, sizeof inf.textureformat, "Plain Texture");
+        if (auto *a = h.findTypedAttribute<Imf::StringAttribute>("textureformat"))
+            std::snprintf(inf.textureformat, sizeof inf.textureformat, "%s", a->value().c_str());
+        if (Imf::hasEnvmap(h))
+            std::snprintf(inf.textureformat, sizeof inf.textureformat, "%s",
+                          Imf::envmap(h) == Imf::ENVMAP_CUBE ? "CubeFace Environment" : "LatLong Environment");
         *out = x.release();
         return SAMPLE_OK;
     } catch (const std::bad_alloc &) {

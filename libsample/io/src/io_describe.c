@@ -16,6 +16,7 @@ void io_file_info_fill(const io_reader_info *inf, const io_plan *p, sample_io_fi
     snprintf(info->pixel_type, sizeof info->pixel_type, "%s", inf->pixel_type);
     snprintf(info->compression, sizeof info->compression, "%s", inf->compression);
     snprintf(info->wrapmodes, sizeof info->wrapmodes, "%s", inf->wrapmodes);
+    snprintf(info->textureformat, sizeof info->textureformat, "%s", inf->textureformat);
     info->has_wrap = inf->wrapmodes[0] && io_wrapmodes_parse(inf->wrapmodes, &info->wrap_s, &info->wrap_t);
     snprintf(info->colorspace, sizeof info->colorspace, "%s", inf->colorspace);
     for (c = 0; c < SAMPLE_IO_NAMED_CHANNELS; ++c)

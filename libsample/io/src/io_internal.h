@@ -12,6 +12,8 @@
  *   exr_mip.cpp     OpenEXR: tiled mip-mapped writer
  *   exr_read.cpp    OpenEXR: direct reader of tiled mip-mapped files
  *   io_volume.c, oiio_volume.cpp  volume images (3D textures)
+ *   io_env.c        environment maps: layouts, files in and out
+ *   io_env_convert.c  environment maps: resampling between layouts
  */
 #ifndef SAMPLE_IO_INTERNAL_H
 #define SAMPLE_IO_INTERNAL_H
@@ -58,6 +60,8 @@ typedef struct io_reader_info {
     char format[32], pixel_type[16], compression[32];
     int tile_w, tile_h; /* 0: scanlines */
     char channel_names[SAMPLE_IO_NAMED_CHANNELS][32];
+    /* OIIO's "textureformat" ("LatLong Environment", …); "" if none. */
+    char textureformat[32];
 } io_reader_info;
 
 /* io_wrapmodes.c: the words of the "wrapmodes" attribute (maketx, OIIO's
@@ -187,10 +191,21 @@ sample_status io_oiio_write(const char *final_path, const char *tmp_path, const 
                             io_ptype type, int w, int h, int nchan, const char *const *names,
                             const io_colour_label *label, sample_error *err);
 
-/* The file carries the label's name (oiio:ColorSpace) and chromaticities. */
+/* The file carries the label's name (oiio:ColorSpace) and chromaticities.
+ * env: IO_ENV_NONE, or the environment layout tex holds (its envmap and
+ * textureformat attributes; a lat-long map also oiio:updirection "y" and
+ * wrapmodes "periodic,clamp" in place of o's). */
+typedef enum io_env { IO_ENV_NONE = 0, IO_ENV_LATLONG = 1, IO_ENV_CUBE = 2 } io_env;
 sample_status io_exr_write_mip(const char *tmp_path, const sample_texture *tex,
-                               const sample_io_exr_options *o, const io_colour_label *label, size_t *overflows,
-                               sample_error *err);
+                               const sample_io_exr_options *o, const io_colour_label *label, io_env env,
+                               size_t *overflows, sample_error *err);
+/* io_env.c: `mip` with a lat-long map's wrap modes (periodic across the
+ * seam, clamped at the poles, as maketx --envlatl records them) in *copy;
+ * NULL stays NULL. */
+const sample_mip_params *io_env_latlong_mip(const sample_mip_params *mip, sample_mip_params *copy);
+/* io_mip_write.c: sample_io_write_mip_exr with the environment attributes. */
+sample_status io_write_mip_env(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
+                               io_env env, sample_error *err);
 
 /* A temporary file beside a target (io_tmp.c): unnamed (O_TMPFILE) where
  * the file system allows, else named PATH.tmpPID-N and removed on SIGINT,

@@ -92,7 +92,7 @@ sample_status io_mip_target(const char *path, sample_io_type type, int *tiff, sa
  * sRGB-encoded. The file is labelled with the space it holds
  * (io_colour_label_get: its own name, chromaticities where known). */
 static sample_status write_levels(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
-                                  int tiff, size_t *overflows, sample_error *err)
+                                  int tiff, io_env env, size_t *overflows, sample_error *err)
 {
     sample_io_type type = o->type != SAMPLE_IO_TYPE_AUTO ? o->type
                           : o->use_float                 ? SAMPLE_IO_TYPE_FLOAT
@@ -110,7 +110,7 @@ static sample_status write_levels(const char *path, const sample_texture *tex, c
     if (st == SAMPLE_OK) io_colour_label_get(col, cs, &label);
     if (st == SAMPLE_OK && (st = io_tmp_create(path, &tmp, err)) == SAMPLE_OK) {
         st = tiff ? io_oiio_write_mip(path, tmp.write_path, tex, o, type, col, cs, &label, overflows, err)
-                  : io_exr_write_mip(tmp.write_path, tex, o, &label, overflows, err);
+                  : io_exr_write_mip(tmp.write_path, tex, o, &label, env, overflows, err);
         st = io_tmp_finish(st, &tmp, path, err);
     }
     io_colour_close(col);
@@ -118,7 +118,7 @@ static sample_status write_levels(const char *path, const sample_texture *tex, c
 }
 
 static sample_status write_mip(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
-                               int any_format, sample_error *err)
+                               int any_format, io_env env, sample_error *err)
 {
     sample_io_exr_options defaults;
     size_t overflows = 0;
@@ -135,7 +135,7 @@ static sample_status write_mip(const char *path, const sample_texture *tex, cons
     } else if ((st = io_mip_target(path, o->type, &tiff, err)) != SAMPLE_OK) {
         return st;
     }
-    st = write_levels(path, tex, o, tiff, &overflows, err);
+    st = write_levels(path, tex, o, tiff, env, &overflows, err);
     if (o->half_overflows) *o->half_overflows = overflows;
     return st;
 }
@@ -143,11 +143,17 @@ static sample_status write_mip(const char *path, const sample_texture *tex, cons
 sample_status sample_io_write_mip_exr(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
                                       sample_error *err)
 {
-    return write_mip(path, tex, o, 0, err);
+    return write_mip(path, tex, o, 0, IO_ENV_NONE, err);
+}
+
+sample_status io_write_mip_env(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
+                               io_env env, sample_error *err)
+{
+    return write_mip(path, tex, o, 0, env, err);
 }
 
 sample_status sample_io_write_mip(const char *path, const sample_texture *tex, const sample_io_exr_options *o,
                                   sample_error *err)
 {
-    return write_mip(path, tex, o, 1, err);
+    return write_mip(path, tex, o, 1, IO_ENV_NONE, err);
 }

@@ -130,6 +130,8 @@ extern "C" sample_status io_reader_open(const char *path, const void *data, size
         std::snprintf(inf.compression, sizeof inf.compression, "%s",
                       spec.get_string_attribute("compression").c_str());
         std::snprintf(inf.wrapmodes, sizeof inf.wrapmodes, "%s", spec.get_string_attribute("wrapmodes").c_str());
+        std::snprintf(inf.textureformat, sizeof inf.textureformat, "%s",
+                      spec.get_string_attribute("textureformat").c_str());
         inf.tile_w = spec.tile_width;
         inf.tile_h = spec.tile_height;
         for (int c = 0; c < spec.nchannels && c < SAMPLE_IO_NAMED_CHANNELS; ++c)

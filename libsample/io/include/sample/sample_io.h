@@ -188,6 +188,10 @@ struct sample_io_file_info {
     sample_format texture_format;
     int texture_channels;
     int texture_file_levels;  /* levels taken from the file (1: built) */
+    /* OpenImageIO's "textureformat" ("Plain Texture", "LatLong
+     * Environment", "CubeFace Environment", …; OpenEXR's envmap attribute
+     * reads as the latter two), "" where the file says nothing. */
+    char textureformat[32];
 };
 
 /* Describe an image file from its headers, without reading its pixels:
@@ -305,6 +309,54 @@ SAMPLE_IO_API sample_status sample_io_write_mip(const char *path, const sample_t
 SAMPLE_IO_API sample_status sample_io_make_mip(const char *in, const char *out, const sample_io_options *ro,
                                                const sample_mip_params *mip, const sample_io_exr_options *wo,
                                                sample_error *err);
+
+/* ---- Environment maps (doc/environment-maps.md, "Files") --------------- */
+
+/* Read an environment map: a lat-long map into a 2D texture for
+ * sample_batch_latlong, a cube map into a cube texture (kind
+ * SAMPLE_TEXTURE_CUBE) for sample_batch_cube. A 1:6 image is a cube
+ * (OpenEXR's layout: faces +X, −X, +Y, −Y, +Z, −Z stacked from the top,
+ * each oriented as OpenEXR's ImfEnvmap.h draws it, which is OpenGL's face
+ * mirrored; the faces are turned into GL's orientation), a 2:1 image is
+ * lat-long, whatever their attributes say (exrenvmap copies its input's).
+ * An image of another shape is lat-long if it says "LatLong Environment"
+ * (OpenEXR's "envmap" attribute, OpenImageIO's "textureformat"), else
+ * SAMPLE_E_UNSUPPORTED. A lat-long map keeps the file's
+ * levels as sample_io_read_texture does; a cube map is read in float and its
+ * pyramid built with `mip` across face edges (sample_texture_create_cube):
+ * levels stored in a cube file were filtered as one flat image, mixing
+ * faces where they meet in the stack. mip NULL: base level only. */
+SAMPLE_IO_API sample_status sample_io_read_env(const char *path, const sample_io_options *o,
+                                               const sample_mip_params *mip, sample_texture **out,
+                                               sample_error *err);
+
+/* Resample an environment map into the other layout (or the same at another
+ * size): `to` is SAMPLE_TEXTURE_CUBE (size: the face's side; 0 chooses the
+ * lat-long width / 4) or SAMPLE_TEXTURE_2D for lat-long (size: its height,
+ * the width twice that; 0 chooses 2 × the face's side). src is a cube
+ * texture, or a 2D texture read as lat-long. Each new texel is src
+ * filtered by EWA over the footprint of that texel: its centre direction
+ * and the derivatives of the direction along the new map's two texel
+ * axes, through sample_batch_cube / sample_batch_latlong. The result gets
+ * its pyramid from `mip` (NULL: base level only). */
+SAMPLE_IO_API sample_status sample_io_env_convert(const sample_texture *src, sample_texture_kind to, int size,
+                                                  const sample_mip_params *mip, sample_texture **out,
+                                                  sample_error *err);
+
+/* Write an environment map as a tiled OpenEXR (.exr only: the envmap
+ * attribute is OpenEXR's) that OpenImageIO reads as an environment: a cube
+ * texture in OpenEXR's cube layout (above) with envmap = cube and
+ * textureformat "CubeFace Environment"; a 2D texture as a lat-long map,
+ * envmap = latlong, textureformat "LatLong Environment", oiio:updirection
+ * "y" and wrapmodes "periodic,clamp", as maketx --envlatl writes. Texel
+ * (i, j) is at ((i + ½)/w, (j + ½)/h), OpenImageIO's default (no
+ * oiio:sampleborder). A cube's levels are written when its side is a power
+ * of two and it holds the full chain (the stacked image's levels are then
+ * the faces' levels stacked; the two 1 × 3 and 1 × 1 levels below are the
+ * 1 × 6 level boxed), otherwise its base only. `o` as for
+ * sample_io_write_mip_exr (tile size, type); its wrap modes are not used. */
+SAMPLE_IO_API sample_status sample_io_write_env(const char *path, const sample_texture *tex,
+                                                const sample_io_exr_options *o, sample_error *err);
 
 #ifdef __cplusplus
 }
