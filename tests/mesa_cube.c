@@ -58,20 +58,7 @@ static uint32_t rnd_u32(void) { return mesa_rnd_u32(&rng); }
 static float rnd01(void) { return mesa_rnd01(&rng); }
 
 /* Query i: texels (R, lod), (dR/dx, 0), (dR/dy, 0). */
-static const char *fs_src =
-    "#version 330 core\n"
-    "uniform samplerCube tex;\n"
-    "uniform sampler2D qtex;\n"
-    "uniform int use_lod;\n"
-    "out vec4 color;\n"
-    "void main() {\n"
-    "  ivec2 p = ivec2(gl_FragCoord.xy);\n"
-    "  vec4 a = texelFetch(qtex, ivec2(3 * p.x, p.y), 0);\n"
-    "  vec4 b = texelFetch(qtex, ivec2(3 * p.x + 1, p.y), 0);\n"
-    "  vec4 c = texelFetch(qtex, ivec2(3 * p.x + 2, p.y), 0);\n"
-    "  if (use_lod != 0) color = textureLod(tex, a.xyz, a.w);\n"
-    "  else color = textureGrad(tex, a.xyz, b.xyz, c.xyz);\n"
-    "}\n";
+static const char *fs_src = MESA_FS_QUERY3("samplerCube");
 
 /* A texel-space scale 2^e·(1 + m/256) (mesa_check's grad_scale). */
 static float grad_scale(void) { return mesa_grad_scale(&rng, -2, 6); }

@@ -74,4 +74,24 @@ uint32_t mesa_rnd_u32(uint32_t *state);
 float mesa_rnd01(uint32_t *state);
 float mesa_grad_scale(uint32_t *state, int emin, int emax);
 
+/* The fragment shader of the checks whose queries are 9 floats (cube
+ * maps, 3D textures), for a texture of GLSL type SAMPLER: query i sits at
+ * fragment (i mod width, i / width) and is three RGBA32F texels of qtex,
+ * (p, λ), (dP/dx, 0), (dP/dy, 0); use_lod picks textureLod(p, λ) over
+ * textureGrad. */
+#define MESA_FS_QUERY3(SAMPLER)                                                \
+    "#version 330 core\n"                                                     \
+    "uniform " SAMPLER " tex;\n"                                              \
+    "uniform sampler2D qtex;\n"                                               \
+    "uniform int use_lod;\n"                                                  \
+    "out vec4 color;\n"                                                       \
+    "void main() {\n"                                                         \
+    "  ivec2 p = ivec2(gl_FragCoord.xy);\n"                                   \
+    "  vec4 a = texelFetch(qtex, ivec2(3 * p.x, p.y), 0);\n"                  \
+    "  vec4 b = texelFetch(qtex, ivec2(3 * p.x + 1, p.y), 0);\n"              \
+    "  vec4 c = texelFetch(qtex, ivec2(3 * p.x + 2, p.y), 0);\n"              \
+    "  if (use_lod != 0) color = textureLod(tex, a.xyz, a.w);\n"              \
+    "  else color = textureGrad(tex, a.xyz, b.xyz, c.xyz);\n"                 \
+    "}\n"
+
 #endif /* SAMPLE_TEST_MESA_GL_H */

@@ -46,20 +46,7 @@ static float rnd01(void) { return mesa_rnd01(&rng); }
 static int rnd_int(int n) { return (int)(mesa_rnd_u32(&rng) % (uint32_t)n); }
 
 /* Query i's three texels: (s, t, r, lod), dP/dx, dP/dy. */
-static const char *fs_src =
-    "#version 330 core\n"
-    "uniform sampler3D tex;\n"
-    "uniform sampler2D qtex;\n"
-    "uniform int use_lod;\n"
-    "out vec4 color;\n"
-    "void main() {\n"
-    "  ivec2 p = ivec2(gl_FragCoord.xy);\n"
-    "  vec4 a = texelFetch(qtex, ivec2(3 * p.x, p.y), 0);\n"
-    "  vec4 b = texelFetch(qtex, ivec2(3 * p.x + 1, p.y), 0);\n"
-    "  vec4 c = texelFetch(qtex, ivec2(3 * p.x + 2, p.y), 0);\n"
-    "  if (use_lod != 0) color = textureLod(tex, a.xyz, a.w);\n"
-    "  else color = textureGrad(tex, a.xyz, b.xyz, c.xyz);\n"
-    "}\n";
+static const char *fs_src = MESA_FS_QUERY3("sampler3D");
 
 /* glTexImage3D of every level of tex, texel by texel as libsample reads
  * them (sample_texture_texel_layer: slice k is layer k). */

@@ -73,9 +73,10 @@ static int is_option(const char *arg, const char *name)
     return strncmp(arg, name, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
 }
 
-/* Direction queries of an environment map through its entry point. */
-static sample_status lookup_env(const tl_source *src, const sample_texture *tex, const sample_sampler *smp,
-                                const void *queries, size_t n, float *out, sample_stats *stats)
+/* Direction queries of an environment map (a cube map, or a 2D texture
+ * as a lat-long map). */
+static sample_status lookup_env(const sample_texture *tex, const sample_sampler *smp, const void *queries, size_t n,
+                                float *out, sample_stats *stats)
 {
     sample_batch3_args a;
     memset(&a, 0, sizeof a);
@@ -83,7 +84,7 @@ static sample_status lookup_env(const tl_source *src, const sample_texture *tex,
     a.queries = (const sample_query3 *)queries;
     a.rgba = out;
     a.stats = stats;
-    return (src->cube ? sample_batch_cube : sample_batch_latlong)(tex, smp, &a);
+    return sample_batch_env(tex, smp, &a);
 }
 #ifdef TEXSAMPLE_HAVE_IO
 /* The --image file through a texture system of cache_mb MiB (and the file's
@@ -124,17 +125,118 @@ static void report_cache(const char *sub, sample_texsys *sys, const sample_textu
 }
 #endif
 
+/* --stats: texels read per query (mean, max) on stderr. */
+static void lookup_stats_print(const sample_stats *stats, size_t n)
+{
+    double sum = 0;
+    uint32_t mx = 0;
+    size_t k;
+    for (k = 0; k < n; ++k) {
+        sum += stats[k].texels;
+        if (stats[k].texels > mx) mx = stats[k].texels;
+    }
+    fprintf(stderr, "queries %zu, texels/query mean %.2f max %u (cap %d)\n", n, n ? sum / (double)n : 0.0, mx,
+            SAMPLE_MAX_FOOTPRINT_TEXELS);
+}
+
+int lookup_run(const char *sub, const lookup_job *job)
+{
+    void *qdata = NULL, *cdata = NULL;
+    size_t qsize = 0, csize = 0, n, k;
+    const size_t qbytes = (size_t)job->qfloats * sizeof(float);
+    float *out = NULL;
+    sample_stats *stats = NULL;
+    sample_status st;
+    const char *why;
+    int rc = EXIT_RUNTIME;
+    if (!cli_read_file(job->qpath, &qdata, &qsize, &why)) {
+        cli_runtime_error(sub, "cannot read query file '%s': %s", job->qpath, why);
+        goto done;
+    }
+    if (qsize % qbytes != 0) {
+        cli_runtime_error(sub, "query file '%s' is %zu bytes, not a multiple of %zu (%d floats)", job->qpath, qsize,
+                          qbytes, job->qfloats);
+        goto done;
+    }
+    n = qsize / qbytes;
+    if (job->cpath) {
+        if (!cli_read_file(job->cpath, &cdata, &csize, &why)) {
+            cli_runtime_error(sub, "cannot read corner file '%s': %s", job->cpath, why);
+            goto done;
+        }
+        if (csize != n * 8 * sizeof(float)) {
+            cli_runtime_error(sub, "corner file '%s' holds %zu bytes; %zu queries need %zu", job->cpath, csize, n,
+                              n * 8 * sizeof(float));
+            goto done;
+        }
+    }
+    out = (float *)malloc((n ? n : 1) * 4 * sizeof(float));
+    stats = (sample_stats *)malloc((n ? n : 1) * sizeof(sample_stats));
+    if (!out || !stats) {
+        cli_runtime_error(sub, "out of memory for %zu queries", n);
+        goto done;
+    }
+    if ((st = job->run(job->ctx, qdata, cdata, n, out, stats)) != SAMPLE_OK) {
+        cli_runtime_error(sub, "sampling failed: %s", sample_strerror(st));
+        goto done;
+    }
+    if (job->opath && !cli_write_file(job->opath, out, n * 4 * sizeof(float))) {
+        cli_runtime_error(sub, "cannot write '%s': %s", job->opath, strerror(errno));
+        goto done;
+    }
+    for (k = 0; job->text && k < n; ++k) {
+        const float *q = (const float *)qdata + (size_t)job->qfloats * k;
+        if (job->qfloats == 9) printf("%.9g %.9g %.9g", q[0], q[1], q[2]);
+        else printf("%.9g %.9g", q[0], q[1]);
+        printf(" -> %.9g %.9g %.9g %.9g\n", out[4 * k], out[4 * k + 1], out[4 * k + 2], out[4 * k + 3]);
+    }
+    if (job->want_stats) lookup_stats_print(stats, n);
+    rc = EXIT_OK;
+done:
+    free(qdata);
+    free(cdata);
+    free(out);
+    free(stats);
+    return rc;
+}
+
+/* How a 2D, cube or lat-long lookup samples (lookup_job.run). */
+typedef struct lookup_2d {
+    const tl_source *src;
+    const sample_texture *tex;
+    const sample_sampler *smp;
+    int reference;
+    void *sys; /* sample_texsys * under --cache-mb, else NULL */
+} lookup_2d;
+
+static sample_status lookup_2d_run(void *ctx, const void *queries, const void *corners, size_t n, float *out,
+                                   sample_stats *stats)
+{
+    const lookup_2d *l = (const lookup_2d *)ctx;
+    sample_batch_args a;
+    /* Environment maps always run the reference path. */
+    if (l->src->cube || l->src->latlong) return lookup_env(l->tex, l->smp, queries, n, out, stats);
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.queries = (const sample_query *)queries;
+    a.corners = (const sample_quad *)corners;
+    a.rgba = out;
+    a.stats = stats;
+#ifdef TEXSAMPLE_HAVE_IO
+    if (l->sys) return sample_texsys_batch((sample_texsys *)l->sys, l->tex, l->smp, &a);
+#endif
+    return (l->reference ? sample_batch_reference : sample_batch)(l->tex, l->smp, &a);
+}
+
 int cmd_lookup(int argc, char **argv)
 {
     const char *sub = "lookup";
     tl_source src;
     sample_sampler smp;
     sample_mip_params mip;
-    const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v, *why;
+    const char *qpath = NULL, *cpath = NULL, *opath = NULL, *v;
     int text = 0, want_stats = 0, reference = 0, wrap_s_given = 0, wrap_t_given = 0, i, r, rc = EXIT_RUNTIME;
     int textures = 0, qfloats;
-    void *qdata = NULL, *cdata = NULL;
-    size_t qsize = 0, csize = 0, n;
     sample_texture *tex = NULL;
     const sample_texture *use = NULL;
     float cache_mb = 0.0f;
@@ -142,10 +244,6 @@ int cmd_lookup(int argc, char **argv)
 #ifdef TEXSAMPLE_HAVE_IO
     sample_texsys *sys = NULL; /* where --cache-mb reads through one */
 #endif
-    float *out = NULL;
-    sample_stats *stats = NULL;
-    sample_batch_args a;
-    sample_status st;
 
     if (vl_given(argc, argv)) return cmd_lookup_volume(argc, argv);
     tl_source_init(&src);
@@ -254,75 +352,19 @@ int cmd_lookup(int argc, char **argv)
         if (!wrap_t_given) smp.wrap_t = src.wrap_t;
     }
 
-    if (!cli_read_file(qpath, &qdata, &qsize, &why)) {
-        cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, why);
-        goto done;
-    }
-    if (qsize % (qfloats * sizeof(float)) != 0) {
-        cli_runtime_error(sub, "query file '%s' is %zu bytes, not a multiple of %zu (%d floats)", qpath, qsize,
-                          qfloats * sizeof(float), qfloats);
-        goto done;
-    }
-    n = qsize / (qfloats * sizeof(float));
-    if (cpath) {
-        if (!cli_read_file(cpath, &cdata, &csize, &why)) {
-            cli_runtime_error(sub, "cannot read corner file '%s': %s", cpath, why);
-            goto done;
-        }
-        if (csize != n * 8 * sizeof(float)) {
-            cli_runtime_error(sub, "corner file '%s' holds %zu bytes; %zu queries need %zu", cpath, csize, n,
-                              n * 8 * sizeof(float));
-            goto done;
-        }
-    }
-    out = (float *)malloc((n ? n : 1) * 4 * sizeof(float));
-    stats = (sample_stats *)malloc((n ? n : 1) * sizeof(sample_stats));
-    if (!out || !stats) {
-        cli_runtime_error(sub, "out of memory for %zu queries", n);
-        goto done;
-    }
-    memset(&a, 0, sizeof a);
-    a.count = n;
-    a.queries = (const sample_query *)qdata;
-    a.corners = (const sample_quad *)cdata;
-    a.rgba = out;
-    a.stats = stats;
-    /* Environment maps always run the reference path. */
-    if (qfloats == 9)
-        st = lookup_env(&src, use, &smp, qdata, n, out, stats);
+    {
+        lookup_2d ctx = {&src, use, &smp, reference, NULL};
+        lookup_job job = {qpath, cpath, opath, qfloats, text, want_stats, lookup_2d_run, &ctx};
 #ifdef TEXSAMPLE_HAVE_IO
-    else if (sys)
-        st = sample_texsys_batch(sys, use, &smp, &a);
+        ctx.sys = sys;
 #endif
-    else
-        st = (reference ? sample_batch_reference : sample_batch)(use, &smp, &a);
-    if (st != SAMPLE_OK) {
-        cli_runtime_error(sub, "sampling failed: %s", sample_strerror(st));
-        goto done;
+        if (lookup_run(sub, &job) != EXIT_OK) goto done;
     }
-    if (opath && !cli_write_file(opath, out, n * 4 * sizeof(float))) {
-        cli_runtime_error(sub, "cannot write '%s': %s", opath, strerror(errno));
-        goto done;
-    }
-    if (text) {
-        const float *q = (const float *)qdata;
-        size_t k;
-        for (k = 0; k < n; ++k) {
-            if (qfloats == 9) printf("%.9g %.9g %.9g", q[9 * k], q[9 * k + 1], q[9 * k + 2]);
-            else printf("%.9g %.9g", q[6 * k], q[6 * k + 1]);
-            printf(" -> %.9g %.9g %.9g %.9g\n", out[4 * k], out[4 * k + 1], out[4 * k + 2], out[4 * k + 3]);
-        }
-    }
-    if (want_stats) lookup_stats_print(stats, n);
 #ifdef TEXSAMPLE_HAVE_IO
     if (sys) report_cache(sub, sys, use, want_stats);
 #endif
     rc = EXIT_OK;
 done:
-    free(qdata);
-    free(cdata);
-    free(out);
-    free(stats);
     sample_texture_destroy(tex);
 #ifdef TEXSAMPLE_HAVE_IO
     sample_texsys_destroy(sys);

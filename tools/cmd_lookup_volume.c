@@ -35,33 +35,34 @@ const char lookup_volume_help[] =
     "  --out FILE, --text, --stats             as for 2D queries\n"
     "  Volumes are always sampled one query at a time (--reference-path is accepted).\n\n";
 
-void lookup_stats_print(const sample_stats *stats, size_t n)
+/* How a volume lookup samples (lookup_job.run). */
+typedef struct lookup_volume {
+    const sample_texture *tex;
+    const sample_sampler *smp;
+} lookup_volume;
+
+static sample_status lookup_volume_run(void *ctx, const void *queries, const void *corners, size_t n, float *out,
+                                       sample_stats *stats)
 {
-    double sum = 0;
-    uint32_t mx = 0;
-    size_t k;
-    for (k = 0; k < n; ++k) {
-        sum += stats[k].texels;
-        if (stats[k].texels > mx) mx = stats[k].texels;
-    }
-    fprintf(stderr, "queries %zu, texels/query mean %.2f max %u (cap %d)\n", n, n ? sum / (double)n : 0.0, mx,
-            SAMPLE_MAX_FOOTPRINT_TEXELS);
+    const lookup_volume *l = (const lookup_volume *)ctx;
+    sample_batch3_args a;
+    (void)corners;
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.queries = (const sample_query3 *)queries;
+    a.rgba = out;
+    a.stats = stats;
+    return sample_batch_3d(l->tex, l->smp, &a);
 }
 
 int cmd_lookup_volume(int argc, char **argv)
 {
-    const char *sub = "lookup", *qpath = NULL, *opath = NULL, *v, *why;
+    const char *sub = "lookup", *qpath = NULL, *opath = NULL, *v;
     int text = 0, want_stats = 0, i, r, rc = EXIT_RUNTIME;
     vl_source src = {NULL, NULL, {0, 0, 0}};
     sample_sampler smp;
     sample_mip_params mip;
     sample_texture *tex = NULL;
-    void *qdata = NULL;
-    size_t qsize = 0, n, k;
-    float *out = NULL;
-    sample_stats *stats = NULL;
-    sample_batch3_args a;
-    sample_status st;
 
     sample_sampler_init(&smp);
     sample_mip_params_init(&mip);
@@ -113,43 +114,13 @@ int cmd_lookup_volume(int argc, char **argv)
         return EXIT_RUNTIME;
     }
 
-    if (!cli_read_file(qpath, &qdata, &qsize, &why)) {
-        cli_runtime_error(sub, "cannot read query file '%s': %s", qpath, why);
-        goto done;
+    {
+        lookup_volume ctx = {tex, &smp};
+        lookup_job job = {qpath, NULL, opath, 9, text, want_stats, lookup_volume_run, &ctx};
+        if (lookup_run(sub, &job) != EXIT_OK) goto done;
     }
-    if (qsize % sizeof(sample_query3) != 0) {
-        cli_runtime_error(sub, "query file '%s' is %zu bytes, not a multiple of 36 (9 floats)", qpath, qsize);
-        goto done;
-    }
-    n = qsize / sizeof(sample_query3);
-    out = (float *)malloc((n ? n : 1) * 4 * sizeof(float));
-    stats = (sample_stats *)malloc((n ? n : 1) * sizeof(sample_stats));
-    if (!out || !stats) {
-        cli_runtime_error(sub, "out of memory for %zu queries", n);
-        goto done;
-    }
-    memset(&a, 0, sizeof a);
-    a.count = n;
-    a.queries = (const sample_query3 *)qdata;
-    a.rgba = out;
-    a.stats = stats;
-    if ((st = sample_batch_3d(tex, &smp, &a)) != SAMPLE_OK) {
-        cli_runtime_error(sub, "sampling failed: %s", sample_strerror(st));
-        goto done;
-    }
-    if (opath && !cli_write_file(opath, out, n * 4 * sizeof(float))) {
-        cli_runtime_error(sub, "cannot write '%s': %s", opath, strerror(errno));
-        goto done;
-    }
-    for (k = 0; text && k < n; ++k)
-        printf("%.9g %.9g %.9g -> %.9g %.9g %.9g %.9g\n", a.queries[k].p[0], a.queries[k].p[1], a.queries[k].p[2],
-               out[4 * k], out[4 * k + 1], out[4 * k + 2], out[4 * k + 3]);
-    if (want_stats) lookup_stats_print(stats, n);
     rc = EXIT_OK;
 done:
-    free(qdata);
-    free(out);
-    free(stats);
     sample_texture_destroy(tex);
     return rc;
 }

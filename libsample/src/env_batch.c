@@ -23,10 +23,9 @@ static sample_status env_batch(const sample_texture *tex, const sample_sampler *
     sample_status st;
     uintptr_t ticket;
     size_t i;
-    if (!tex || !a || tex->kind != kind) return SAMPLE_E_INVALID_ARGUMENT;
-    if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
-    if (a->count == 0) return SAMPLE_OK;
-    if (!a->queries || !a->rgba) return SAMPLE_E_INVALID_ARGUMENT;
+    int run;
+    if (!a) return SAMPLE_E_INVALID_ARGUMENT;
+    if ((st = ls_batch_check(tex, kind, smp, a->count, a->queries, a->rgba, &run)) != SAMPLE_OK || !run) return st;
     /* The kind's addressing replaces the wrap modes (GL 4.6 §8.13.1
      * ignores them for seamless cube maps); CLAMP_TO_EDGE is the one mode
      * that leaves a coordinate untouched (ls_wrap_coord). */
@@ -82,4 +81,10 @@ static int latlong_map(const sample_texture *tex, const sample_query3 *q, sample
 sample_status sample_batch_latlong(const sample_texture *tex, const sample_sampler *smp, const sample_batch3_args *a)
 {
     return env_batch(tex, smp, a, SAMPLE_TEXTURE_2D, LS_ENV_LATLONG, latlong_map);
+}
+
+sample_status sample_batch_env(const sample_texture *tex, const sample_sampler *smp, const sample_batch3_args *a)
+{
+    if (tex && tex->kind == SAMPLE_TEXTURE_CUBE) return sample_batch_cube(tex, smp, a);
+    return sample_batch_latlong(tex, smp, a);
 }

@@ -31,4 +31,11 @@ void ls_filter_footprint_query(const sample_ctx *c, const sample_batch_args *a, 
  * it the 2D query their direction maps to. */
 void ls_reference_query(const sample_ctx *c, const sample_batch_args *a, size_t i);
 
+/* The checks every batch entry point makes, whatever its query type: a
+ * texture of the entry point's kind, a valid sampler, and the query and
+ * result arrays where count > 0 (SAMPLE_E_INVALID_ARGUMENT, or the
+ * sampler's status, otherwise). *run is 0 when there is nothing to do. */
+sample_status ls_batch_check(const sample_texture *tex, sample_texture_kind kind, const sample_sampler *smp,
+                             size_t count, const void *queries, const float *rgba, int *run);
+
 #endif /* SAMPLE_FILTER_H */

@@ -81,21 +81,27 @@ void ls_reference_query(const sample_ctx *c, const sample_batch_args *a, size_t 
     batch_border(c, a, i);
 }
 
-/* The checks every batch makes; *run is 0 when there is nothing to do. */
-static sample_status batch_check(const sample_texture *tex, const sample_sampler *smp,
-                                 const sample_batch_args *a, int *run)
+sample_status ls_batch_check(const sample_texture *tex, sample_texture_kind kind, const sample_sampler *smp,
+                             size_t count, const void *queries, const float *rgba, int *run)
 {
     sample_status st;
     *run = 0;
-    if (!tex || !a) return SAMPLE_E_INVALID_ARGUMENT;
-    /* sample_query is a 2D query (s, t and a 2 × 2 Jacobian): for 2D
-     * textures; other kinds have their own entry points. */
-    if (tex->kind != SAMPLE_TEXTURE_2D) return SAMPLE_E_INVALID_ARGUMENT;
+    if (!tex || tex->kind != kind) return SAMPLE_E_INVALID_ARGUMENT;
     if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
-    if (a->count == 0) return SAMPLE_OK;
-    if (!a->queries || !a->rgba) return SAMPLE_E_INVALID_ARGUMENT;
+    if (count == 0) return SAMPLE_OK;
+    if (!queries || !rgba) return SAMPLE_E_INVALID_ARGUMENT;
     *run = 1;
     return SAMPLE_OK;
+}
+
+/* sample_query is a 2D query (s, t and a 2 × 2 Jacobian): for 2D
+ * textures; other kinds have their own entry points. */
+static sample_status batch_check(const sample_texture *tex, const sample_sampler *smp,
+                                 const sample_batch_args *a, int *run)
+{
+    *run = 0;
+    if (!a) return SAMPLE_E_INVALID_ARGUMENT;
+    return ls_batch_check(tex, SAMPLE_TEXTURE_2D, smp, a->count, a->queries, a->rgba, run);
 }
 
 static void reference_batch(const sample_ctx *c, const sample_batch_args *a)

@@ -5,6 +5,7 @@
  * point. One query at a time, texel by texel (vol_texel): the reference
  * path's structure (sampler.c), with the 2D arithmetic reused per slice.
  */
+#include "filter.h"
 #include "kernels.h"
 #include "volume.h"
 
@@ -141,10 +142,10 @@ sample_status sample_batch_3d(const sample_texture *tex, const sample_sampler *s
     sample_status st;
     uintptr_t ticket;
     size_t i;
-    if (!tex || !a || tex->kind != SAMPLE_TEXTURE_3D) return SAMPLE_E_INVALID_ARGUMENT;
-    if ((st = sample_sampler_validate(smp)) != SAMPLE_OK) return st;
-    if (a->count == 0) return SAMPLE_OK;
-    if (!a->queries || !a->rgba) return SAMPLE_E_INVALID_ARGUMENT;
+    int run;
+    if (!a) return SAMPLE_E_INVALID_ARGUMENT;
+    if ((st = ls_batch_check(tex, SAMPLE_TEXTURE_3D, smp, a->count, a->queries, a->rgba, &run)) != SAMPLE_OK || !run)
+        return st;
     /* The reference kernels: volumes have no fast path, and the footprint
      * filters' readers below are the texel-by-texel ones. */
     ls_ctx_init(&c, tex, smp, &ls_isa_kernels_reference);

@@ -67,8 +67,7 @@ int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
         a.queries = q;
         a.rgba = rgba;
         a.stats = stats;
-        st = e->env == BENCH_ENV_CUBE ? sample_batch_cube(t->ours, &e->smp, &a)
-                                      : sample_batch_latlong(t->ours, &e->smp, &a);
+        st = sample_batch_env(t->ours, &e->smp, &a);
         if (st == SAMPLE_OK) return 0;
         fprintf(stderr, "texsample bench: %s: %s\n", e->name, sample_strerror(st));
         return -1;

@@ -204,7 +204,7 @@ int bench_env(const bench_env_opts *o)
     sample_texture *ll = NULL, *cube = NULL;
     sample_query3 *q = malloc(o->queries * sizeof *q);
     oiio_ts *ts = NULL;
-    bench_texture tl = {NULL, NULL}, tc = {NULL, NULL};
+    bench_texture tl = {.ours = NULL}, tc = {.ours = NULL};
     char path[1100];
     int neng = env_engines(o->filters, o->oiio, eng, ENV_MAX_ENGINES), set, e, rc = EXIT_OK;
     if (neng < 0) {

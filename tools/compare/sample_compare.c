@@ -22,12 +22,19 @@ typedef struct fn_ctx {
     char err[256];
 } fn_ctx;
 
-static int fn_batch(void *ctx, int texture, const sample_query *q, const sample_quad *quad, size_t n,
-                    float *rgba, sample_stats *stats)
+static int fn_batch(void *ctx, int texture, const sample_query *q, const sample_query3 *q3, const sample_quad *quad,
+                    size_t n, float *rgba, sample_stats *stats)
 {
     fn_ctx *c = (fn_ctx *)ctx;
     (void)quad;
     (void)stats;
+    if (q3) {
+        /* An environment map's direction queries: a filter callback takes
+         * 2D queries (sample_measure.h). */
+        snprintf(c->err, sizeof c->err, "a filter callback samples 2D textures; this scene's environment map "
+                                        "takes direction queries");
+        return 1;
+    }
     return c->f->fn(c->f->user, render_scene_texture(c->sc, texture), q, n, rgba, c->err, sizeof c->err) != 0;
 }
 

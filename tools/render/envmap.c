@@ -231,7 +231,7 @@ int env_sample(const rn_env *e, const sample_sampler *smp, const sample_query3 *
     a.queries = q;
     a.rgba = rgba;
     a.stats = stats;
-    return (e->kind == RN_ENV_CUBE ? sample_batch_cube(e->tex, smp, &a) : sample_batch_latlong(e->tex, smp, &a)) ==
+    return sample_batch_env(e->tex, smp, &a) ==
            SAMPLE_OK;
 }
 

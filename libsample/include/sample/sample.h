@@ -241,7 +241,7 @@ typedef struct sample_texture_info {
     sample_format format;
     size_t bytes; /* texel memory held, all levels */
     sample_texture_kind kind;
-    int depth; /* slices of level 0: 1 but for a 3D texture */
+    int depth; /* layers of level 0: a 3D texture's slices, a cube map's 6 faces, 1 for 2D */
 } sample_texture_info;
 
 SAMPLE_API void sample_texture_info_get(const sample_texture *tex, sample_texture_info *info);
@@ -416,6 +416,12 @@ SAMPLE_API sample_status sample_batch_cube(const sample_texture *tex, const samp
  * The sampler's wrap modes are not used. Bad input as sample_batch_cube. */
 SAMPLE_API sample_status sample_batch_latlong(const sample_texture *tex, const sample_sampler *sampler,
                                               const sample_batch3_args *args);
+
+/* An environment lookup as OpenImageIO's environment(R, dRdx, dRdy): a
+ * cube map through sample_batch_cube, a 2D texture as a lat-long map
+ * through sample_batch_latlong. */
+SAMPLE_API sample_status sample_batch_env(const sample_texture *tex, const sample_sampler *sampler,
+                                          const sample_batch3_args *args);
 /* ---- 3D textures (doc/volumes.md) --------------------------------------
  *
  * A 3D texture (SAMPLE_TEXTURE_3D, GL_TEXTURE_3D) is w × h × d texels:

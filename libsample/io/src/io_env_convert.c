@@ -56,13 +56,11 @@ static sample_status lookup(const sample_texture *src, const sample_sampler *smp
                             float *rgba)
 {
     sample_batch3_args a;
-    sample_texture_info inf;
     memset(&a, 0, sizeof a);
     a.count = count;
     a.queries = q;
     a.rgba = rgba;
-    sample_texture_info_get(src, &inf);
-    return inf.kind == SAMPLE_TEXTURE_CUBE ? sample_batch_cube(src, smp, &a) : sample_batch_latlong(src, smp, &a);
+    return sample_batch_env(src, smp, &a);
 }
 
 /* rgba (count × 4) into count texels of `channels` channels. */
