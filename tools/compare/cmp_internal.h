@@ -66,12 +66,16 @@ typedef struct cmp_view {
     int *tex;              /* per pixel: texture index; −1 surface without texture; −2 background */
     int *object;           /* per pixel: object hit at the centre, −1 background */
     sample_query *q;       /* per pixel: (s, t) and exact Jacobian at the centre */
+    sample_query3 *q3;     /* per pixel on a solid texture (cmp_view_3d): (s, t, r) in its
+                              volume and the exact dP/dx, dP/dy; NULL if the scene has none */
     sample_quad *quad;     /* per pixel: exact corners, where quad_ok */
     unsigned char *quad_ok;
     float background[4];   /* linear RGBA for pixels (and truth samples) that miss */
     sample_sampler sampler; /* the scene's sampler */
 } cmp_view;
 
+/* 1 if the texture's queries are v->q3's (a solid texture's volume). */
+int cmp_view_3d(const cmp_view *v, int texture);
 /* Ray-cast every pixel centre and its corners. Returns 0 on success. */
 int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, size_t errlen);
 void cmp_view_free(cmp_view *v);
@@ -88,10 +92,11 @@ typedef struct cmp_result {
 } cmp_result;
 
 /* An engine: filter n queries of one texture (quad: exact corners or NULL)
- * into n × 4 floats; stats may be NULL. Returns 0 on success. Called from
- * many threads at once. */
-typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
-                            size_t n, float *rgba, sample_stats *stats);
+ * into n × 4 floats; stats may be NULL. For a texture of 3D queries
+ * (cmp_view_3d) q is NULL and q3 holds them; else q3 is NULL. Returns 0 on
+ * success. Called from many threads at once. */
+typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
+                            const sample_quad *quad, size_t n, float *rgba, sample_stats *stats);
 /* Run an engine over every textured pixel of the view, `runs` times (≥ 1)
  * (run.c): the times are the medians over the runs (one run's time moves
  * with whatever else the machine does); the image and texel counts are the

@@ -21,12 +21,13 @@ typedef struct oiio_ctx {
     oiio_ts_opts opts;
 } oiio_ctx;
 
-static int oiio_fn(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
-                   size_t n, float *rgba, sample_stats *stats)
+static int oiio_fn(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
+                   const sample_quad *quad, size_t n, float *rgba, sample_stats *stats)
 {
     oiio_ctx *c = ctx;
     (void)quad;
     (void)stats;
+    if (q3) return 1; /* cmp_run_oiio refuses solid textures before it runs */
     if (!c->tex[texture]) return 1;
     return oiio_ts_sample(c->ts, c->tex[texture], &c->opts, q, n, rgba, NULL, 0) == 0 ? 0 : 1;
 }
@@ -87,6 +88,14 @@ int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, in
     /* Only the textures some pixel uses. */
     for (px = 0; px < n; ++px) {
         k = v->tex[px];
+        if (k >= 0 && cmp_view_3d(v, k)) {
+            /* OpenImageIO's texture3d() reads volume files and filters
+             * their base level only (no mip filtering, no footprint):
+             * nothing to set beside these rows (bench --volume times it). */
+            snprintf(err, errlen, "%s: OpenImageIO's texture3d has no mip or footprint filtering "
+                                  "for a solid texture's volume", c->name);
+            goto out;
+        }
         if (k >= 0 && k < ntex && !ctx.tex[k] &&
             !(ctx.tex[k] = oiio_prepare(v, ctx.ts, k, workdir, err, errlen)))
             goto out;

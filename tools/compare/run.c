@@ -66,13 +66,14 @@ static void run_row(void *ctx, int j)
     const int *tex = v->tex + base;
     int *list = malloc(sizeof *list * (size_t)v->w), *pix = malloc(sizeof *pix * (size_t)v->w);
     sample_query *q = malloc(sizeof *q * (size_t)v->w);
+    sample_query3 *q3 = v->q3 ? malloc(sizeof *q3 * (size_t)v->w) : NULL;
     sample_quad *quad = malloc(sizeof *quad * (size_t)v->w);
     sample_stats *st = malloc(sizeof *st * (size_t)v->w);
     float *out = malloc(sizeof *out * 4 * (size_t)v->w);
     int nt, t, pass, i, k;
     double secs = 0.0, texels = 0.0;
     size_t queries = 0;
-    if (!list || !pix || !q || !quad || !st || !out) {
+    if (!list || !pix || !q || !quad || !st || !out || (v->q3 && !q3)) {
         jb->row_failed[j] = 1;
         goto done;
     }
@@ -80,19 +81,20 @@ static void run_row(void *ctx, int j)
     for (t = 0; t < nt; ++t)
         /* pass 0: Jacobian only; pass 1: with exact corners (corner mode only). */
         for (pass = 0; pass < 2; ++pass) {
-            int n = 0;
+            int n = 0, three = cmp_view_3d(v, list[t]);
             double t0;
             for (i = 0; i < v->w; ++i) {
                 int with = jb->corners && v->quad_ok[base + (size_t)i];
                 if (tex[i] != list[t] || with != pass) continue;
-                q[n] = v->q[base + (size_t)i];
+                if (three) q3[n] = v->q3[base + (size_t)i];
+                else q[n] = v->q[base + (size_t)i];
                 if (with) quad[n] = v->quad[base + (size_t)i];
                 pix[n++] = i;
             }
             if (n == 0) continue;
             t0 = cmp_now();
-            if (jb->fn(jb->ctx, list[t], q, pass ? quad : NULL, (size_t)n, out,
-                       jb->stats ? st : NULL) != 0) {
+            if (jb->fn(jb->ctx, list[t], three ? NULL : q, three ? q3 : NULL, pass ? quad : NULL,
+                       (size_t)n, out, jb->stats ? st : NULL) != 0) {
                 jb->row_failed[j] = 1;
                 goto done;
             }
@@ -111,6 +113,7 @@ done:
     free(list);
     free(pix);
     free(q);
+    free(q3);
     free(quad);
     free(st);
     free(out);
@@ -180,11 +183,12 @@ typedef struct sample_ctx {
     sample_sampler smp;
 } sample_ctx;
 
-static int sample_fn(void *ctx, int texture, const sample_query *q, const sample_quad *quad,
-                     size_t n, float *rgba, sample_stats *stats)
+static int sample_fn(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
+                     const sample_quad *quad, size_t n, float *rgba, sample_stats *stats)
 {
     const sample_ctx *c = ctx;
     sample_batch_args a;
+    if (q3) return render_scene_solid_sample(c->sc, texture, &c->smp, q3, n, rgba, stats) ? 0 : 1;
     memset(&a, 0, sizeof a);
     a.count = n;
     a.queries = q;

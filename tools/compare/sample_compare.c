@@ -22,12 +22,17 @@ typedef struct fn_ctx {
     char err[256];
 } fn_ctx;
 
-static int fn_batch(void *ctx, int texture, const sample_query *q, const sample_quad *quad, size_t n,
-                    float *rgba, sample_stats *stats)
+static int fn_batch(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
+                    const sample_quad *quad, size_t n, float *rgba, sample_stats *stats)
 {
     fn_ctx *c = (fn_ctx *)ctx;
     (void)quad;
     (void)stats;
+    if (q3) {
+        snprintf(c->err, sizeof c->err, "a filter callback takes 2D queries; this scene has solid "
+                                        "textures (3D queries)");
+        return 1;
+    }
     return c->f->fn(c->f->user, render_scene_texture(c->sc, texture), q, n, rgba, c->err, sizeof c->err) != 0;
 }
 

@@ -25,6 +25,8 @@ static void view_row(void *ctx, int j)
             continue;
         }
         v->tex[px] = render_scene_material_texture(v->sc, h->material);
+        /* A solid texture asks for the surface point in its volume. */
+        if (v->q3 && render_scene_solid_query(v->sc, v->tex[px], h, &v->q3[px])) continue;
         q->s = (float)h->s;
         q->t = (float)h->t;
         q->dsdx = (float)h->J[0];
@@ -37,13 +39,18 @@ static void view_row(void *ctx, int j)
     }
 }
 
+int cmp_view_3d(const cmp_view *v, int texture)
+{
+    return render_scene_texture_solid(v->sc, texture);
+}
+
 int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, size_t errlen)
 {
     size_t n;
     /* Background: not a filtering question, so one neutral colour for every
      * scene, the same in the images and in the ground truth. */
     static const float bg[4] = {0.18f, 0.2f, 0.24f, 1.0f};
-    int k;
+    int k, want3;
     v->sc = sc;
     render_scene_size(sc, &v->w, &v->h);
     render_scene_sampler(sc, &v->sampler);
@@ -53,9 +60,13 @@ int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, 
     v->tex = malloc(n * sizeof *v->tex);
     v->object = malloc(n * sizeof *v->object);
     v->q = calloc(n, sizeof *v->q);
+    for (k = 0; k < render_scene_texture_count(sc) && !cmp_view_3d(v, k); ++k) {}
+    want3 = k < render_scene_texture_count(sc);
+    v->q3 = want3 ? calloc(n, sizeof *v->q3) : NULL;
     v->quad = calloc(n, sizeof *v->quad);
     v->quad_ok = calloc(n, 1);
-    if (!v->cache || !v->tex || !v->object || !v->q || !v->quad || !v->quad_ok) {
+    if (!v->cache || !v->tex || !v->object || !v->q || !v->quad || !v->quad_ok ||
+        (want3 && !v->q3)) {
         cmp_view_free(v);
         snprintf(err, errlen, "out of memory for a %d x %d view", v->w, v->h);
         return 1;
@@ -70,11 +81,13 @@ void cmp_view_free(cmp_view *v)
     free(v->tex);
     free(v->object);
     free(v->q);
+    free(v->q3);
     free(v->quad);
     free(v->quad_ok);
     v->cache = NULL;
     v->tex = v->object = NULL;
     v->q = NULL;
+    v->q3 = NULL;
     v->quad = NULL;
     v->quad_ok = NULL;
 }

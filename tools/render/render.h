@@ -175,6 +175,21 @@ int render_scene_texture_exact(const render_scene *sc, int texture, double s, do
 void render_scene_texture_truth(const render_scene *sc, int texture, double s, double t,
                                 const double P[3], float out[4]);
 
+/* ---- Solid textures (doc/volumes.md, "Renderer") -------------------- */
+
+/* 1 if the texture is a solid texture baked into a 3D texture (its
+ * render_scene_texture is then SAMPLE_TEXTURE_3D). */
+int render_scene_texture_solid(const render_scene *sc, int texture);
+/* The volume query of a hit on such a texture: (s, t, r) of the surface
+ * point P in the solid's box and the columns dP/dx, dP/dy of the exact ray
+ * differentials in the same units. 0 if the texture is not a baked solid. */
+int render_scene_solid_query(const render_scene *sc, int texture, const render_hit *h,
+                             sample_query3 *q);
+/* n such queries through sample_batch_3d with smp's filters and the
+ * solid's own wrap mode on s, t and r; 1 on success. */
+int render_scene_solid_sample(const render_scene *sc, int texture, const sample_sampler *smp,
+                              const sample_query3 *q, size_t n, float *rgba, sample_stats *stats);
+
 /* ---- Rendering ------------------------------------------------------ */
 
 /* Progress report: `what` is being done, done of total units. Called from
