@@ -139,6 +139,13 @@ bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oii
 int bench_timer_pass(bench_timer *tm);
 int bench_timer_close(bench_timer *tm, bench_timing *out);
 
+/* ---- Volumes (volume.c) ---------------------------------------------- */
+
+/* bench --volume: 3D texture lookups of a size³ volume on one thread,
+ * random queries and the carved teapot's frame² picture; prints the
+ * table. Returns an exit code. */
+int bench_volume(int size, size_t queries, int runs, int frame);
+
 /* ---- Report (report.c) ------------------------------------------------ */
 
 typedef struct bench_result {

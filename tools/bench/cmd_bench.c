@@ -57,7 +57,13 @@ static const char help[] =
     "                     s, t, dsdx, dtdx, dsdy, dtdy per query), OIIO's texture\n"
     "                     files (written even with --no-oiio) and manifest.json\n"
     "                     (layout, settings of both sides, 1-thread samples/s),\n"
-    "                     for re-timing by tools/bench/oiio_replay\n\n"
+    "                     for re-timing by tools/bench/oiio_replay\n"
+    "  --volume           3D texture lookups instead (doc/volumes.md): a --size^3\n"
+    "                     volume (default 128) of baked wood, random queries\n"
+    "                     (--queries, default 65536) and the carved teapot's\n"
+    "                     frame, nearest, trilinear, aniso16, blinn-newell and\n"
+    "                     ewa on 1 thread (--runs); other options do not apply\n"
+    "  --frame N          the teapot frame's side with --volume (default 256)\n\n"
     "Filters:\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
@@ -65,6 +71,7 @@ enum { MAX_ENGINES = 32 };
 
 typedef struct bench_opts {
     int size, runs, threads, oiio, scalar;
+    int volume, frame, size_given, queries_given; /* --volume and its options */
     float cache_mb; /* 0: resident textures, OIIO's default cache */
     size_t queries, batch;
     unsigned sets, formats; /* bit masks */
@@ -118,12 +125,19 @@ static int parse_args(int argc, char **argv, bench_opts *o)
             o->oiio = 0;
         } else if (cli_opt(argc, argv, &i, "--scalar", NULL)) {
             o->scalar = 1;
+        } else if (cli_opt(argc, argv, &i, "--volume", NULL)) {
+            o->volume = 1;
+        } else if (cli_opt(argc, argv, &i, "--frame", &v)) {
+            if (parse_size("--frame", v, 1, 4096, &x)) return -1;
+            o->frame = (int)x;
         } else if (cli_opt(argc, argv, &i, "--size", &v)) {
             if (parse_size("--size", v, 16, SAMPLE_MAX_SIZE / 4, &x)) return -1;
             o->size = (int)x;
+            o->size_given = 1;
         } else if (cli_opt(argc, argv, &i, "--queries", &v)) {
             if (parse_size("--queries", v, 1, 1L << 26, &x)) return -1;
             o->queries = (size_t)x;
+            o->queries_given = 1;
         } else if (cli_opt(argc, argv, &i, "--runs", &v)) {
             if (parse_size("--runs", v, 1, 1000, &x)) return -1;
             o->runs = (int)x;
@@ -401,7 +415,16 @@ int cmd_bench(int argc, char **argv)
     b.o.sets = (1u << BENCH_SET_COUNT) - 1;
     b.o.formats = (1u << BENCH_FMT_COUNT) - 1;
     b.o.filters = "all";
-    if (parse_args(argc, argv, &b.o) != 0 || make_engines(&b) != 0) return EXIT_USAGE;
+    b.o.frame = 256;
+    if (parse_args(argc, argv, &b.o) != 0) return EXIT_USAGE;
+    if (b.o.volume) {
+        /* A volume of --size³ texels: 512³ float RGBA is already 2 GiB. */
+        if (b.o.size_given && b.o.size > 512)
+            return cli_usage_error("bench", "--volume: --size must be at most 512");
+        return bench_volume(b.o.size_given ? b.o.size : 128, b.o.queries_given ? b.o.queries : 65536,
+                            b.o.runs, b.o.frame);
+    }
+    if (make_engines(&b) != 0) return EXIT_USAGE;
     for (i = 0; i < b.neng; ++i)
         if (b.o.scalar && !b.eng[i].oiio) b.eng[i].reference = 1;
 
