@@ -61,8 +61,12 @@ static const char help[] =
     "  --volume           3D texture lookups instead (doc/volumes.md): a --size^3\n"
     "                     volume (default 128) of baked wood, random queries\n"
     "                     (--queries, default 65536) and the carved teapot's\n"
-    "                     frame, nearest, trilinear, aniso16, blinn-newell and\n"
-    "                     ewa on 1 thread (--runs); other options do not apply\n"
+    "                     frame; nearest, bilinear, trilinear, aniso16,\n"
+    "                     blinn-newell and ewa on 1 thread (--runs), beside\n"
+    "                     OpenImageIO's texture3d (closest, linear; not with\n"
+    "                     --no-oiio; its file in --tmpdir); --threads, --batch,\n"
+    "                     --sets, --formats, --filters, --cache-mb, --scalar,\n"
+    "                     --json and --save do not apply\n"
     "  --frame N          the teapot frame's side with --volume (default 256)\n\n"
     "Filters:\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
@@ -421,8 +425,9 @@ int cmd_bench(int argc, char **argv)
         /* A volume of --size³ texels: 512³ float RGBA is already 2 GiB. */
         if (b.o.size_given && b.o.size > 512)
             return cli_usage_error("bench", "--volume: --size must be at most 512");
+        tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
         return bench_volume(b.o.size_given ? b.o.size : 128, b.o.queries_given ? b.o.queries : 65536,
-                            b.o.runs, b.o.frame);
+                            b.o.runs, b.o.frame, b.o.oiio, tmp && *tmp ? tmp : "/tmp");
     }
     if (make_engines(&b) != 0) return EXIT_USAGE;
     for (i = 0; i < b.neng; ++i)

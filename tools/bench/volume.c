@@ -13,14 +13,18 @@
  * Each filter of the registry named below is timed on one thread over
  * sample_batch_3d calls of 256 queries: the median of --runs passes after
  * an untimed one, and the texels read per sample. OpenImageIO's
- * texture3d() reads volume files and filters their base level only (no
- * mip levels, no footprint), so no row of it does what these rows do; the
- * table says so rather than time a different filter.
+ * texture3d() (tools/oiio/oiio_volume.h) reads the same base level from a
+ * volume TIFF and filters it only by InterpClosest or a trilinear blend
+ * (no mip levels, no footprint): its two rows are the twins of nearest and
+ * bilinear (LINEAR without mips), timed alike, with the largest difference
+ * from libsample's values over both sets; the mip and footprint rows have
+ * no twin, and the table says so.
  */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, getpid */
 #include "bench.h"
 #include "cli.h"
 #include "commands.h"
+#include "oiio_volume.h"
 #include "render/render.h"
 
 #include <math.h>
@@ -28,12 +32,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #define VOL_BATCH 256
 #define VOL_MAX_RUNS 101
 
-static const char *const vol_filters[] = {"nearest", "trilinear", "aniso16", "blinn-newell", "ewa",
-                                          NULL};
+static const char *const vol_filters[] = {"nearest", "bilinear", "trilinear", "aniso16",
+                                          "blinn-newell", "ewa", NULL};
 
 static double now_s(void)
 {
@@ -120,9 +125,27 @@ typedef struct vol_row {
     double rate[2], texels[2]; /* per set: median samples/s, texels per sample */
 } vol_row;
 
-/* One filter over one set: texels per sample, then `runs` timed passes. */
-static int time_set(const render_scene *sc, const sample_sampler *smp, const sample_query3 *q,
-                    size_t n, int runs, double *rate, double *texels)
+/* An engine: n queries into n × 4 floats (stats: NULL, or n entries the
+ * engine fills if it counts texels); 1 on success. */
+typedef struct vol_engine {
+    const render_scene *sc;
+    sample_sampler smp; /* libsample */
+    oiio_vol *oiio;     /* OpenImageIO when not NULL */
+    int linear;
+} vol_engine;
+
+static int engine_run(const vol_engine *e, const sample_query3 *q, size_t n, float *rgba,
+                      sample_stats *st)
+{
+    if (e->oiio)
+        return oiio_vol_sample(e->oiio, e->linear, SAMPLE_WRAP_CLAMP_TO_EDGE, q, n, rgba, NULL, 0) == 0;
+    return render_scene_solid_sample(e->sc, 0, &e->smp, q, n, rgba, st);
+}
+
+/* One engine over one set: the untimed pass (texels per sample, the values
+ * into out when not NULL), then `runs` timed passes. */
+static int time_set(const vol_engine *e, const sample_query3 *q, size_t n, int runs, double *rate,
+                    double *texels, float *out)
 {
     float *rgba = malloc(sizeof *rgba * 4 * VOL_BATCH);
     sample_stats *st = malloc(sizeof *st * VOL_BATCH);
@@ -133,9 +156,10 @@ static int time_set(const render_scene *sc, const sample_sampler *smp, const sam
         double t0 = now_s();
         for (i = 0; ok && i < n; i += VOL_BATCH) {
             size_t m = n - i < VOL_BATCH ? n - i : VOL_BATCH;
-            ok = render_scene_solid_sample(sc, 0, smp, q + i, m, rgba, pass < 0 ? st : NULL);
-            if (pass < 0)
+            ok = engine_run(e, q + i, m, rgba, pass < 0 && !e->oiio ? st : NULL);
+            if (pass < 0 && !e->oiio)
                 for (k = 0; k < m; ++k) sum += st[k].texels;
+            if (pass < 0 && out) memcpy(out + 4 * i, rgba, sizeof *rgba * 4 * m);
         }
         if (pass >= 0) t[pass] = now_s() - t0;
     }
@@ -150,17 +174,66 @@ static int time_set(const render_scene *sc, const sample_sampler *smp, const sam
             t[pass - 1] = s;
         }
     *rate = (double)n / (runs % 2 ? t[runs / 2] : 0.5 * (t[runs / 2 - 1] + t[runs / 2]));
-    *texels = sum / (double)n;
+    *texels = e->oiio ? -1.0 : sum / (double)n;
     return 0;
 }
 
-int bench_volume(int size, size_t queries, int runs, int frame)
+/* The volume's base level as OpenImageIO's file `path`, opened; NULL with
+ * the reason in why. The caller removes the file once it is closed. */
+static oiio_vol *oiio_volume(const sample_texture *tex, const char *path, char *why, size_t len)
+{
+    sample_texture_info info;
+    float *px;
+    oiio_vol *v = NULL;
+    int i, j, k;
+    size_t at = 0;
+    sample_texture_info_get(tex, &info);
+    px = malloc(sizeof *px * 4 * (size_t)info.width * (size_t)info.height * (size_t)info.depth);
+    if (!px) {
+        snprintf(why, len, "out of memory");
+        return NULL;
+    }
+    for (k = 0; k < info.depth; ++k)
+        for (j = 0; j < info.height; ++j)
+            for (i = 0; i < info.width; ++i, at += 4) sample_texture_texel_layer(tex, 0, k, i, j, px + at);
+    if (oiio_vol_write(px, info.width, info.height, info.depth, path, why, len) == 0)
+        v = oiio_vol_open(path, why, len);
+    free(px);
+    return v;
+}
+
+/* Largest |a − b| over n RGBA results. */
+static double max_diff(const float *a, const float *b, size_t n)
+{
+    double m = 0.0;
+    size_t k;
+    for (k = 0; k < 4 * n; ++k)
+        if (fabs((double)a[k] - (double)b[k]) > m) m = fabs((double)a[k] - (double)b[k]);
+    return m;
+}
+
+static void print_row(const char *name, const vol_row *r, const char *note)
+{
+    char tx[2][16];
+    int s;
+    for (s = 0; s < 2; ++s) {
+        if (r->texels[s] < 0) snprintf(tx[s], sizeof tx[s], "-");
+        else snprintf(tx[s], sizeof tx[s], "%.1f", r->texels[s]);
+    }
+    printf("%-16s %14.2f %10s %14.2f %10s  %s\n", name, r->rate[0] * 1e-6, tx[0], r->rate[1] * 1e-6,
+           tx[1], note);
+}
+
+int bench_volume(int size, size_t queries, int runs, int frame, int oiio, const char *tmpdir)
 {
     render_scene *sc = NULL;
     sample_query3 *q[2] = {NULL, NULL};
+    float *ours[2][2] = {{NULL, NULL}, {NULL, NULL}}, *theirs[2] = {NULL, NULL};
     size_t n[2] = {queries, 0};
-    char err[512];
-    int f, s, rc = EXIT_RUNTIME;
+    char err[512], why[512] = "--no-oiio", path[1100] = "";
+    vol_engine e;
+    oiio_vol *ov = NULL;
+    int f, s, twin, rc = EXIT_RUNTIME;
     if (runs > VOL_MAX_RUNS) runs = VOL_MAX_RUNS;
     if (teapot_scene(size, frame, &sc, err, sizeof err) != 0) {
         cli_runtime_error("bench", "%s", err);
@@ -168,43 +241,74 @@ int bench_volume(int size, size_t queries, int runs, int frame)
     }
     q[0] = malloc(sizeof *q[0] * queries);
     q[1] = malloc(sizeof *q[1] * (size_t)frame * (size_t)frame);
+    for (s = 0; s < 2; ++s) {
+        size_t m = s ? (size_t)frame * (size_t)frame : queries;
+        theirs[s] = malloc(sizeof *theirs[s] * 4 * m);
+        ours[0][s] = malloc(sizeof *ours[0][s] * 4 * m);
+        ours[1][s] = malloc(sizeof *ours[1][s] * 4 * m);
+        if (!theirs[s] || !ours[0][s] || !ours[1][s]) q[s] = NULL;
+    }
     if (!q[0] || !q[1]) {
         cli_runtime_error("bench", "out of memory for the queries");
         goto done;
     }
     random_queries(size, q[0], n[0]);
     n[1] = teapot_queries(sc, frame, q[1]);
+    snprintf(path, sizeof path, "%s/bench_volume_%ld.tif", tmpdir, (long)getpid());
+    if (oiio) ov = oiio_volume(render_scene_texture(sc, 0), path, why, sizeof why);
     printf("3D texture %d x %d x %d float RGBA (box pyramid), 1 thread, median of %d runs\n"
            "random: %zu queries, 2.5 x 2.5-10 texels at random angles; teapot: the carved\n"
            "teapot's %d x %d frame, %zu queries\n\n",
            size, size, size, runs, n[0], frame, frame, n[1]);
     printf("%-16s %14s %10s %14s %10s\n", "filter", "random Msmp/s", "texels", "teapot Msmp/s",
            "texels");
+    memset(&e, 0, sizeof e);
+    e.sc = sc;
     for (f = 0; vol_filters[f]; ++f) {
         const tool_filter *tf = tool_filter_by_name(vol_filters[f]);
-        sample_sampler smp;
         vol_row row;
         if (!tf) continue;
-        sample_sampler_init(&smp);
-        tool_filter_apply(tf, &smp);
+        twin = f < 2 ? f : -1; /* nearest ~ closest, bilinear ~ linear */
+        sample_sampler_init(&e.smp);
+        tool_filter_apply(tf, &e.smp);
         for (s = 0; s < 2; ++s)
-            if (n[s] == 0) {
-                row.rate[s] = row.texels[s] = 0.0;
-            } else if (time_set(sc, &smp, q[s], n[s], runs, &row.rate[s], &row.texels[s]) != 0) {
+            if (time_set(&e, q[s], n[s], runs, &row.rate[s], &row.texels[s],
+                         twin >= 0 ? ours[twin][s] : NULL) != 0) {
                 cli_runtime_error("bench", "%s: sample_batch_3d failed", vol_filters[f]);
                 goto done;
             }
-        printf("%-16s %14.2f %10.1f %14.2f %10.1f\n", vol_filters[f], row.rate[0] * 1e-6,
-               row.texels[0], row.rate[1] * 1e-6, row.texels[1]);
+        print_row(vol_filters[f], &row, twin >= 0 ? "" : "(no OIIO twin: texture3d has no mip levels)");
     }
-    printf("%-16s %s\n", "oiio texture3d",
-           "not run: OpenImageIO's texture3d() filters a volume file's base level only\n"
-           "                 (closest or linear: no mip levels, no footprint), so it has\n"
-           "                 no twin of these rows; nor does this build write volume files");
+    for (twin = 0; twin < 2; ++twin) {
+        const char *name = twin ? "oiio linear" : "oiio closest";
+        vol_row row;
+        char note[96];
+        if (!ov) {
+            printf("%-16s not run: %s\n", name, why);
+            continue;
+        }
+        e.oiio = ov;
+        e.linear = twin;
+        for (s = 0; s < 2; ++s)
+            if (time_set(&e, q[s], n[s], runs, &row.rate[s], &row.texels[s], theirs[s]) != 0) {
+                cli_runtime_error("bench", "%s: OpenImageIO's texture3d failed", name);
+                goto done;
+            }
+        snprintf(note, sizeof note, "(twin of %s: largest difference %.2g)", vol_filters[twin],
+                 fmax(max_diff(theirs[0], ours[twin][0], n[0]), max_diff(theirs[1], ours[twin][1], n[1])));
+        print_row(name, &row, note);
+    }
     rc = EXIT_OK;
 done:
+    oiio_vol_close(ov);
+    if (oiio) remove(path); /* written even when OIIO would not read it */
     free(q[0]);
     free(q[1]);
+    for (s = 0; s < 2; ++s) {
+        free(theirs[s]);
+        free(ours[0][s]);
+        free(ours[1][s]);
+    }
     render_scene_destroy(sc);
     return rc;
 }
