@@ -7,8 +7,9 @@
  *   - the scene parses; the solid textures are 3D textures and a pixel on
  *     them asks a 3D query whose point is the hit's P in the box and whose
  *     columns are dP/dx, dP/dy scaled by the box (exact, as jacobian.c);
- *   - the truth is the procedural function at the surface point: a pixel's
- *     truth sample at its centre equals proc at P;
+ *   - the truth is the procedural function at the surface point, whatever
+ *     (s, t) says;
+ *   - the renderer's texture-only picture is that 3D lookup, bit for bit;
  *   - every filter gives finite values; trilinear, EWA, Blinn–Newell and
  *     anisotropic score below NEAREST (the aliasing the bake removes);
  *   - a "solid" block's bad keys and values are refused with a message.
@@ -106,6 +107,27 @@ static void solid_scene(void)
             ++checked;
         }
     CHECK(checked > 50, "%s", err_hint);
+    {
+        /* The renderer's own shading path (shade.c) asks the same query:
+         * its texture-only picture is the 3D lookup, bit for bit. */
+        render_options o;
+        render_image img;
+        sample_sampler smp;
+        size_t px, same = 0;
+        render_options_init(&o);
+        o.shade = RENDER_SHADE_TEXTURE;
+        render_scene_sampler(sc, &smp);
+        CHECK(render_image_run(sc, &o, &img, err, sizeof err) == 0, "%s", err);
+        for (px = 0; px < (size_t)v.w * (size_t)v.h; ++px) {
+            float want[4];
+            if (!cmp_view_3d(&v, v.tex[px])) continue;
+            CHECK(render_scene_solid_sample(sc, v.tex[px], &smp, &v.q3[px], 1, want, NULL), "%s", err_hint);
+            CHECK(memcmp(want, img.rgba + 4 * px, sizeof want) == 0, "pixel %zu", px);
+            ++same;
+        }
+        CHECK(same > 200, "%zu pixels on solids", same);
+        render_image_free(&img);
+    }
 
     CHECK(cmp_truth_build(&v, 8, 2, &t, err, sizeof err) == 0, "%s", err_hint);
     nearest = rmse_of(&v, &t, "nearest");
