@@ -5,7 +5,9 @@
  * exact texel counts of the filters whose cost is fixed (nearest 1,
  * bilinear 4, bicubic 16 on every query), and ratios exactly where an OIIO
  * twin exists; the instruction set it ran on (LIBSAMPLE_ISA) in the table
- * and the JSON; and a tiny --env run's table. No speed is asserted.
+ * and the JSON; a tiny --env run's table; and a tiny --volume run (a row
+ * per filter, texel counts of nearest 1 and trilinear 16, OpenImageIO's two
+ * texture3d rows). No speed is asserted.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -147,6 +149,31 @@ static void tiny_json(void)
     free(text);
 }
 
+/* bench --volume on a 16³ volume: the five rows and the OIIO line; NEAREST
+ * reads 1 texel, trilinear 16 (two levels of 8) on either set. */
+static void tiny_volume(void)
+{
+    char *out;
+    double a, b, c, d;
+    int rc = run("--volume --size 16 --queries 64 --runs 1 --frame 24");
+    CHECK(rc == 0, "--volume exits 0 (got %d)", rc);
+    out = check_slurp_in(dir, "out.txt");
+    CHECK(out != NULL, "table written");
+    if (!out) return;
+    CHECK(strstr(out, "3D texture 16 x 16 x 16") != NULL, "the volume's size");
+    CHECK(strstr(out, "\nnearest ") && strstr(out, "\naniso16 ") && strstr(out, "\nblinn-newell ") &&
+              strstr(out, "\newa "), "a row per filter");
+    CHECK(sscanf(strstr(out, "\nnearest ") + 9, "%lf %lf %lf %lf", &a, &b, &c, &d) == 4 && b == 1.0 &&
+              d == 1.0, "nearest reads 1 texel");
+    CHECK(sscanf(strstr(out, "\ntrilinear ") + 11, "%lf %lf %lf %lf", &a, &b, &c, &d) == 4 &&
+              b == 16.0 && d == 16.0, "trilinear reads 16 texels");
+    CHECK(strstr(out, "\noiio closest ") && strstr(out, "\noiio linear "),
+          "OpenImageIO's texture3d rows (timed, or why not)");
+    free(out);
+    CHECK(run("--volume --size 1024") == 2, "--volume --size over 512 exits 2");
+    CHECK(run("--volume --frame 0") == 2, "--frame 0 exits 2");
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -159,5 +186,6 @@ int main(int argc, char **argv)
     RUN(help_and_usage);
     RUN(tiny_json);
     RUN(tiny_env);
+    RUN(tiny_volume);
     return check_finish();
 }

@@ -185,6 +185,13 @@ typedef struct bench_env_opts {
     const char *filters, *tmpdir;
 } bench_env_opts;
 int bench_env(const bench_env_opts *o);
+/* ---- Volumes (volume.c) ---------------------------------------------- */
+
+/* bench --volume: 3D texture lookups of a size³ volume on one thread,
+ * random queries and the carved teapot's frame² picture, beside
+ * OpenImageIO's texture3d() (its file in tmpdir) unless oiio is 0;
+ * prints the table. Returns an exit code. */
+int bench_volume(int size, size_t queries, int runs, int frame, int oiio, const char *tmpdir);
 
 /* ---- Report (report.c) ------------------------------------------------ */
 

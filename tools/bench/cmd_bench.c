@@ -65,6 +65,9 @@ static const char help[] =
     "                     files (written even with --no-oiio) and manifest.json\n"
     "                     (layout, settings of both sides, 1-thread samples/s),\n"
     "                     for re-timing by tools/bench/oiio_replay\n"
+    ;
+/* The other kinds' runs (a second string: ISO C's limit on one literal). */
+static const char help_kinds[] =
     "  --env              environment lookups instead: libsample's lat-long map\n"
     "                     (--size x --size/2) and cube map (--size/4 faces) beside\n"
     "                     OpenImageIO's environment() on the lat-long map, on\n"
@@ -72,6 +75,16 @@ static const char help[] =
     "                     a mirror sphere's reflection frame (env-reflection);\n"
     "                     takes --size, --queries, --runs, --threads, --batch,\n"
     "                     --filters, --no-oiio, --tmpdir, --quick\n\n"
+    "  --volume           3D texture lookups instead (doc/volumes.md): a --size^3\n"
+    "                     volume (default 128) of baked wood, random queries\n"
+    "                     (--queries, default 65536) and the carved teapot's\n"
+    "                     frame; nearest, bilinear, trilinear, aniso16,\n"
+    "                     blinn-newell and ewa on 1 thread (--runs), beside\n"
+    "                     OpenImageIO's texture3d (closest, linear; not with\n"
+    "                     --no-oiio; its file in --tmpdir); --threads, --batch,\n"
+    "                     --sets, --formats, --filters, --cache-mb, --scalar,\n"
+    "                     --json and --save do not apply\n"
+    "  --frame N          the teapot frame's side with --volume (default 256)\n\n"
     "Filters:\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
@@ -79,6 +92,7 @@ enum { MAX_ENGINES = 32 };
 
 typedef struct bench_opts {
     int size, runs, threads, oiio, scalar, gl, env;
+    int volume, frame, size_given, queries_given; /* --volume and its options */
     float cache_mb; /* 0: resident textures, OIIO's default cache */
     const char *gl_device;
     size_t queries, batch;
@@ -141,12 +155,19 @@ static int parse_args(int argc, char **argv, bench_opts *o)
             o->scalar = 1;
         } else if (cli_opt(argc, argv, &i, "--env", NULL)) {
             o->env = 1;
+        } else if (cli_opt(argc, argv, &i, "--volume", NULL)) {
+            o->volume = 1;
+        } else if (cli_opt(argc, argv, &i, "--frame", &v)) {
+            if (parse_size("--frame", v, 1, 4096, &x)) return -1;
+            o->frame = (int)x;
         } else if (cli_opt(argc, argv, &i, "--size", &v)) {
             if (parse_size("--size", v, 16, SAMPLE_MAX_SIZE / 4, &x)) return -1;
             o->size = (int)x;
+            o->size_given = 1;
         } else if (cli_opt(argc, argv, &i, "--queries", &v)) {
             if (parse_size("--queries", v, 1, 1L << 26, &x)) return -1;
             o->queries = (size_t)x;
+            o->queries_given = 1;
         } else if (cli_opt(argc, argv, &i, "--runs", &v)) {
             if (parse_size("--runs", v, 1, 1000, &x)) return -1;
             o->runs = (int)x;
@@ -421,6 +442,7 @@ int cmd_bench(int argc, char **argv)
     for (i = 1; i < argc; ++i)
         if (cli_is_help(argv[i])) {
             fputs(help, stdout);
+            fputs(help_kinds, stdout);
             tool_picks_help(stdout, "  ", bench_default_filters, 0);
             fputs(help_tail, stdout);
             return EXIT_OK;
@@ -435,7 +457,18 @@ int cmd_bench(int argc, char **argv)
     b.o.sets = (1u << BENCH_SET_COUNT) - 1;
     b.o.formats = (1u << BENCH_FMT_COUNT) - 1;
     b.o.filters = "all";
-    if (parse_args(argc, argv, &b.o) != 0 || make_engines(&b) != 0) return EXIT_USAGE;
+    b.o.frame = 256;
+    if (parse_args(argc, argv, &b.o) != 0) return EXIT_USAGE;
+    if (b.o.volume && b.o.env) return cli_usage_error("bench", "--volume and --env are two different runs: give one");
+    if (b.o.volume) {
+        /* A volume of --size³ texels: 512³ float RGBA is already 2 GiB. */
+        if (b.o.size_given && b.o.size > 512)
+            return cli_usage_error("bench", "--volume: --size must be at most 512");
+        tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
+        return bench_volume(b.o.size_given ? b.o.size : 128, b.o.queries_given ? b.o.queries : 65536,
+                            b.o.runs, b.o.frame, b.o.oiio, tmp && *tmp ? tmp : "/tmp");
+    }
+    if (make_engines(&b) != 0) return EXIT_USAGE;
     if (b.o.env) {
         bench_env_opts eo;
         if (b.o.json || b.o.save || b.o.scalar || b.o.sets != (1u << BENCH_SET_COUNT) - 1 ||

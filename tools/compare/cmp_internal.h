@@ -71,15 +71,20 @@ typedef struct cmp_view {
     int *tex;              /* per pixel: texture index; −1 surface without texture; −2 background;
                               env_tex: a mirror of the environment */
     int env_tex;           /* the environment's index (the scene's texture count), −1 none */
-    sample_query3 *q3;     /* per pixel where tex is env_tex: reflected direction, exact derivatives */
     int *object;           /* per pixel: object hit at the centre, −1 background */
     sample_query *q;       /* per pixel: (s, t) and exact Jacobian at the centre */
+    sample_query3 *q3;     /* per pixel where tex is env_tex: the reflected direction and its
+                              exact derivatives; on a solid texture (cmp_view_3d): (s, t, r)
+                              in its volume and the exact dP/dx, dP/dy; NULL if the scene has
+                              neither */
     sample_quad *quad;     /* per pixel: exact corners, where quad_ok */
     unsigned char *quad_ok;
     float background[4];   /* linear RGBA for pixels (and truth samples) that miss */
     sample_sampler sampler; /* the scene's sampler */
 } cmp_view;
 
+/* 1 if the texture's queries are v->q3's (a solid texture's volume). */
+int cmp_view_3d(const cmp_view *v, int texture);
 /* Ray-cast every pixel centre and its corners. Returns 0 on success. */
 int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, size_t errlen);
 void cmp_view_free(cmp_view *v);
@@ -97,8 +102,9 @@ typedef struct cmp_result {
 
 /* An engine: filter n queries of one texture (quad: exact corners or NULL)
  * into n × 4 floats; stats may be NULL. For the environment (texture ==
- * env_tex) q is NULL and q3 holds the direction queries; else q3 is NULL.
- * Returns 0 on success. Called from many threads at once. */
+ * env_tex) and a solid texture (cmp_view_3d) q is NULL and q3 holds the
+ * direction or volume queries; else q3 is NULL. Returns 0 on success. Called from
+ * many threads at once. */
 typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
                             const sample_quad *quad, size_t n, float *rgba, sample_stats *stats);
 /* Run an engine over every textured pixel of the view, `runs` times (≥ 1)

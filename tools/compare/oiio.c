@@ -123,6 +123,14 @@ int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, in
     /* Only the textures some pixel uses. */
     for (px = 0; px < n; ++px) {
         k = v->tex[px];
+        if (k >= 0 && cmp_view_3d(v, k)) {
+            /* OpenImageIO's texture3d() reads volume files and filters
+             * their base level only (no mip filtering, no footprint):
+             * nothing to set beside these rows (bench --volume times it). */
+            snprintf(err, errlen, "%s: OpenImageIO's texture3d has no mip or footprint filtering "
+                                  "for a solid texture's volume", c->name);
+            goto out;
+        }
         if (k >= 0 && k < ntex && !ctx.tex[k] &&
             !(ctx.tex[k] = oiio_prepare(v, ctx.ts, k, workdir, err, errlen)))
             goto out;

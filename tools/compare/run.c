@@ -81,21 +81,20 @@ static void run_row(void *ctx, int j)
     for (t = 0; t < nt; ++t)
         /* pass 0: Jacobian only; pass 1: with exact corners (corner mode only). */
         for (pass = 0; pass < 2; ++pass) {
-            int n = 0;
+            int n = 0, three = list[t] == v->env_tex || cmp_view_3d(v, list[t]);
             double t0;
             for (i = 0; i < v->w; ++i) {
                 int with = jb->corners && v->quad_ok[base + (size_t)i];
                 if (tex[i] != list[t] || with != pass) continue;
-                if (list[t] == v->env_tex) q3[n] = v->q3[base + (size_t)i];
+                if (three) q3[n] = v->q3[base + (size_t)i];
                 else q[n] = v->q[base + (size_t)i];
                 if (with) quad[n] = v->quad[base + (size_t)i];
                 pix[n++] = i;
             }
             if (n == 0) continue;
             t0 = cmp_now();
-            if (jb->fn(jb->ctx, list[t], list[t] == v->env_tex ? NULL : q, list[t] == v->env_tex ? q3 : NULL,
-                       pass ? quad : NULL, (size_t)n, out,
-                       jb->stats ? st : NULL) != 0) {
+            if (jb->fn(jb->ctx, list[t], three ? NULL : q, three ? q3 : NULL, pass ? quad : NULL,
+                       (size_t)n, out, jb->stats ? st : NULL) != 0) {
                 jb->row_failed[j] = 1;
                 goto done;
             }
@@ -189,6 +188,8 @@ static int sample_fn(void *ctx, int texture, const sample_query *q, const sample
 {
     const sample_ctx *c = ctx;
     sample_batch_args a;
+    if (q3 && render_scene_texture_solid(c->sc, texture))
+        return render_scene_solid_sample(c->sc, texture, &c->smp, q3, n, rgba, stats) ? 0 : 1;
     if (q3) return render_scene_env_sample(c->sc, &c->smp, q3, n, rgba, stats) ? 0 : 1;
     memset(&a, 0, sizeof a);
     a.count = n;

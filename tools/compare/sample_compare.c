@@ -29,10 +29,10 @@ static int fn_batch(void *ctx, int texture, const sample_query *q, const sample_
     (void)quad;
     (void)stats;
     if (q3) {
-        /* An environment map's direction queries: a filter callback takes
-         * 2D queries (sample_measure.h). */
-        snprintf(c->err, sizeof c->err, "a filter callback samples 2D textures; this scene's environment map "
-                                        "takes direction queries");
+        /* An environment map's or a solid texture's 3D queries: a
+         * filter callback takes 2D queries (sample_measure.h). */
+        snprintf(c->err, sizeof c->err, "a filter callback takes 2D queries; this scene's environment map or "
+                                        "solid textures take 3D queries");
         return 1;
     }
     return c->f->fn(c->f->user, render_scene_texture(c->sc, texture), q, n, rgba, c->err, sizeof c->err) != 0;

@@ -13,7 +13,7 @@
 #include <string.h>
 
 const char *const cmp_scene_names[] = {"plane",         "teapot",      "teapot-image", "zoneplate",
-                                       "zoneplate-oblique", "photo-plane", "mirrors", NULL};
+                                       "zoneplate-oblique", "photo-plane", "mirrors", "solid", NULL};
 const char *const cmp_default_scenes[] = {"plane", "teapot", NULL};
 
 /* The renderer's teapot scenes (Fig. 10 of Blinn & Newell) look from the
@@ -81,11 +81,38 @@ static const char mirrors_json[] =
     "\"environment\":{\"type\":\"latlong\",\"size\":512},"
     "\"objects\":[{\"type\":\"teapot\",\"material\":\"mirror\"},"
     "{\"type\":\"sphere\",\"centre\":[3.1,1.6,1],\"radius\":1,\"material\":\"mirror\"}]}";
+/* Solid textures baked into 3D textures (doc/volumes.md, "Renderer"): a
+ * teapot carved from wood (rings around its z axis, 1 per half unit) and a
+ * smaller one from marble (Perlin's sin(x + turbulence)), each a 64³
+ * volume over its box (CLAMP_TO_EDGE), on a plane tilted through a 3D
+ * checker of unit cells to the horizon (a 64³ volume of 4³ cells,
+ * REPEAT). The wood's texels are means of 2³ samples; the checker's need
+ * one (16 texels per cell, none straddles a face) and the marble is
+ * smooth at this size, so one sample each keeps the bakes (most of the
+ * scene's setup, compare --scene all included) short. The truth evaluates
+ * the procedural functions at the exact surface points
+ * (render_scene_texture_truth). */
+static const char solid_json[] =
+    "{\"camera\":{\"eye\":[7.5,-9.5,4.2],\"look\":[1.6,1.2,0.9],\"up\":[0,0,1],\"fov\":40},"
+    "\"sampler\":{\"min\":\"linear_mipmap_linear\",\"mag\":\"linear\"},"
+    "\"textures\":["
+    "{\"name\":\"wood\",\"type\":\"wood\",\"freq\":2,\"amount\":3,\"a\":[0.62,0.38,0.17,1],"
+    "\"b\":[0.3,0.15,0.06,1],\"solid\":{\"min\":[-3.1,-2.1,-0.1],\"max\":[3.5,2.1,3.2]}},"
+    "{\"name\":\"marble\",\"type\":\"marble\",\"freq\":1,\"amount\":3,\"a\":[0.92,0.9,0.86,1],"
+    "\"b\":[0.2,0.22,0.3,1],\"solid\":{\"min\":[1.0,2.2,-0.1],\"max\":[5.6,5.2,2.3],\"samples\":1}},"
+    "{\"name\":\"checker\",\"type\":\"checker\",\"freq\":1,\"a\":[0.1,0.1,0.12,1],"
+    "\"b\":[0.85,0.85,0.8,1],\"solid\":{\"min\":[0,0,0],\"max\":[4,4,4],\"wrap\":\"repeat\",\"samples\":1}}],"
+    "\"materials\":[{\"name\":\"wood\",\"texture\":\"wood\"},{\"name\":\"marble\",\"texture\":\"marble\"},"
+    "{\"name\":\"checker\",\"texture\":\"checker\"}],"
+    "\"objects\":[{\"type\":\"teapot\",\"material\":\"wood\"},"
+    "{\"type\":\"teapot\",\"material\":\"marble\",\"scale\":0.7,\"offset\":[3.3,3.7,0]},"
+    "{\"type\":\"plane\",\"material\":\"checker\",\"centre\":[0,0,-0.35],\"axis\":[0.12,0.2,1]}]}";
 
 static const struct {
     const char *name, *json;
 } own_scenes[] = {
     {"mirrors", mirrors_json},
+    {"solid", solid_json},
     {"teapot", teapot_json},
     {"teapot-image", teapot_image_json},
     {"zoneplate", zoneplate_json},

@@ -33,6 +33,8 @@ static void view_row(void *ctx, int j)
             continue;
         }
         v->tex[px] = render_scene_material_texture(v->sc, h->material);
+        /* A solid texture asks for the surface point in its volume. */
+        if (v->q3 && render_scene_solid_query(v->sc, v->tex[px], h, &v->q3[px])) continue;
         q->s = (float)h->s;
         q->t = (float)h->t;
         q->dsdx = (float)h->J[0];
@@ -45,13 +47,18 @@ static void view_row(void *ctx, int j)
     }
 }
 
+int cmp_view_3d(const cmp_view *v, int texture)
+{
+    return render_scene_texture_solid(v->sc, texture);
+}
+
 int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, size_t errlen)
 {
     size_t n;
     /* Background: not a filtering question, so one neutral colour for every
      * scene, the same in the images and in the ground truth. */
     static const float bg[4] = {0.18f, 0.2f, 0.24f, 1.0f};
-    int k;
+    int k, want3;
     v->sc = sc;
     render_scene_size(sc, &v->w, &v->h);
     render_scene_sampler(sc, &v->sampler);
@@ -62,10 +69,12 @@ int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, 
     v->object = malloc(n * sizeof *v->object);
     v->q = calloc(n, sizeof *v->q);
     v->env_tex = render_scene_env(sc, NULL) ? render_scene_texture_count(sc) : -1;
-    v->q3 = v->env_tex >= 0 ? calloc(n, sizeof *v->q3) : NULL;
+    for (k = 0; k < render_scene_texture_count(sc) && !cmp_view_3d(v, k); ++k) {}
+    want3 = v->env_tex >= 0 || k < render_scene_texture_count(sc);
+    v->q3 = want3 ? calloc(n, sizeof *v->q3) : NULL;
     v->quad = calloc(n, sizeof *v->quad);
     v->quad_ok = calloc(n, 1);
-    if (!v->cache || !v->tex || !v->object || !v->q || !v->quad || !v->quad_ok || (v->env_tex >= 0 && !v->q3)) {
+    if (!v->cache || !v->tex || !v->object || !v->q || !v->quad || !v->quad_ok || (want3 && !v->q3)) {
         cmp_view_free(v);
         snprintf(err, errlen, "out of memory for a %d x %d view", v->w, v->h);
         return 1;

@@ -87,15 +87,20 @@ static double on_line(double x, double w)
     return (f < 0.5 * w || f >= 1.0 - 0.5 * w) ? 1.0 : 0.0;
 }
 
-static double pattern(const rn_texture *t, double s, double tt, const double P[3])
+/* The pattern at X: (s, t, 0) for a surface texture, the point P for a
+ * solid one (wood, or any kind with a "solid" block). The kinds that are
+ * functions of three coordinates (checker, noise, turbulence, marble, wood)
+ * read all of X, so a surface texture is their z = 0 slice. */
+static double pattern(const rn_texture *t, const double X[3])
 {
-    const double F = t->freq;
+    const double F = t->freq, s = X[0], tt = X[1], z = X[2];
     switch (t->kind) {
     case RN_TEX_GRID:
         /* Blinn–Newell Fig. 2: the parametric lines painted on. */
         return fmax(on_line(s * F, t->width), on_line(tt * F, t->width));
     case RN_TEX_CHECKER:
-        return (double)(((long long)floor(s * F) + (long long)floor(tt * F)) & 1);
+        return (double)(((long long)floor(s * F) + (long long)floor(tt * F) +
+                         (long long)floor(z * F)) & 1);
     case RN_TEX_TILES: {
         double i = floor(s * F), j = floor(tt * F);
         if (on_line(s * F, t->width) > 0.0 || on_line(tt * F, t->width) > 0.0) return 0.0;
@@ -110,19 +115,17 @@ static double pattern(const rn_texture *t, double s, double tt, const double P[3
         return 1.0;
     }
     case RN_TEX_NOISE:
-        return 0.5 + 0.5 * noise3(&t->noise, s * F, tt * F, 0.0);
+        return 0.5 + 0.5 * noise3(&t->noise, s * F, tt * F, z * F);
     case RN_TEX_TURBULENCE:
-        return fmin(1.0, turbulence3(&t->noise, s * F, tt * F, 0.0, t->octaves));
+        return fmin(1.0, turbulence3(&t->noise, s * F, tt * F, z * F, t->octaves));
     case RN_TEX_MARBLE:
         /* Perlin 1985: marble = sin(x + turbulence). */
         return 0.5 + 0.5 * sin(2.0 * RN_PI * s * F +
-                               t->amount * turbulence3(&t->noise, s * F, tt * F, 0.0, t->octaves));
+                               t->amount * turbulence3(&t->noise, s * F, tt * F, z * F, t->octaves));
     case RN_TEX_SOLID: {
         /* Wood (Peachey 1985, Perlin 1985): rings around the z axis of the
-         * solid, perturbed by noise; a 3-D texture, the (s, t, 0) slice when
-         * no position is given. */
-        double x = P ? P[0] : s, y = P ? P[1] : tt, z = P ? P[2] : 0.0;
-        double r = sqrt(x * x + y * y) * F + 0.3 * t->amount * noise3(&t->noise, x * F, y * F, z * F);
+         * solid, perturbed by noise. */
+        double r = sqrt(s * s + tt * tt) * F + 0.3 * t->amount * noise3(&t->noise, s * F, tt * F, z * F);
         return frac(r);
     }
     case RN_TEX_FOURIER: {
@@ -147,8 +150,10 @@ static double pattern(const rn_texture *t, double s, double tt, const double P[3
 
 void proc_eval(const rn_texture *t, double s, double t_, const double P[3], float out[4])
 {
-    double v = pattern(t, s, t_, t->kind == RN_TEX_SOLID ? P : NULL);
+    double X[3] = {s, t_, 0.0}, v;
     int c;
+    if (P && (t->kind == RN_TEX_SOLID || t->solid.on)) memcpy(X, P, sizeof X);
+    v = pattern(t, X);
     for (c = 0; c < 4; ++c) out[c] = (float)(t->a[c] + v * (t->b[c] - t->a[c]));
 }
 
@@ -166,8 +171,11 @@ int proc_bake(rn_texture *t, char *err, size_t errlen)
     }
     if (t->kind == RN_TEX_NOISE || t->kind == RN_TEX_TURBULENCE || t->kind == RN_TEX_MARBLE ||
         t->kind == RN_TEX_SOLID)
-        noise_init(&t->noise, t->seed, (int)t->freq);
+        /* A surface texture's lattice repeats once over the unit square
+         * (seamless tiling); a solid's does not repeat within 256 cells. */
+        noise_init(&t->noise, t->seed, t->solid.on ? 0 : (int)t->freq);
     if (t->kind == RN_TEX_FOURIER) fourier_spectrum(t);
+    if (t->solid.on) return solid_bake(t, err, errlen);
     px = malloc(sizeof *px * 4 * (size_t)n * (size_t)n);
     if (!px) {
         rn_seterr(err, errlen, "out of memory baking a %d x %d texture", n, n);

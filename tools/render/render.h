@@ -74,7 +74,9 @@ typedef struct render_parse_options {
     int images;           /* 1 (default): load image textures; 0: refuse them */
     /* Procedural evaluations when baking: Σ size²·samples² over textures
      * (times the terms of a Fourier texture, each a cosine as costly as a
-     * whole sample of the others), plus 4 per environment-map texel.
+     * whole sample of the others), size³·samples³ over solid textures
+     * (times the octaves of turbulence and marble), plus 4 per
+     * environment-map texel.
      * Default RENDER_MAX_BAKE_WORK. */
     double max_bake_work;
     /* Base-level texels of all textures and maps together (image textures
@@ -162,7 +164,8 @@ int render_cache_hit(const render_cache *c, double x, double y, render_hit *hit)
 int render_scene_material_texture(const render_scene *sc, int material);
 int render_scene_texture_count(const render_scene *sc);
 /* The texture as libsample sees it (procedural textures baked, 256 × 256
- * unless the scene says otherwise); never NULL for a valid index. */
+ * unless the scene says otherwise; a solid texture's is its 3D texture,
+ * render_scene_texture_solid); never NULL for a valid index. */
 const sample_texture *render_scene_texture(const render_scene *sc, int texture);
 /* Exact value of a procedural texture at (s, t) (and world position P for
  * solid textures; may be NULL, then (s, t, 0) is used). Returns 1 if the
@@ -194,6 +197,20 @@ const sample_texture *render_scene_env(const render_scene *sc, int *cube);
  * the exact reflected direction at that point, unscaled by the strength.
  * 0 if the hit does not reflect it. */
 int render_scene_env_truth(const render_scene *sc, const render_hit *h, float out[4]);
+/* ---- Solid textures (doc/volumes.md, "Renderer") -------------------- */
+
+/* 1 if the texture is a solid texture baked into a 3D texture (its
+ * render_scene_texture is then SAMPLE_TEXTURE_3D). */
+int render_scene_texture_solid(const render_scene *sc, int texture);
+/* The volume query of a hit on such a texture: (s, t, r) of the surface
+ * point P in the solid's box and the columns dP/dx, dP/dy of the exact ray
+ * differentials in the same units. 0 if the texture is not a baked solid. */
+int render_scene_solid_query(const render_scene *sc, int texture, const render_hit *h,
+                             sample_query3 *q);
+/* n such queries through sample_batch_3d with smp's filters and the
+ * solid's own wrap mode on s, t and r; 1 on success. */
+int render_scene_solid_sample(const render_scene *sc, int texture, const sample_sampler *smp,
+                              const sample_query3 *q, size_t n, float *rgba, sample_stats *stats);
 
 /* ---- Rendering ------------------------------------------------------ */
 

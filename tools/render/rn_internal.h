@@ -9,6 +9,7 @@
  *   jacobian.c      exact d(s,t)/d(x,y), normals and their derivatives
  *   hit.c           visible-surface search over objects, corners, cache
  *   proc.c          procedural textures (exact functions) and baking
+ *   solid.c         solid textures baked into 3D textures, their lookups
  *   imagetex.c      image textures through libsample_io
  *   noise.c         Perlin gradient noise, periodic, seeded
  *   envmap.c        lat-long and cube environment maps, reflection lookup
@@ -194,6 +195,19 @@ double noise3(const rn_noise *n, double x, double y, double z);
 /* Σ_k |noise(2^k p)| / 2^k, k < octaves (Perlin 1985 turbulence). */
 double turbulence3(const rn_noise *n, double x, double y, double z, int octaves);
 
+/* A solid texture (doc/volumes.md, "Renderer"): the pattern is a function
+ * of the surface point P in world space (where the objects are placed;
+ * the scene's object space), baked over the box [lo, hi] into a
+ * size[0] × size[1] × size[2] 3D texture, (s, t, r) = (P − lo)/(hi − lo). */
+typedef struct rn_solid {
+    int on;              /* 1: the texture has a "solid" block */
+    double lo[3], hi[3];
+    int size[3];
+    int samples;         /* samples³ box samples per texel */
+    sample_mipgen mip;   /* the pyramid's filter */
+    sample_wrap wrap;    /* on s, t and r of the volume */
+} rn_solid;
+
 typedef struct rn_texture {
     rn_tex_kind kind;
     float a[4], b[4];   /* the two colours a procedural pattern blends */
@@ -212,6 +226,7 @@ typedef struct rn_texture {
     char path[512];      /* image textures: "file" as written in the scene */
     char colorspace[64]; /* image textures: OCIO name, "" = by file and rule */
     unsigned use;        /* RN_USE_*: what the materials use it for */
+    rn_solid solid;      /* a solid texture baked into a 3D texture (solid.c) */
 } rn_texture;
 
 /* How materials use a texture: colour (an image's grey broadcast to RGB,
@@ -225,6 +240,15 @@ void proc_defaults(rn_texture *t, rn_tex_kind kind);
 void proc_eval(const rn_texture *t, double s, double t_, const double P[3], float out[4]);
 /* Bake a procedural texture into t->tex (bake_samples² box per texel). */
 int proc_bake(rn_texture *t, char *err, size_t errlen);
+/* Solid textures (solid.c): defaults of a "solid" block; the bake into
+ * t->tex (a 3D texture); the volume query of a hit (0 if t is not a baked
+ * solid); n queries through the volume with smp's filters and the solid's
+ * wrap mode on all three axes (1 on success). */
+void solid_defaults(rn_solid *s);
+int solid_bake(rn_texture *t, char *err, size_t errlen);
+int solid_query(const rn_texture *t, const render_hit *h, sample_query3 *q);
+int solid_sample(const rn_texture *t, const sample_sampler *smp, const sample_query3 *q, size_t n,
+                 float *rgba, sample_stats *stats);
 /* Read an image texture into t->tex (imagetex.c): t->path relative to
  * base_dir (NULL: as given), refused if it holds more than max_texels
  * (base level); *texels gets its base-level texel count. By t->use: data

@@ -349,7 +349,50 @@ static const char *const image_keys[] = {"name", "type", "file", "colorspace", "
                                          NULL};
 static const char *const proc_keys[] = {"name",    "type", "freq",  "width", "octaves",
                                         "amount",  "seed", "size",  "samples", "terms",
-                                        "a",       "b",    NULL};
+                                        "a",       "b",    "solid", NULL};
+
+/* A procedural texture's "solid" block (doc/volumes.md, "Renderer"): the
+ * pattern as a function of the surface point, baked into a 3D texture over
+ * the box [min, max] of world space, size³ texels of samples³ box samples
+ * each, its pyramid built by "mip", read with "wrap" on all three axes. */
+static int parse_solid(jctx *c, uint32_t tex, rn_texture *t)
+{
+    static const char *const keys[] = {"min", "max", "size", "samples", "mip", "wrap", NULL};
+    uint32_t o;
+    rn_solid *so = &t->solid;
+    const char *mip;
+    double n, cost;
+    int k, size = 64, e;
+    if (!jobj(c, tex, "solid", &o)) return 0;
+    if (t->kind != RN_TEX_CHECKER && t->kind != RN_TEX_NOISE && t->kind != RN_TEX_TURBULENCE &&
+        t->kind != RN_TEX_MARBLE && t->kind != RN_TEX_SOLID)
+        return jfail(c, o, "'solid' applies to checker, noise, turbulence, marble and wood textures");
+    if (rn_json_get(c->j, tex, "size") != RN_JNONE || rn_json_get(c->j, tex, "samples") != RN_JNONE)
+        return jfail(c, o, "a solid texture's bake is given in 'solid' ('size', 'samples')");
+    solid_defaults(so);
+    so->on = 1;
+    if (!jkeys(c, o, keys, NULL, "'solid'") || !jvec(c, o, "min", 3, so->lo) ||
+        !jvec(c, o, "max", 3, so->hi) || !jint(c, o, "size", 1, 512, &size) ||
+        !jint(c, o, "samples", 1, 8, &so->samples) || !jstr(c, o, "mip", &mip) ||
+        !jwrap(c, o, "wrap", &so->wrap))
+        return 0;
+    for (k = 0; k < 3; ++k) {
+        if (!(so->hi[k] > so->lo[k]))
+            return jfail(c, o, "'solid': 'max' must exceed 'min' on every axis");
+        so->size[k] = size;
+    }
+    if (mip) {
+        if ((e = sample_mipgen_parse(mip)) < 0)
+            return jfail(c, rn_json_get(c->j, o, "mip"), "'mip' must name a mip filter (box, ...)");
+        so->mip = (sample_mipgen)e;
+    }
+    /* Noise evaluations per sample: one, or one per octave of turbulence. */
+    cost = t->kind == RN_TEX_TURBULENCE || t->kind == RN_TEX_MARBLE ? t->octaves : 1;
+    n = (double)size * size * size;
+    if (!budget(c, o, "solid texture", n, n * so->samples * so->samples * so->samples * cost))
+        return 0;
+    return scene_add_texture(c->sc, t) ? 1 : jfail(c, tex, "out of memory");
+}
 
 static int parse_texture(jctx *c, uint32_t o)
 {
@@ -360,6 +403,7 @@ static int parse_texture(jctx *c, uint32_t o)
     if (!jstr(c, o, "type", &type)) return 0;
     for (k = 0; type && k < RN_TEX_KIND_COUNT; ++k)
         if (strcmp(type, rn_tex_kind_names[k]) == 0) kind = k;
+    if (type && strcmp(type, "wood") == 0) kind = RN_TEX_SOLID; /* the solid kind's own name */
     if (kind < 0)
         return jfail(c, type ? rn_json_get(c->j, o, "type") : o, "texture type '%.40s' unknown",
                      type ? type : "(missing)");
@@ -386,6 +430,7 @@ static int parse_texture(jctx *c, uint32_t o)
         !jcolor(c, o, "b", 4, t.b))
         return 0;
     t.seed = (uint32_t)d;
+    if (rn_json_get(c->j, o, "solid") != RN_JNONE) return parse_solid(c, o, &t);
     if (kind == RN_TEX_NOISE || kind == RN_TEX_TURBULENCE || kind == RN_TEX_MARBLE ||
         kind == RN_TEX_FOURIER)
         t.freq = floor(t.freq); /* integer periods: seamless tiling */
@@ -408,6 +453,9 @@ static int jtexref(jctx *c, uint32_t o, const char *key, unsigned use, int *out)
     if (*out < 0) return 1;
     t = &c->sc->tex[*out];
     t->use |= use;
+    if (t->solid.on && use == RN_USE_DATA)
+        return jfail(c, rn_json_get(c->j, o, key),
+                     "a solid texture is a colour texture, not a bump or normal map");
     if (t->kind == RN_TEX_IMAGE && !t->colorspace[0] && t->use == (RN_USE_COLOUR | RN_USE_DATA))
         return jfail(c, rn_json_get(c->j, o, key),
                      "image texture '%.40s' is used as colour and as data (bump, normal_map): "

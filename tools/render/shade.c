@@ -101,7 +101,11 @@ void shade_hit(const render_scene *sc, const render_options *o, const render_hit
     int k, l;
     if (m->texture >= 0) {
         const rn_texture *tx = &sc->tex[m->texture];
-        if (tx->kind == RN_TEX_SOLID && o->shade == RENDER_SHADE_FULL)
+        sample_query3 q3;
+        if (solid_query(tx, h, &q3)) {
+            /* A baked solid: filtered over the footprint in the volume. */
+            if (!solid_sample(tx, smp, &q3, 1, T, stats)) T[0] = T[1] = T[2] = 0.0f;
+        } else if (tx->kind == RN_TEX_SOLID && o->shade == RENDER_SHADE_FULL)
             proc_eval(tx, h->s, h->t, h->P, T); /* solid: exact at P, unfiltered */
         else if (!tex_lookup(tx->tex, smp, h, quad, T, NULL, NULL, stats))
             T[0] = T[1] = T[2] = 0.0f;
