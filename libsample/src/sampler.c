@@ -24,6 +24,7 @@ void sample_sampler_init(sample_sampler *s)
     s->max_lod_bias = 16.0f;
     s->footprint = SAMPLE_FOOTPRINT_NONE;
     s->cubic = SAMPLE_CUBIC_CATMULL_ROM;
+    s->ewa_kernel = SAMPLE_EWA_GAUSSIAN;
 }
 
 void sample_mip_params_init(sample_mip_params *p)
@@ -43,7 +44,8 @@ sample_status sample_sampler_validate(const sample_sampler *s)
     if ((unsigned)s->min_filter >= SAMPLE_FILTER_COUNT) return SAMPLE_E_INVALID_ARGUMENT;
     if (s->mag_filter != SAMPLE_NEAREST && s->mag_filter != SAMPLE_LINEAR && s->mag_filter != SAMPLE_CUBIC)
         return SAMPLE_E_INVALID_ARGUMENT;
-    if ((unsigned)s->footprint >= SAMPLE_FOOTPRINT_COUNT || (unsigned)s->cubic >= SAMPLE_CUBIC_COUNT)
+    if ((unsigned)s->footprint >= SAMPLE_FOOTPRINT_COUNT || (unsigned)s->cubic >= SAMPLE_CUBIC_COUNT ||
+        (unsigned)s->ewa_kernel >= SAMPLE_EWA_KERNEL_COUNT)
         return SAMPLE_E_INVALID_ARGUMENT;
     /* NaN fails every comparison below, so it is rejected too. */
     if (!(s->max_anisotropy >= 1.0f) || !isfinite(s->max_anisotropy)) return SAMPLE_E_INVALID_ARGUMENT;

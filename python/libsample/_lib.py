@@ -101,7 +101,8 @@ class SamplerState(ctypes.Structure):
                 ("min_lod", ctypes.c_float), ("max_lod", ctypes.c_float),
                 ("base_level", ctypes.c_int), ("max_level", ctypes.c_int),
                 ("max_anisotropy", ctypes.c_float), ("max_lod_bias", ctypes.c_float),
-                ("footprint", ctypes.c_int), ("cubic", ctypes.c_int), ("options", ctypes.c_uint)]
+                ("footprint", ctypes.c_int), ("cubic", ctypes.c_int), ("options", ctypes.c_uint),
+                ("ewa_kernel", ctypes.c_int)]
 
 
 class Query(ctypes.Structure):

@@ -286,6 +286,20 @@ typedef enum sample_footprint {
     SAMPLE_FOOTPRINT_COUNT
 } sample_footprint;
 
+/* The radial weight of the EWA footprint filter (doc/footprint-filters.md,
+ * "Radial kernels"), as a function of the distance r from the centre in
+ * pixels (r = 1 on the ellipse of conjugate semi-axes dPdx, dPdy, widened by
+ * Heckbert's reconstruction term), normalised by the weights' sum. The
+ * sharp kernels have negative lobes (SAMPLE_OPT_EWA_CLAMP bounds their
+ * ringing) and run on the reference path's per-texel walk. */
+typedef enum sample_ewa_kernel {
+    SAMPLE_EWA_GAUSSIAN = 0, /* e^(−2r²) − e^(−2), r < 1 (Heckbert, pbrt-v4) */
+    SAMPLE_EWA_LANCZOS2 = 1, /* sinc(r)·sinc(r/2), r < 2 */
+    SAMPLE_EWA_LANCZOS3 = 2, /* sinc(r)·sinc(r/3), r < 3 */
+    SAMPLE_EWA_MITCHELL = 3, /* Mitchell–Netravali cubic, B = C = ⅓, r < 2 */
+    SAMPLE_EWA_KERNEL_COUNT
+} sample_ewa_kernel;
+
 /* Options that change a specified behaviour; all off by default. */
 enum {
     /* Pre-4.5 rule: switch-over c = 0.5 when mag is LINEAR and min is
@@ -301,6 +315,9 @@ enum {
     /* 1u << 4 is reserved. */
     /* Blinn–Newell corners: texel weight pyramid / |det| of the quad map (screen-space integral). */
     SAMPLE_OPT_BN_AREA_WEIGHT = 1u << 5,
+    /* EWA with a kernel that has negative lobes: clamp each channel to the
+     * range of the texels in the kernel's support, level by level. */
+    SAMPLE_OPT_EWA_CLAMP = 1u << 6,
 };
 
 typedef struct sample_sampler {
@@ -317,6 +334,7 @@ typedef struct sample_sampler {
     sample_footprint footprint;   /* default NONE */
     sample_cubic cubic;           /* default CATMULL_ROM */
     unsigned options;             /* SAMPLE_OPT_* */
+    sample_ewa_kernel ewa_kernel; /* EWA's radial weight; default GAUSSIAN */
 } sample_sampler;
 
 /* OpenGL's initial sampler-object state (GL 4.6 table 23.18). */
@@ -438,6 +456,8 @@ SAMPLE_API const char *sample_cubic_name(sample_cubic cubic);
 SAMPLE_API int sample_cubic_parse(const char *name);
 SAMPLE_API const char *sample_footprint_name(sample_footprint footprint);
 SAMPLE_API int sample_footprint_parse(const char *name);
+SAMPLE_API const char *sample_ewa_kernel_name(sample_ewa_kernel kernel); /* "gaussian", "lanczos2", … */
+SAMPLE_API int sample_ewa_kernel_parse(const char *name);
 SAMPLE_API const char *sample_mipgen_name(sample_mipgen mipgen);
 SAMPLE_API int sample_mipgen_parse(const char *name);
 SAMPLE_API const char *sample_format_name(sample_format format);
