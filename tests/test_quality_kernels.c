@@ -42,7 +42,7 @@ static void names_and_validation(void)
 
 /* A constant texture comes back exactly (double sums; negative lobes
  * included), for every kernel, with and without the clamp, four wraps,
- * 12 footprints each. */
+ * 30 footprints each. */
 static void constant_exact(void)
 {
     static const sample_wrap wraps[] = {SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_MIRRORED_REPEAT,
@@ -57,7 +57,7 @@ static void constant_exact(void)
                 s.wrap_s = wraps[w];
                 s.wrap_t = wraps[(w + 1) & 3];
                 c = ctx_for(t, &s);
-                for (n = 0; n < 12; ++n) {
+                for (n = 0; n < 30; ++n) {
                     /* Up to 2^7 texels: the support still fits the cap on
                      * the 1 × 1 level (beyond, the float bilinear fallback). */
                     double a = exp2(urand(-3, 7)), b = a * exp2(urand(-6, 0));

@@ -77,6 +77,7 @@ typedef struct ewa_level_geom {
 typedef struct ewa_geom {
     const fp_radial *kern; /* NULL: the Gaussian */
     int clamp;             /* SAMPLE_OPT_EWA_CLAMP with a kernel */
+    double recon;          /* the kernel's reconstruction term */
     float s, t;
     double J[2][2];       /* rows (s, t), columns (x, y); one pixel, normalized */
     fp_shape base;        /* of J on the base level (the level choice's) */
@@ -87,7 +88,7 @@ static double ewa_span_fn(const void *lg, double dv, double *ilo);
 
 static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_level_geom *e)
 {
-    double J[2][2], A, B, C, F, u0, v0, a, cc;
+    double J[2][2], A, B, C, F, u0, v0, a, cc, rc;
     fp_shape d;
     int tr, fs, ft;
 
@@ -101,10 +102,14 @@ static void ewa_level_setup(const sample_ctx *c, const ewa_geom *g, int lv, ewa_
     if (d.clamped) ls_fp_shape_reshape(&d, 0.0, J);
     fp_level_scale(c, lv, fs, ft, &e->ku, &e->kv);
 
-    /* Ellipse coefficients with the unit-variance term, scaled to F = 1. */
-    A = J[1][0] * J[1][0] + J[1][1] * J[1][1] + 1.0;
+    /* Ellipse coefficients with the unit-variance term, scaled to F = 1.
+     * A kernel's own term is at least what widens the minor semi-axis to
+     * one texel: its main lobe (r < 1) then holds the nearest texels, and
+     * a small footprint's sum stays positive despite the negative lobes. */
+    rc = g->kern ? fmax(g->recon, 1.0 - d.s[1] * d.s[1]) : 1.0;
+    A = J[1][0] * J[1][0] + J[1][1] * J[1][1] + rc;
     B = -2.0 * (J[0][0] * J[1][0] + J[0][1] * J[1][1]);
-    C = J[0][0] * J[0][0] + J[0][1] * J[0][1] + 1.0;
+    C = J[0][0] * J[0][0] + J[0][1] * J[0][1] + rc;
     F = A * C - 0.25 * B * B;
     /* Extents: the inverse of the normalized quadratic form is
      * [[C, −B/2], [−B/2, A]] before scaling, so |dv| ≤ √A and |du| ≤ √C.
@@ -287,7 +292,11 @@ void ls_fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias,
     minor = g->base.s[1];
     /* A kernel's own rule: the minor semi-axis spans
      * ls_fp_radial_minor texels instead of FP_MINOR_TEXELS. */
-    if (g->kern) minor *= FP_MINOR_TEXELS / ls_fp_radial_minor(g->kern, g->base.s[0] / g->base.s[1]);
+    if (g->kern) {
+        const double t = ls_fp_radial_minor(g->kern, g->base.s[0] / g->base.s[1]);
+        minor *= FP_MINOR_TEXELS / t;
+        g->recon = ls_fp_radial_recon(g->kern, t);
+    }
     ls_fp_run_count(c, g, ewa_level, minor, g->s, g->t, call_bias, &pl->rs);
 }
 
