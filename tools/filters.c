@@ -49,6 +49,10 @@ const tool_filter tool_filters[] = {
     {.label = "EWA",
      .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
      .footprint = SAMPLE_FOOTPRINT_EWA},
+    /* EWA's ellipse by Gaussian-weighted trilinear probes (Feline). */
+    {.label = "Feline (EWA by trilinear probes)",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_FELINE},
     /* EWA with sharper radial kernels (doc/footprint-filters.md, "Radial
      * kernels"); the clamped row bounds Lanczos-3's ringing. */
     {.name = "ewa-lanczos2", .label = "EWA, Lanczos-2",

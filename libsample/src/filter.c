@@ -4,6 +4,7 @@
  * once in footprint_filters below.
  */
 #include "filter.h"
+#include "footprint_feline.h"
 
 uint32_t ls_filter_gl_levels(const sample_ctx *c, const sample_query *q, float lam, const lod_choice *ch,
                           float out[4], float dds[4], float ddt[4], sample_stats *st)
@@ -45,11 +46,19 @@ static uint32_t footprint_ewa(const sample_ctx *c, const sample_query *q, const 
     return ls_fp_ewa(c, q, call_bias, out, dds, ddt, st);
 }
 
+static uint32_t footprint_feline(const sample_ctx *c, const sample_query *q, const sample_quad *corners,
+                                 float call_bias, float out[4], float dds[4], float ddt[4], sample_stats *st)
+{
+    (void)corners; /* the ellipse is the Jacobian's */
+    return ls_fp_feline(c, q, call_bias, out, dds, ddt, st);
+}
+
 static const footprint_fn footprint_filters[] = {
     [SAMPLE_FOOTPRINT_NONE] = NULL,
     [SAMPLE_FOOTPRINT_ANISOTROPIC] = footprint_aniso,
     [SAMPLE_FOOTPRINT_BLINN_NEWELL] = ls_fp_blinn_newell,
     [SAMPLE_FOOTPRINT_EWA] = footprint_ewa,
+    [SAMPLE_FOOTPRINT_FELINE] = footprint_feline,
 };
 _Static_assert(sizeof footprint_filters / sizeof footprint_filters[0] == SAMPLE_FOOTPRINT_COUNT,
                "one entry per footprint filter");

@@ -56,6 +56,7 @@ static const char *const footprint_names[] = {
     [SAMPLE_FOOTPRINT_ANISOTROPIC] = "aniso",
     [SAMPLE_FOOTPRINT_BLINN_NEWELL] = "blinn-newell",
     [SAMPLE_FOOTPRINT_EWA] = "ewa",
+    [SAMPLE_FOOTPRINT_FELINE] = "feline",
 };
 _Static_assert(COUNT_OF(footprint_names) == SAMPLE_FOOTPRINT_COUNT, "footprint_names");
 

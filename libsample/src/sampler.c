@@ -119,7 +119,9 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
      * path's bit for bit (texel.h, struct ls_texel_source). */
     ls_ctx_init(&c, tex, smp, tex_resident(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
-    if (fast)
+    /* Feline has no fast-path kernel: its probes run the reference path
+     * (the same bilinear reads; doc/footprint-filters.md). */
+    if (fast && smp->footprint != SAMPLE_FOOTPRINT_FELINE)
         fast(&c, a);
     else
         reference_batch(&c, a);

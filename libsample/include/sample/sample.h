@@ -283,6 +283,7 @@ typedef enum sample_footprint {
     SAMPLE_FOOTPRINT_ANISOTROPIC = 1,  /* GPU-style probes (EXT_texture_filter_anisotropic) */
     SAMPLE_FOOTPRINT_BLINN_NEWELL = 2, /* pyramid-weighted quadrilateral (1976) */
     SAMPLE_FOOTPRINT_EWA = 3,          /* elliptical Gaussian (Heckbert 1989, pbrt-v4) */
+    SAMPLE_FOOTPRINT_FELINE = 4,       /* EWA's ellipse by weighted trilinear probes (McCormack 1999) */
     SAMPLE_FOOTPRINT_COUNT
 } sample_footprint;
 
