@@ -38,7 +38,7 @@ static void constant(void)
             sample_query q = footprint((float)urand(-2, 3), (float)urand(-2, 3), a, b, urand(0, 6.3), urand(0, 6.3),
                                        37, 20);
             float out[4];
-            ls_fp_feline(&c, &q, 0.0f, out, NULL, NULL, NULL);
+            ls_fp_feline(&c, &q, 0.0f, NULL, out, NULL, NULL, NULL);
             for (k = 0; k < 4; ++k) {
                 float want = k == 3 ? 1.0f : 0.3f + 0.1f * k;
                 CHECK_NEAR(out[k], want, 2.0 * 6e-8 * want);
@@ -64,9 +64,9 @@ static void column_symmetry(void)
         float o[4], os[4], on[4];
         qs.dsdx = q.dsdy, qs.dtdx = q.dtdy, qs.dsdy = q.dsdx, qs.dtdy = q.dtdx;
         qn.dsdy = -q.dsdy, qn.dtdy = -q.dtdy;
-        ls_fp_feline(&c, &q, 0.0f, o, NULL, NULL, NULL);
-        ls_fp_feline(&c, &qs, 0.0f, os, NULL, NULL, NULL);
-        ls_fp_feline(&c, &qn, 0.0f, on, NULL, NULL, NULL);
+        ls_fp_feline(&c, &q, 0.0f, NULL, o, NULL, NULL, NULL);
+        ls_fp_feline(&c, &qs, 0.0f, NULL, os, NULL, NULL, NULL);
+        ls_fp_feline(&c, &qn, 0.0f, NULL, on, NULL, NULL, NULL);
         for (k = 0; k < 4; ++k) worst = fmax(worst, fmax(fabs(o[k] - os[k]), fabs(o[k] - on[k])));
     }
     CHECK(worst <= 1e-5, "column swap / sign flip changed a result by %.3g", worst);
@@ -90,7 +90,7 @@ static void round_is_trilinear(void)
         sample_query q = footprint((float)urand(0, 1), (float)urand(0, 1), a, a, urand(0, 6.3), 0.0, 64, 64);
         float o[4], g[4];
         sample_stats st;
-        uint32_t texels = ls_fp_feline(&c, &q, 0.0f, o, NULL, NULL, &st);
+        uint32_t texels = ls_fp_feline(&c, &q, 0.0f, NULL, o, NULL, NULL, &st);
         CHECK(sample_one(t, &tri, &q, g) == SAMPLE_OK, "trilinear");
         for (k = 0; k < 4; ++k) worst = fmax(worst, fabs(o[k] - g[k]));
         CHECK(texels <= 8, "round footprint read %u texels", texels);
@@ -116,10 +116,10 @@ static void probes_and_cap(void)
     sample_query q = footprint(0.5f, 0.5f, 24.0, 3.0, 0.3, 0.0, 256, 128);
     float o[4];
     int n, k, bad = 0, over = 0;
-    uint32_t texels = ls_fp_feline(&c, &q, 0.0f, o, NULL, NULL, NULL);
+    uint32_t texels = ls_fp_feline(&c, &q, 0.0f, NULL, o, NULL, NULL, NULL);
     CHECK(texels == 15 * 8, "8:1 read %u texels, want 120", texels);
     q = footprint(0.5f, 0.5f, 3000.0, 3.0, 0.3, 0.0, 256, 128);
-    texels = ls_fp_feline(&c, &q, 0.0f, o, NULL, NULL, NULL);
+    texels = ls_fp_feline(&c, &q, 0.0f, NULL, o, NULL, NULL, NULL);
     CHECK(texels == FP_FELINE_MAX_PROBES * 8, "1000:1 read %u texels", texels);
     for (n = 0; n < NQ; ++n) {
         double mag = exp2(urand(-30, 60)), ecc = exp2(urand(-40, 0));

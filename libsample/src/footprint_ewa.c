@@ -255,7 +255,7 @@ static double ewa_level(const sample_ctx *c, const void *gp, int lv, fp_accum *a
         return n;
     }
     /* The weight alone, the level at once (footprint_rows.c). */
-    if (!acc->deriv) return fp_level_sums(acc, &m->lr, m->lr.k->rows->ewa_level, m->abc);
+    if (!acc->deriv && !acc->draw) return fp_level_sums(acc, &m->lr, m->lr.k->rows->ewa_level, m->abc);
     d.A = m->abc[0];
     d.B = m->abc[1];
     d.C = m->abc[2];

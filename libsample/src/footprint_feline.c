@@ -27,6 +27,7 @@
 #include "aniso.h"
 #include "footprint.h"
 #include "kernels.h"
+#include "stochastic.h"
 
 /* The unit vector (in base texels) of the ellipse's major axis: the
  * eigenvector of M = J·Jᵀ for its larger eigenvalue e (J in base texels),
@@ -60,12 +61,21 @@ static void store_mean(float *dst, const double acc[4], double sw)
         for (k = 0; k < 4; ++k) dst[k] = (float)(acc[k] / sw);
 }
 
-uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, float out[4], float dds[4],
-                      float ddt[4], sample_stats *st)
+/* The probe d base texels along the major axis (ux, uy) from the centre,
+ * in normalized coordinates. */
+static void probe_at(const sample_query *q, const struct sample_level *B, double d, double ux, double uy, float *s,
+                     float *t)
+{
+    *s = (float)(q->s + d * ux / B->w);
+    *t = (float)(q->t + d * uy / B->h);
+}
+
+uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, const double *u, float out[4],
+                      float dds[4], float ddt[4], sample_stats *st)
 {
     const struct sample_level *B = &c->tex->level[c->base];
     const fp_bilinear_fn bilinear = ctx_readers(c)->bilinear;
-    double J[2][2], ux, uy, s0, s1, spread, lb, f, sw = 0.0;
+    double J[2][2], ux, uy, s0, s1, spread, lb, f, sw = 0.0, w[FP_FELINE_MAX_PROBES];
     double acc[4] = {0, 0, 0, 0}, as[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
     fp_shape sh;
     float lam, ff;
@@ -93,25 +103,47 @@ uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bia
     if (ff == 0.0f) l1 = l0;
     f = ff;
     for (k = -h; k <= h; ++k) {
-        const double r = (double)k / (h + 1), d = 2.0 * spread * r, w = fp_ewa_weight(r * r, NULL);
-        const float ps = (float)(q->s + d * ux / B->w), pt = (float)(q->t + d * uy / B->h);
-        float o0[4], ds0[4], dt0[4], o1[4], ds1[4], dt1[4];
-        texels += bilinear(c, l0, ps, pt, o0, dds ? ds0 : NULL, ddt ? dt0 : NULL);
-        if (l1 != l0) {
-            texels += bilinear(c, l1, ps, pt, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
-        } else {
-            memcpy(o1, o0, sizeof o1);
-            if (dds) memcpy(ds1, ds0, sizeof ds1);
-            if (ddt) memcpy(dt1, dt0, sizeof dt1);
-        }
-        sw += w;
-        weighted_add(acc, w, f, o0, o1);
-        if (dds) weighted_add(as, w, f, ds0, ds1);
-        if (ddt) weighted_add(at, w, f, dt0, dt1);
+        const double r = (double)k / (h + 1);
+        w[k + h] = fp_ewa_weight(r * r, NULL);
+        sw += w[k + h];
     }
-    store_mean(out, acc, sw);
-    store_mean(dds, as, sw);
-    store_mean(ddt, at, sw);
+    if (u) {
+        /* One probe, drawn with probability w_k/Σw (stratified in u), its
+         * level with its blend weight: one bilinear read. */
+        double v = *u * sw, cum = 0.0;
+        float ps, pt;
+        for (k = 0; k < 2 * h; ++k) {
+            if (v < cum + w[k]) break;
+            cum += w[k];
+        }
+        v = (v - cum) / w[k];
+        if (!(v >= 0.0 && v < 1.0)) v = 0.0;
+        probe_at(q, B, 2.0 * spread * (double)(k - h) / (h + 1), ux, uy, &ps, &pt);
+        if (l1 != l0 && ls_stochastic_pick2(f, &v)) l0 = l1;
+        l1 = l0;
+        texels = bilinear(c, l0, ps, pt, out, NULL, NULL);
+    } else
+        for (k = -h; k <= h; ++k) {
+            const double d = 2.0 * spread * (double)k / (h + 1);
+            float ps, pt, o0[4], ds0[4], dt0[4], o1[4], ds1[4], dt1[4];
+            probe_at(q, B, d, ux, uy, &ps, &pt);
+            texels += bilinear(c, l0, ps, pt, o0, dds ? ds0 : NULL, ddt ? dt0 : NULL);
+            if (l1 != l0) {
+                texels += bilinear(c, l1, ps, pt, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
+            } else {
+                memcpy(o1, o0, sizeof o1);
+                if (dds) memcpy(ds1, ds0, sizeof ds1);
+                if (ddt) memcpy(dt1, dt0, sizeof dt1);
+            }
+            weighted_add(acc, w[k + h], f, o0, o1);
+            if (dds) weighted_add(as, w[k + h], f, ds0, ds1);
+            if (ddt) weighted_add(at, w[k + h], f, dt0, dt1);
+        }
+    if (!u) {
+        store_mean(out, acc, sw);
+        store_mean(dds, as, sw);
+        store_mean(ddt, at, sw);
+    }
     if (st) {
         st->level0 = (int16_t)l0;
         st->level1 = (int16_t)(l1 != l0 ? l1 : -1);

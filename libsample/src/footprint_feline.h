@@ -14,8 +14,11 @@
 #define FP_FELINE_MAX_PROBES 31
 
 /* Returns texels read, fills out (and dds/ddt if non-NULL) and stats (if
- * non-NULL); applies the sampler's and the call's bias itself. */
-uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, float out[4], float dds[4],
-                      float ddt[4], sample_stats *st);
+ * non-NULL); applies the sampler's and the call's bias itself. With u
+ * (a uniform in [0, 1)) the stochastic estimate instead: one probe drawn
+ * with its weight, one of its levels with its blend weight (dds, ddt
+ * untouched). */
+uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, const double *u, float out[4],
+                      float dds[4], float ddt[4], sample_stats *st);
 
 #endif /* SAMPLE_FOOTPRINT_FELINE_H */

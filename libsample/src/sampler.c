@@ -5,6 +5,7 @@
 #include "filter.h"
 #include "kernels.h"
 #include "sample/testing.h"
+#include "stochastic.h"
 
 void sample_sampler_init(sample_sampler *s)
 {
@@ -76,6 +77,14 @@ void ls_reference_query(const sample_ctx *c, const sample_batch_args *a, size_t 
             return;
         }
         ch = lod_select(c, lam);
+        /* Stochastic: one of two blended levels, with its weight (its
+         * derivatives too: the expectation's are the blend's). */
+        if (a->u && ch.level1 >= 0) {
+            double u = ls_stochastic_u(a, i);
+            if (ls_stochastic_pick2(ch.frac, &u)) ch.level0 = ch.level1;
+            ch.level1 = -1;
+            ch.frac = 0.0f;
+        }
         st->texels = ls_filter_gl_levels(c, q, lam, &ch, out, dds, ddt, st);
         return;
     }
@@ -119,9 +128,9 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
      * path's bit for bit (texel.h, struct ls_texel_source). */
     ls_ctx_init(&c, tex, smp, tex_resident(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
-    /* Feline has no fast-path kernel: its probes run the reference path
-     * (the same bilinear reads; doc/footprint-filters.md). */
-    if (fast && smp->footprint != SAMPLE_FOOTPRINT_FELINE)
+    /* Feline and stochastic queries have no fast-path kernels: they run
+     * the reference path (the same reads; doc/footprint-filters.md). */
+    if (fast && smp->footprint != SAMPLE_FOOTPRINT_FELINE && !a->u)
         fast(&c, a);
     else
         reference_batch(&c, a);

@@ -112,7 +112,8 @@ class Query(ctypes.Structure):
 class BatchArgs(ctypes.Structure):
     _fields_ = [("count", ctypes.c_size_t), ("queries", ctypes.c_void_p), ("corners", ctypes.c_void_p),
                 ("lod_bias", ctypes.c_void_p), ("rgba", ctypes.c_void_p), ("drgba_ds", ctypes.c_void_p),
-                ("drgba_dt", ctypes.c_void_p), ("stats", ctypes.c_void_p)]
+                ("drgba_dt", ctypes.c_void_p), ("stats", ctypes.c_void_p), ("u", ctypes.c_void_p),
+                ("draws", ctypes.c_uint)]
 
 
 def _declare(lib, name, restype, *argtypes):

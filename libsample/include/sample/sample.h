@@ -377,6 +377,17 @@ typedef struct sample_batch_args {
     float *drgba_ds;             /* optional: count × 4, ∂result/∂s */
     float *drgba_dt;             /* optional: count × 4, ∂result/∂t */
     sample_stats *stats;         /* optional: count entries */
+    /* optional: count entries, each a uniform random number in [0, 1):
+     * stochastic filtering (doc/footprint-filters.md, "Stochastic
+     * filtering"). Each query then returns one random estimate whose
+     * expectation over u is the deterministic filter's result: trilinear
+     * reads one level (chosen with its blend weight), anisotropic one
+     * probe, Feline one probe, EWA and Blinn–Newell `draws` texels drawn
+     * in proportion to |weight|. A value outside [0, 1) is reduced to its
+     * fractional part (NaN reads as 0). Runs the reference path;
+     * derivatives, when asked for, are the deterministic filter's. */
+    const float *u;
+    unsigned draws; /* texels per EWA / Blinn–Newell estimate; 0 reads as 1 */
 } sample_batch_args;
 
 /* Sample `count` queries. Results are bit-for-bit independent of how a job is
