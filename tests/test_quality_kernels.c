@@ -8,6 +8,7 @@
  * differences, texel cap and non-finite input.
  */
 #include "footprint_util.h"
+#include "footprint_kernels.h"
 
 #include <string.h>
 
@@ -111,7 +112,8 @@ static void column_symmetry(void)
 /* A smooth texture (no pyramid: the level is the base) and a footprint of
  * several texels: the filter's sum over texel centres against dense
  * integration (1/8 texel) of the same kernel over the same ellipse
- * (JJᵀ + I, the reconstruction term included) times the same function. */
+ * (JJᵀ + rc·I, the kernel's reconstruction term included) times the
+ * same function. */
 static double smooth(double u, double v, int ch) { return 0.5 + 0.3 * sin(6.283185307179586 * (3.0 * u + 2.0 * v) / 128.0 + ch); }
 static float f_smooth(int i, int j, int ch) { return (float)smooth(i, j, ch); }
 
@@ -138,8 +140,11 @@ static void dense_integration(void)
             double a = urand(4.0, 6.0), b = a * urand(0.6, 1.0), r, u, v;
             sample_query q = footprint((float)urand(0.3, 0.7), (float)urand(0.3, 0.7), a, b, urand(0, 6.3),
                                        urand(0, 6.3), 128, 128);
+            /* The kernel's reconstruction term at this eccentricity. */
+            const fp_radial *kr = ls_fp_radial(kernels[kk]);
+            double rc = ls_fp_radial_recon(kr, ls_fp_radial_minor(kr, a / b));
             double J00 = q.dsdx * 128.0, J01 = q.dsdy * 128.0, J10 = q.dtdx * 128.0, J11 = q.dtdy * 128.0;
-            double M00 = J00 * J00 + J01 * J01 + 1.0, M01 = J00 * J10 + J01 * J11, M11 = J10 * J10 + J11 * J11 + 1.0;
+            double M00 = J00 * J00 + J01 * J01 + rc, M01 = J00 * J10 + J01 * J11, M11 = J10 * J10 + J11 * J11 + rc;
             double det = M00 * M11 - M01 * M01, u0 = q.s * 128.0 - 0.5, v0 = q.t * 128.0 - 0.5;
             double sw = 0.0, sT[4] = {0}, h = 0.125;
             float out[4];

@@ -16,7 +16,7 @@
 /* minor_texels: see doc/footprint-filters.md, "Radial kernels" for the
  * measurements behind them. */
 static const fp_radial kernels[SAMPLE_EWA_KERNEL_COUNT] = {
-    [SAMPLE_EWA_LANCZOS2] = {2.0, 2.0, 1.0, ls_fp_lut_lanczos2},
+    [SAMPLE_EWA_LANCZOS2] = {2.0, 2.0, 2.0, ls_fp_lut_lanczos2},
     [SAMPLE_EWA_LANCZOS3] = {3.0, 2.0, 1.0, ls_fp_lut_lanczos3},
     [SAMPLE_EWA_MITCHELL] = {2.0, 2.0, 1.0, ls_fp_lut_mitchell},
 };
