@@ -4,10 +4,8 @@
  * Jacobian column swaps and sign flips, a round footprint is one trilinear
  * probe, the probe count and cap, non-finite input.
  */
-#include "footprint_util.h"
 #include "footprint_feline.h"
-
-#include <string.h>
+#include "quality_util.h"
 
 static float f_const(int i, int j, int ch) { (void)i; (void)j; return ch == 3 ? 1.0f : 0.3f + 0.1f * ch; }
 static float f_rough(int i, int j, int ch) { return (float)((i * 37 + j * 91 + ch * 13) % 101) / 128.0f; }
@@ -105,43 +103,19 @@ static void round_is_trilinear(void)
  * cap; non-finite ones give the border colour. */
 static void probes_and_cap(void)
 {
-    enum { NQ = 1000 };
-    static sample_query qs[NQ];
-    static float out[NQ * 4];
-    static sample_stats st[NQ];
+    static sample_query qs[EXTREME_NQ];
     sample_texture *t = tex_from(256, 128, f_rough, 1);
     sample_sampler s;
     sample_ctx c = feline_ctx(t, &s);
-    sample_batch_args a;
     sample_query q = footprint(0.5f, 0.5f, 24.0, 3.0, 0.3, 0.0, 256, 128);
     float o[4];
-    int n, k, bad = 0, over = 0;
     uint32_t texels = ls_fp_feline(&c, &q, 0.0f, NULL, o, NULL, NULL, NULL);
     CHECK(texels == 15 * 8, "8:1 read %u texels, want 120", texels);
     q = footprint(0.5f, 0.5f, 3000.0, 3.0, 0.3, 0.0, 256, 128);
     texels = ls_fp_feline(&c, &q, 0.0f, NULL, o, NULL, NULL, NULL);
     CHECK(texels == FP_FELINE_MAX_PROBES * 8, "1000:1 read %u texels", texels);
-    for (n = 0; n < NQ; ++n) {
-        double mag = exp2(urand(-30, 60)), ecc = exp2(urand(-40, 0));
-        qs[n] = footprint((float)urand(-1e3, 1e3), (float)urand(-3, 3), mag, mag * ecc, urand(0, 6.3), urand(0, 6.3),
-                          256, 128);
-    }
-    memset(&qs[0], 0, sizeof qs[0]);
-    qs[1].dsdx = qs[1].dtdx = qs[1].dsdy = qs[1].dtdy = 1e20f;
-    qs[2].dsdx = 3.4e38f, qs[2].dtdy = 1e-38f;
-    qs[4].dsdx = NAN, qs[5].dtdy = INFINITY, qs[6].s = -INFINITY;
-    memset(&a, 0, sizeof a);
-    a.count = NQ;
-    a.queries = qs;
-    a.rgba = out;
-    a.stats = st;
-    CHECK(sample_batch(t, &s, &a) == SAMPLE_OK, "batch");
-    for (n = 0; n < NQ; ++n) {
-        for (k = 0; k < 4; ++k) bad += !isfinite(out[4 * n + k]);
-        over += st[n].texels > FP_FELINE_MAX_PROBES * 8;
-    }
-    CHECK(bad == 0 && over == 0, "%d non-finite, %d over 31 probes", bad, over);
-    for (n = 4; n <= 6; ++n) CHECK(out[4 * n] == 0.0f && out[4 * n + 3] == 0.0f, "non-finite -> border");
+    extreme_queries(qs, 256, 128);
+    extreme_batch(t, &s, qs, FP_FELINE_MAX_PROBES * 8, "feline");
     CHECK(sample_footprint_parse("feline") == SAMPLE_FOOTPRINT_FELINE, "name");
     sample_texture_destroy(t);
 }

@@ -7,10 +7,8 @@
  * ringing at a step edge and its clamp, derivatives against central
  * differences, texel cap and non-finite input.
  */
-#include "footprint_util.h"
 #include "footprint_kernels.h"
-
-#include <string.h>
+#include "quality_util.h"
 
 static const sample_ewa_kernel kernels[] = {SAMPLE_EWA_LANCZOS2, SAMPLE_EWA_LANCZOS3, SAMPLE_EWA_MITCHELL};
 enum { NK = 3 };
@@ -217,25 +215,21 @@ static void derivatives(void)
             double a = exp2(urand(0.5, 3)), b = a * urand(0.3, 1.0);
             sample_query q = footprint((float)urand(0.2, 0.8), (float)urand(0.2, 0.8), a, b, urand(0, 6.3),
                                        urand(0, 6.3), 64, 64), qp = q, qm = q;
-            float o[4], ds[4], dt[4], p[4], m[4];
+            float o[4], d[2][4], p[4], m[4];
             const float e = 1e-3f / 64.0f;
-            ls_fp_ewa(&c, &q, 0.0f, o, ds, dt, NULL);
-            qp.s += e, qm.s -= e;
-            ls_fp_ewa(&c, &qp, 0.0f, p, NULL, NULL, NULL);
-            ls_fp_ewa(&c, &qm, 0.0f, m, NULL, NULL, NULL);
-            for (k = 0; k < 3; ++k) {
-                double fd = (p[k] - m[k]) / ((double)qp.s - qm.s);
-                CHECK(fabs(ds[k] - fd) <= 0.02 * fabs(fd) + 0.02 * 64, "%s d/ds %.6g vs %.6g",
-                      sample_ewa_kernel_name(kernels[kk]), ds[k], fd);
-            }
-            qp = q, qm = q;
-            qp.t += e, qm.t -= e;
-            ls_fp_ewa(&c, &qp, 0.0f, p, NULL, NULL, NULL);
-            ls_fp_ewa(&c, &qm, 0.0f, m, NULL, NULL, NULL);
-            for (k = 0; k < 3; ++k) {
-                double fd = (p[k] - m[k]) / ((double)qp.t - qm.t);
-                CHECK(fabs(dt[k] - fd) <= 0.02 * fabs(fd) + 0.02 * 64, "%s d/dt %.6g vs %.6g",
-                      sample_ewa_kernel_name(kernels[kk]), dt[k], fd);
+            int ax;
+            ls_fp_ewa(&c, &q, 0.0f, o, d[0], d[1], NULL);
+            for (ax = 0; ax < 2; ++ax) {
+                float *cp = ax ? &qp.t : &qp.s, *cm = ax ? &qm.t : &qm.s;
+                qp = q, qm = q;
+                *cp += e, *cm -= e;
+                ls_fp_ewa(&c, &qp, 0.0f, p, NULL, NULL, NULL);
+                ls_fp_ewa(&c, &qm, 0.0f, m, NULL, NULL, NULL);
+                for (k = 0; k < 3; ++k) {
+                    double fd = (p[k] - m[k]) / ((double)*cp - *cm);
+                    CHECK(fabs(d[ax][k] - fd) <= 0.02 * fabs(fd) + 0.02 * 64, "%s d/d%c %.6g vs %.6g",
+                          sample_ewa_kernel_name(kernels[kk]), ax ? 't' : 's', d[ax][k], fd);
+                }
             }
         }
     }
@@ -246,42 +240,15 @@ static void derivatives(void)
  * non-finite input the border colour; every kernel, clamped or not. */
 static void degenerate_and_cap(void)
 {
-    enum { NQ = 600 };
-    static sample_query qs[NQ];
-    static float out[NQ * 4];
-    static sample_stats st[NQ];
+    static sample_query qs[EXTREME_NQ];
     sample_texture *t = tex_from(256, 128, f_mild, 1);
-    sample_batch_args a;
-    int kk, n, k;
-    for (n = 0; n < NQ; ++n) {
-        double mag = exp2(urand(-20, 40)), ecc = exp2(urand(-30, 0));
-        qs[n] = footprint((float)urand(-1e3, 1e3), (float)urand(-3, 3), mag, mag * ecc, urand(0, 6.3), urand(0, 6.3),
-                          256, 128);
-    }
-    memset(&qs[0], 0, sizeof qs[0]);
-    qs[1].dsdx = qs[1].dtdx = qs[1].dsdy = qs[1].dtdy = 1e20f;
-    qs[2].dsdx = 1e20f, qs[2].dtdy = -1e20f;
-    qs[3].dsdx = 0.5f, qs[3].dsdy = qs[3].dtdx = qs[3].dtdy = 0.0f;
-    qs[4].dsdx = NAN, qs[5].dtdy = INFINITY, qs[6].s = -INFINITY;
-    qs[7].dsdx = 3.4e38f, qs[7].dtdy = 1e-38f;
+    int kk;
+    extreme_queries(qs, 256, 128);
     for (kk = 0; kk < 2 * NK; ++kk) {
         sample_sampler s;
-        int bad = 0, over = 0;
         kernel_ctx(t, &s, kernels[kk % NK], kk >= NK ? SAMPLE_OPT_EWA_CLAMP : 0);
         s.wrap_s = (sample_wrap)(kk % SAMPLE_WRAP_COUNT);
-        memset(&a, 0, sizeof a);
-        a.count = NQ;
-        a.queries = qs;
-        a.rgba = out;
-        a.stats = st;
-        CHECK(sample_batch(t, &s, &a) == SAMPLE_OK, "batch");
-        for (n = 0; n < NQ; ++n) {
-            for (k = 0; k < 4; ++k) bad += !isfinite(out[4 * n + k]);
-            over += st[n].texels > SAMPLE_MAX_FOOTPRINT_TEXELS;
-        }
-        CHECK(bad == 0 && over == 0, "%s: %d non-finite, %d over the cap", sample_ewa_kernel_name(kernels[kk % NK]),
-              bad, over);
-        for (n = 4; n <= 6; ++n) CHECK(out[4 * n] == 0.0f && out[4 * n + 3] == 0.0f, "non-finite -> border");
+        extreme_batch(t, &s, qs, SAMPLE_MAX_FOOTPRINT_TEXELS, sample_ewa_kernel_name(kernels[kk % NK]));
     }
     sample_texture_destroy(t);
 }
