@@ -140,7 +140,7 @@ for _n, _r, _a in [
     ("sample_isa_name", ctypes.c_char_p, []),
 ]:
     _declare(core, _n, _r, *_a)
-for _kind in ("wrap", "filter", "cubic", "footprint", "mipgen"):
+for _kind in ("wrap", "filter", "cubic", "footprint", "ewa_kernel", "mipgen"):
     _declare(core, "sample_%s_name" % _kind, ctypes.c_char_p, ctypes.c_int)
     _declare(core, "sample_%s_parse" % _kind, ctypes.c_int, ctypes.c_char_p)
 _declare(core, "sample_format_name", ctypes.c_char_p, ctypes.c_int)
