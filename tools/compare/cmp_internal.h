@@ -27,7 +27,7 @@
 
 /* ---- Configurations (configs.c) -------------------------------------- */
 
-#define CMP_MAX_CONFIGS 16
+#define CMP_MAX_CONFIGS 32
 
 /* One row: a registry pick (libsample or its OpenImageIO twin). */
 typedef struct cmp_config {

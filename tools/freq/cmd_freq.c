@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #define MAX_LIST 16
-#define MAX_BACKENDS 16
+#define MAX_BACKENDS 32
 
 static const char help[] =
     "usage: texsample freq [options]\n"
