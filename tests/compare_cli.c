@@ -254,7 +254,7 @@ static void ordering_and_outputs(void)
     static const char *const configs[] = {"nearest", "bilinear", "nearest_mipmap_nearest", "trilinear",
                                           "aniso16", "cubic_mipmap_linear", "blinn-newell",
                                           "blinn-newell-corners", "ewa"};
-    static const char *const files[] = {"truth.png", "truth_crop.png", "contact.png",
+    static const char *const files[] = {"truth.png", "truth_crop.png", "contact.png", "cost.png",
                                         "trilinear.png", "trilinear_err.png", "trilinear_crop.png"};
     double e[9];
     size_t len;
@@ -293,6 +293,7 @@ static void ordering_and_outputs(void)
               strstr(html, "</html>"),
           "index.html shows the pictures, each a link to itself at full size");
     CHECK(html && strstr(html, "median of 3 runs</th>"), "the table header says how many runs");
+    CHECK(html && strstr(html, "<img src=\"plane/cost.png\""), "index.html shows RMSE against ns/sample");
     free(html);
     csv = slurp(".", "out.txt", &len);
     CHECK(csv && strstr(csv, "ord/index.html") && strstr(csv, "ord/results.csv"),

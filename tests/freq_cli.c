@@ -159,8 +159,15 @@ static void test_labels(void)
     if (svg) check_figure_labels(svg, "plot_r1_t0.svg");
     if (html) {
         /* The page shows the labelled figures themselves, one per (θ, r). */
-        const char *fig = strstr(html, "<svg ");
-        CHECK(count(html, "<svg ") == 4, "inline figures: %d", count(html, "<svg "));
+        static const char figure[] = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"figure\"";
+        const char *fig = strstr(html, figure), *fr = strstr(html, "class=\"frontier\"");
+        CHECK(count(html, figure) == 4, "inline figures: %d", count(html, figure));
+        /* And the pass-against-aliasing plot: named axes, a marker and a
+         * legend entry per filter. */
+        CHECK(count(html, "<svg ") == 5 && fr, "the frontier plot");
+        CHECK(fr && strstr(fr, ">aliasing: mean |H| above") && strstr(fr, ">pass band: mean |H| below"),
+              "frontier: axis names");
+        CHECK(fr && count(fr, "<circle class=\"point\"") >= 3, "frontier: a marker per filter");
         CHECK(strstr(html, "<?xml") == NULL, "no XML declaration inside the page");
         CHECK(strstr(html, "plot_r1_t0.png") == NULL, "no unlabelled PNG plot");
         if (fig && strstr(fig, "</svg>")) {

@@ -14,7 +14,7 @@ if ! "$exe" freq --quick --theta 0 --r 1,4 --out "$work/page" >"$work/freq.txt" 
   echo "FAIL: texsample freq failed"; cat "$work/freq.txt"; exit 1
 fi
 expected=$(grep -o '<img ' "$work/page/index.html" | wc -l)
-figures=$(grep -o '<svg ' "$work/page/index.html" | wc -l)
+figures=$(grep -o '<svg xmlns="http://www.w3.org/2000/svg" class="figure"' "$work/page/index.html" | wc -l)
 status=0
 [ "$figures" = 2 ] || { echo "FAIL: $figures inline figures, 2 expected"; status=1; }
 html_check "$work/page" index.html ok

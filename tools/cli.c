@@ -179,7 +179,7 @@ static const char sampler_help[] =
     "  --cubic catmull-rom|bspline|mitchell     cubic variant\n"
     "  --cubic-clamp                            clamp cubic overshoot to the 2x2 range\n"
     "  --lod-bias B, --min-lod L, --max-lod L, --base-level N, --max-level N\n"
-    "  --filter none|aniso|blinn-newell|ewa     footprint filter for minification\n"
+    "  --filter none|aniso|blinn-newell|ewa|feline  footprint filter for minification\n"
     "  --filter NAME                            a filter of the tools' registry (below): its\n"
     "                                           min, mag, footprint, cubic, max anisotropy and\n"
     "                                           options; options after it override them\n"
@@ -188,6 +188,8 @@ static const char sampler_help[] =
     "  --legacy-switchover                      pre-GL-4.5 c = 0.5 rule\n"
     "  --aniso-pow2                             round the anisotropic probe count up to 2^k\n"
     "  --bn-area-weight                         Blinn-Newell corners: screen-space (area) weights\n"
+    "  --ewa-kernel gaussian|lanczos2|lanczos3|mitchell  EWA's radial weight (default gaussian)\n"
+    "  --ewa-clamp                              clamp EWA kernels' ringing to the texels' range\n"
     "Registry filters for --filter NAME (doc/comparison.md; blinn-newell and ewa\n"
     "set the footprint only, which samples the same: it replaces min whenever\n"
     "lambda > 0; Blinn-Newell's corner mode is --filter blinn-newell --corners FILE):\n";
@@ -268,6 +270,7 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     ENUM_FLAG("--wrap", sample_wrap_parse, s->wrap_s = s->wrap_t = (sample_wrap)e, "wrap mode")
     ENUM_FLAG("--min", sample_filter_parse, s->min_filter = (sample_filter)e, "filter")
     ENUM_FLAG("--cubic", sample_cubic_parse, s->cubic = (sample_cubic)e, "cubic variant")
+    ENUM_FLAG("--ewa-kernel", sample_ewa_kernel_parse, s->ewa_kernel = (sample_ewa_kernel)e, "EWA kernel")
     if (cli_opt(argc, argv, i, "--filter", &v)) return filter_flag(sub, v, s) == 0 ? 1 : -1;
     if (cli_opt(argc, argv, i, "--mag", &v)) {
         int e = sample_filter_parse(v);
@@ -296,6 +299,7 @@ int cli_sampler_flag(const char *sub, int argc, char **argv, int *i, sample_samp
     if (cli_opt(argc, argv, i, "--legacy-switchover", NULL)) { s->options |= SAMPLE_OPT_LEGACY_SWITCHOVER; return 1; }
     if (cli_opt(argc, argv, i, "--aniso-pow2", NULL)) { s->options |= SAMPLE_OPT_ANISO_POW2; return 1; }
     if (cli_opt(argc, argv, i, "--bn-area-weight", NULL)) { s->options |= SAMPLE_OPT_BN_AREA_WEIGHT; return 1; }
+    if (cli_opt(argc, argv, i, "--ewa-clamp", NULL)) { s->options |= SAMPLE_OPT_EWA_CLAMP; return 1; }
     return 0;
 }
 

@@ -59,6 +59,25 @@ const tool_filter tool_filters[] = {
     {.label = "EWA",
      .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
      .footprint = SAMPLE_FOOTPRINT_EWA},
+    /* EWA's ellipse by Gaussian-weighted trilinear probes (Feline). */
+    {.label = "Feline (EWA by trilinear probes)",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_FELINE},
+    /* EWA with sharper radial kernels (doc/footprint-filters.md, "Radial
+     * kernels"); the clamped row bounds Lanczos-3's ringing. */
+    {.name = "ewa-lanczos2", .label = "EWA, Lanczos-2",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_EWA, .ewa_kernel = SAMPLE_EWA_LANCZOS2},
+    {.name = "ewa-lanczos3", .label = "EWA, Lanczos-3",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_EWA, .ewa_kernel = SAMPLE_EWA_LANCZOS3},
+    {.name = "ewa-lanczos3-clamp", .label = "EWA, Lanczos-3, clamped",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_EWA, .ewa_kernel = SAMPLE_EWA_LANCZOS3,
+     .options = SAMPLE_OPT_EWA_CLAMP},
+    {.name = "ewa-mitchell", .label = "EWA, Mitchell-Netravali",
+     .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
+     .footprint = SAMPLE_FOOTPRINT_EWA, .ewa_kernel = SAMPLE_EWA_MITCHELL},
 };
 const int tool_filter_count = (int)(sizeof tool_filters / sizeof tool_filters[0]);
 
@@ -98,6 +117,7 @@ void tool_filter_apply(const tool_filter *f, sample_sampler *s)
     s->mag_filter = f->mag;
     s->footprint = f->footprint;
     s->cubic = f->cubic;
+    s->ewa_kernel = f->ewa_kernel;
     s->max_anisotropy = f->max_aniso > 0.0f ? f->max_aniso : 1.0f;
     s->options |= f->options;
 }

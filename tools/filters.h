@@ -35,6 +35,7 @@ typedef struct tool_filter {
     sample_filter min, mag;
     sample_footprint footprint;
     sample_cubic cubic;
+    sample_ewa_kernel ewa_kernel; /* EWA's radial weight (0: the Gaussian) */
     /* 0 reads as 1, OpenGL's initial value (GL 4.6 table 23.18). */
     float max_aniso;
     unsigned options; /* SAMPLE_OPT_*, added to the caller's */
@@ -59,7 +60,7 @@ extern const int tool_filter_count;
 
 const char *tool_filter_name(const tool_filter *f);
 /* The entry's settings onto a sampler: min and mag filter, footprint,
- * cubic kind, max anisotropy; options are added. */
+ * cubic kind, EWA kernel, max anisotropy; options are added. */
 void tool_filter_apply(const tool_filter *f, sample_sampler *s);
 /* The twin's settings onto OIIO options made by oiio_ts_opts_init: the
  * mode, and TextureOpt::anisotropic where the entry sets max_aniso (else

@@ -85,13 +85,38 @@ typedef struct fp_accum {
     double sT[4], sTdu[4], sTdv[4];
     uint32_t texels;
     int deriv; /* 0: the ∂ sums are not wanted (they stay 0) */
+    /* Stochastic draws (fp_stochastic.c): Σ|w|, and when `draw` is set
+     * the texels where the running Σ|w| (cum) first passes each of the
+     * `draws` ascending targets at[], added with the sign of their weight
+     * into sD; the last texel of nonzero weight in lastT (a target the
+     * rounding left beyond the end takes it). A level walks its texels one
+     * by one (fp_accum_add) when `draw` is set. */
+    double sabs, cum, sD[4], lastT[4], lastsign;
+    const double *at;
+    int draw, draws, drawn;
 } fp_accum;
+
+/* One texel of weight w into the draws of a (fp_accum.draw). */
+static inline void fp_accum_draw(fp_accum *a, double w, const float T[4])
+{
+    const double sg = w < 0.0 ? -1.0 : 1.0;
+    int k;
+    a->cum += fabs(w);
+    for (k = 0; k < 4; ++k) a->lastT[k] = T[k];
+    a->lastsign = sg;
+    while (a->drawn < a->draws && a->cum > a->at[a->drawn]) {
+        for (k = 0; k < 4; ++k) a->sD[k] += sg * T[k];
+        a->drawn++;
+    }
+}
 
 void ls_fp_accum_init(fp_accum *a);
 
 static inline void fp_accum_add(fp_accum *a, double w, double dwdu, double dwdv, const float T[4])
 {
     int k;
+    if (a->draw && w != 0.0) fp_accum_draw(a, w, T);
+    a->sabs += fabs(w);
     a->sw += w;
     for (k = 0; k < 4; ++k) a->sT[k] += w * T[k];
     if (a->deriv) {
@@ -161,6 +186,7 @@ SAMPLE_FORCE_INLINE void fp_accum_fold(fp_accum *a, const fp_sums *s)
 {
     int k;
     a->sw += s->sw;
+    a->sabs += s->sw; /* the row kernels' weights are ≥ +0 */
     for (k = 0; k < 4; ++k) a->sT[k] += s->sT[k];
     a->texels += s->n;
 }
@@ -504,6 +530,14 @@ void ls_fp_run_count(const sample_ctx *c, const void *geom, fp_level_fn level, d
                   float t, float call_bias, fp_run_state *rs);
 uint32_t ls_fp_run_read(const sample_ctx *c, const fp_run_state *rs, float out[4], float dds[4], float ddt[4],
                      sample_stats *st);
+/* ls_fp_run_read's stochastic estimate (fp_stochastic.c) from a uniform u
+ * in [0, 1): a level chosen with its blend weight, then `draws` texels of
+ * it drawn in proportion to |w| (stratified: targets (j + u′)/draws of
+ * Σ|w|), their values with the signs of their weights times Σ|w|/Σw,
+ * averaged. Its expectation over u is ls_fp_run_read's value. Fills out
+ * and st; returns the texels visited (both passes). */
+uint32_t ls_fp_run_draw(const sample_ctx *c, const fp_run_state *rs, double u, int draws, float out[4],
+                        sample_stats *st);
 
 /* A Blinn–Newell or EWA query split at fp_run's halves, for a batch loop
  * that plans query i + 1 (its rows' lines then on their way) before it

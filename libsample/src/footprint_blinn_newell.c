@@ -185,7 +185,7 @@ static double bn_affine_level(const sample_ctx *c, const void *gp, int lv, fp_ac
     /* The pyramid alone, the level at once (footprint_rows.c). With |x|,
      * |y| < 1 both factors are at least 2^−53, so w > 0 there (M and du
      * are finite, ls_fp_shape_reshape: det J′ = ±t0·t1, t ≥ 1). */
-    if (!acc->deriv) return fp_level_sums(acc, &e->lr, e->lr.k->rows->bn_level, &e->M[0][0]);
+    if (!acc->deriv && !acc->draw) return fp_level_sums(acc, &e->lr, e->lr.k->rows->bn_level, &e->M[0][0]);
     memcpy(d.M, e->M, sizeof d.M);
     return fp_pass_run(&d.ps, &e->lr, T, acc, e->ku, e->kv, bn_affine_deriv_row);
 }

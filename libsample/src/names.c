@@ -56,8 +56,17 @@ static const char *const footprint_names[] = {
     [SAMPLE_FOOTPRINT_ANISOTROPIC] = "aniso",
     [SAMPLE_FOOTPRINT_BLINN_NEWELL] = "blinn-newell",
     [SAMPLE_FOOTPRINT_EWA] = "ewa",
+    [SAMPLE_FOOTPRINT_FELINE] = "feline",
 };
 _Static_assert(COUNT_OF(footprint_names) == SAMPLE_FOOTPRINT_COUNT, "footprint_names");
+
+static const char *const ewa_kernel_names[] = {
+    [SAMPLE_EWA_GAUSSIAN] = "gaussian",
+    [SAMPLE_EWA_LANCZOS2] = "lanczos2",
+    [SAMPLE_EWA_LANCZOS3] = "lanczos3",
+    [SAMPLE_EWA_MITCHELL] = "mitchell",
+};
+_Static_assert(COUNT_OF(ewa_kernel_names) == SAMPLE_EWA_KERNEL_COUNT, "ewa_kernel_names");
 
 static const char *const mipgen_names[] = {
     [SAMPLE_MIPGEN_NONE] = "none",
@@ -101,6 +110,10 @@ const char *sample_wrap_name(sample_wrap v) { return name_of(wrap_names, COUNT_O
 const char *sample_filter_name(sample_filter v) { return name_of(filter_names, COUNT_OF(filter_names), (int)v); }
 const char *sample_cubic_name(sample_cubic v) { return name_of(cubic_names, COUNT_OF(cubic_names), (int)v); }
 const char *sample_footprint_name(sample_footprint v) { return name_of(footprint_names, COUNT_OF(footprint_names), (int)v); }
+const char *sample_ewa_kernel_name(sample_ewa_kernel v)
+{
+    return name_of(ewa_kernel_names, COUNT_OF(ewa_kernel_names), (int)v);
+}
 const char *sample_mipgen_name(sample_mipgen v) { return name_of(mipgen_names, COUNT_OF(mipgen_names), (int)v); }
 const char *sample_format_name(sample_format v) { return name_of(format_names, COUNT_OF(format_names), (int)v); }
 const char *sample_texture_kind_name(sample_texture_kind v) { return name_of(kind_names, COUNT_OF(kind_names), (int)v); }
@@ -123,6 +136,7 @@ int sample_footprint_parse(const char *s)
     if (s && (strcmp(s, "blinn_newell") == 0)) return SAMPLE_FOOTPRINT_BLINN_NEWELL;
     return parse_in(footprint_names, COUNT_OF(footprint_names), s);
 }
+int sample_ewa_kernel_parse(const char *s) { return parse_in(ewa_kernel_names, COUNT_OF(ewa_kernel_names), s); }
 int sample_mipgen_parse(const char *s) { return parse_in(mipgen_names, COUNT_OF(mipgen_names), s); }
 
 sample_status sample_error_vset(sample_error *err, sample_status status, const char *fmt, va_list ap)

@@ -5,6 +5,7 @@
 #include "filter.h"
 #include "kernels.h"
 #include "sample/testing.h"
+#include "stochastic.h"
 
 void sample_sampler_init(sample_sampler *s)
 {
@@ -24,6 +25,7 @@ void sample_sampler_init(sample_sampler *s)
     s->max_lod_bias = 16.0f;
     s->footprint = SAMPLE_FOOTPRINT_NONE;
     s->cubic = SAMPLE_CUBIC_CATMULL_ROM;
+    s->ewa_kernel = SAMPLE_EWA_GAUSSIAN;
 }
 
 void sample_mip_params_init(sample_mip_params *p)
@@ -44,7 +46,8 @@ sample_status sample_sampler_validate(const sample_sampler *s)
     if ((unsigned)s->min_filter >= SAMPLE_FILTER_COUNT) return SAMPLE_E_INVALID_ARGUMENT;
     if (s->mag_filter != SAMPLE_NEAREST && s->mag_filter != SAMPLE_LINEAR && s->mag_filter != SAMPLE_CUBIC)
         return SAMPLE_E_INVALID_ARGUMENT;
-    if ((unsigned)s->footprint >= SAMPLE_FOOTPRINT_COUNT || (unsigned)s->cubic >= SAMPLE_CUBIC_COUNT)
+    if ((unsigned)s->footprint >= SAMPLE_FOOTPRINT_COUNT || (unsigned)s->cubic >= SAMPLE_CUBIC_COUNT ||
+        (unsigned)s->ewa_kernel >= SAMPLE_EWA_KERNEL_COUNT)
         return SAMPLE_E_INVALID_ARGUMENT;
     /* NaN fails every comparison below, so it is rejected too. */
     if (!(s->max_anisotropy >= 1.0f) || !isfinite(s->max_anisotropy)) return SAMPLE_E_INVALID_ARGUMENT;
@@ -75,6 +78,14 @@ void ls_reference_query(const sample_ctx *c, const sample_batch_args *a, size_t 
             return;
         }
         ch = lod_select(c, lam);
+        /* Stochastic: one of two blended levels, with its weight (its
+         * derivatives too: the expectation's are the blend's). */
+        if (a->u && ch.level1 >= 0) {
+            double u = ls_stochastic_u(a, i);
+            if (ls_stochastic_pick2(ch.frac, &u)) ch.level0 = ch.level1;
+            ch.level1 = -1;
+            ch.frac = 0.0f;
+        }
         st->texels = ls_filter_gl_levels(c, q, lam, &ch, out, dds, ddt, st);
         return;
     }
@@ -126,7 +137,9 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
     ls_ctx_init(&c, tex, smp, tex_resident(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
     ticket = tex_reads_begin(tex);
-    if (fast)
+    /* Feline and stochastic queries have no fast-path kernels: they run
+     * the reference path (the same reads; doc/footprint-filters.md). */
+    if (fast && smp->footprint != SAMPLE_FOOTPRINT_FELINE && !a->u)
         fast(&c, a);
     else
         reference_batch(&c, a);

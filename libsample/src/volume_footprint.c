@@ -355,6 +355,9 @@ static const vol_footprint_fn vol_footprints[] = {
     [SAMPLE_FOOTPRINT_ANISOTROPIC] = vol_aniso,
     [SAMPLE_FOOTPRINT_BLINN_NEWELL] = vol_area,
     [SAMPLE_FOOTPRINT_EWA] = vol_area,
+    /* Feline approximates EWA's ellipse by probes; in a volume the patch
+     * filter serves it (doc/volumes.md). */
+    [SAMPLE_FOOTPRINT_FELINE] = vol_area,
 };
 _Static_assert(sizeof vol_footprints / sizeof vol_footprints[0] == SAMPLE_FOOTPRINT_COUNT,
                "one entry per footprint filter");

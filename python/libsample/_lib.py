@@ -101,7 +101,8 @@ class SamplerState(ctypes.Structure):
                 ("min_lod", ctypes.c_float), ("max_lod", ctypes.c_float),
                 ("base_level", ctypes.c_int), ("max_level", ctypes.c_int),
                 ("max_anisotropy", ctypes.c_float), ("max_lod_bias", ctypes.c_float),
-                ("footprint", ctypes.c_int), ("cubic", ctypes.c_int), ("options", ctypes.c_uint)]
+                ("footprint", ctypes.c_int), ("cubic", ctypes.c_int), ("options", ctypes.c_uint),
+                ("ewa_kernel", ctypes.c_int)]
 
 
 class Query(ctypes.Structure):
@@ -111,7 +112,8 @@ class Query(ctypes.Structure):
 class BatchArgs(ctypes.Structure):
     _fields_ = [("count", ctypes.c_size_t), ("queries", ctypes.c_void_p), ("corners", ctypes.c_void_p),
                 ("lod_bias", ctypes.c_void_p), ("rgba", ctypes.c_void_p), ("drgba_ds", ctypes.c_void_p),
-                ("drgba_dt", ctypes.c_void_p), ("stats", ctypes.c_void_p)]
+                ("drgba_dt", ctypes.c_void_p), ("stats", ctypes.c_void_p), ("u", ctypes.c_void_p),
+                ("draws", ctypes.c_uint)]
 
 
 class Volume(ctypes.Structure):
@@ -160,7 +162,7 @@ for _n, _r, _a in [
     ("sample_batch_3d", ctypes.c_int, [ctypes.c_void_p, P(SamplerState), P(Batch3Args)]),
 ]:
     _declare(core, _n, _r, *_a)
-for _kind in ("wrap", "filter", "cubic", "footprint", "mipgen"):
+for _kind in ("wrap", "filter", "cubic", "footprint", "ewa_kernel", "mipgen"):
     _declare(core, "sample_%s_name" % _kind, ctypes.c_char_p, ctypes.c_int)
     _declare(core, "sample_%s_parse" % _kind, ctypes.c_int, ctypes.c_char_p)
 _declare(core, "sample_format_name", ctypes.c_char_p, ctypes.c_int)

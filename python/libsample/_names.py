@@ -12,7 +12,8 @@ def _count(kind):
     return n
 
 
-_COUNTS = {k: _count(k) for k in ("wrap", "filter", "cubic", "footprint", "mipgen", "format", "texture_kind")}
+_COUNTS = {k: _count(k) for k in ("wrap", "filter", "cubic", "footprint", "ewa_kernel", "mipgen", "format",
+                                   "texture_kind")}
 
 # The SAMPLE_OPT_* bits (sample.h), by the command line's option names.
 OPTIONS = {
@@ -21,6 +22,7 @@ OPTIONS = {
     "cubic_clamp": 1 << 2,
     "aniso_pow2": 1 << 3,
     "bn_area_weight": 1 << 5,
+    "ewa_clamp": 1 << 6,
 }
 
 

@@ -7,7 +7,8 @@ from ._errors import LibsampleArgumentError
 
 # Keyword -> the enum its values name (sample_<kind>_parse).
 _ENUM_FIELDS = {"wrap_s": "wrap", "wrap_t": "wrap", "wrap_r": "wrap", "min_filter": "filter",
-                "mag_filter": "filter", "footprint": "footprint", "cubic": "cubic"}
+                "mag_filter": "filter", "footprint": "footprint", "cubic": "cubic",
+                "ewa_kernel": "ewa_kernel"}
 _FLOAT_FIELDS = ("lod_bias", "min_lod", "max_lod", "max_anisotropy", "max_lod_bias")
 _INT_FIELDS = ("base_level", "max_level")
 FIELDS = tuple(f for f, _ in _lib.SamplerState._fields_)
@@ -26,8 +27,10 @@ class Sampler:
       ``wrap`` sets all three;
     - ``min_filter``, ``mag_filter``: "nearest", "linear",
       "linear_mipmap_linear", "cubic_mipmap_linear", ... or int;
-    - ``footprint``: "none", "aniso", "blinn-newell", "ewa";
+    - ``footprint``: "none", "aniso", "blinn-newell", "ewa", "feline";
     - ``cubic``: "catmull-rom", "bspline", "mitchell";
+    - ``ewa_kernel``: EWA's radial weight, "gaussian", "lanczos2",
+      "lanczos3", "mitchell";
     - ``border_color``: 4 floats (linear RGBA);
     - ``lod_bias``, ``min_lod``, ``max_lod``, ``max_anisotropy``,
       ``max_lod_bias``: floats; ``base_level``, ``max_level``: ints;

@@ -321,7 +321,7 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
         for (px = 0; px < s->pixels; ++px) s->measured += t.mask[px];
     }
     choose_crop(s, images, &t);
-    if (cmp_scene_pictures(o->out, s, &t, images)) goto out;
+    if (cmp_scene_pictures(o->out, s, &t, images) || cmp_cost_plot(o->out, s)) goto out;
     if (o->raw) {
         size_t bytes = s->pixels * 4 * sizeof(float);
         char file[96];

@@ -259,6 +259,11 @@ void cmp_pic_path(char *out, size_t len, const cmp_scene_result *s, const char *
 int cmp_scene_pictures(const char *dir, const cmp_scene_result *s, const cmp_truth *t,
                        float *const *images);
 
+/* dir/<label>/cost.png: every row's RMSE against its ns/sample, with named
+ * axes and a legend in the picture (cost.c); nothing when no row was timed.
+ * Returns 0, or 1 after a message on stderr. */
+int cmp_cost_plot(const char *dir, const cmp_scene_result *s);
+
 /* results.csv, results.json, index.html in dir. command: the command line,
  * quoted on the page. Return 0 on success. */
 int cmp_write_csv(const char *path, const cmp_scene_result *s, int n);

@@ -306,6 +306,15 @@ static void html_img(buf *b, const cmp_scene_result *c, const char *name, const 
     bprintf(b, "\"></a>");
 }
 
+/* Whether cmp_cost_plot drew the scene's cost.png: a row was timed. */
+static int html_has_cost(const cmp_scene_result *c)
+{
+    int r;
+    for (r = 0; r < c->nrows; ++r)
+        if (c->rows[r].ok && c->rows[r].ns_per_sample > 0.0 && isfinite(c->rows[r].m.rmse)) return 1;
+    return 0;
+}
+
 /* A filter's (or the truth's) image and its heat map (the truth: its mask). */
 static void html_figure(buf *b, const cmp_scene_result *c, const char *name, const char *label,
                         const char *metrics, int heat)
@@ -369,6 +378,11 @@ int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const cha
                 c->w, c->h, c->truth_samples, c->truth_samples, c->truth_seconds, c->measured,
                 c->pixels, c->crop_size, c->crop_size, c->crop_x, c->crop_y, c->crop_zoom, p);
         html_table(&b, c);
+        if (html_has_cost(c)) {
+            bprintf(&b, "<p>RMSE against time per sample (axes and legend in the picture):</p>\n<p>");
+            html_img(&b, c, "cost", "", 560, "RMSE against ns/sample");
+            bprintf(&b, "</p>\n");
+        }
         html_crop_strip(&b, c);
         bprintf(&b, "<div class=\"grid\">\n");
         html_figure(&b, c, "truth", "ground truth",

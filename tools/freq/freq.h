@@ -14,6 +14,7 @@
  *   report.c    CSV, Markdown and HTML text
  *   plot.c      plot geometry
  *   svg.c       SVG plots (files of their own and inlined in the page)
+ *   frontier.c  pass band against aliasing, one marker per filter (in the page)
  *   strbuf.c    a growable text buffer
  *
  * GEOMETRY (doc/frequency-tests.md §2). Texel space of the base level,
@@ -291,5 +292,9 @@ double fq_ideal(double F);
  * its own (with the XML declaration), 0 for inlining in HTML. */
 void fq_svg_figure(const fq_plan *plan, const fq_sweep *s, int itheta, int ir, int standalone,
                    fq_buf *out);
+
+/* Every filter's pass-band fidelity against its aliasing (fq_summarize over
+ * every curve) as inline SVG, with axis names and a legend (frontier.c). */
+void fq_svg_frontier(const fq_plan *plan, const fq_sweep *s, fq_buf *out);
 
 #endif

@@ -251,6 +251,10 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *s
     table_overall(plan, s, &HTML, out);
     table_by_r(plan, s, &HTML, out);
     html_drivers(plan, out);
+    fq_buf_printf(out, "<figure>\n");
+    fq_svg_frontier(plan, s, out);
+    fq_buf_printf(out, "<figcaption>Pass band against aliasing: the upper left is best; the "
+                       "shaded box is pass &#8805; 0.9 with aliasing &#8804; 0.05.</figcaption></figure>\n");
     fq_buf_printf(out, "<h2>Curves</h2>\n<p>One figure per (&theta;, r), one panel per m "
                        "(left to right, top to bottom: m = ");
     html_list(out, plan->m, plan->nm, "");

@@ -285,8 +285,23 @@ typedef enum sample_footprint {
     SAMPLE_FOOTPRINT_ANISOTROPIC = 1,  /* GPU-style probes (EXT_texture_filter_anisotropic) */
     SAMPLE_FOOTPRINT_BLINN_NEWELL = 2, /* pyramid-weighted quadrilateral (1976) */
     SAMPLE_FOOTPRINT_EWA = 3,          /* elliptical Gaussian (Heckbert 1989, pbrt-v4) */
+    SAMPLE_FOOTPRINT_FELINE = 4,       /* EWA's ellipse by weighted trilinear probes (McCormack 1999) */
     SAMPLE_FOOTPRINT_COUNT
 } sample_footprint;
+
+/* The radial weight of the EWA footprint filter (doc/footprint-filters.md,
+ * "Radial kernels"), as a function of the distance r from the centre in
+ * pixels (r = 1 on the ellipse of conjugate semi-axes dPdx, dPdy, widened by
+ * Heckbert's reconstruction term), normalised by the weights' sum. The
+ * sharp kernels have negative lobes (SAMPLE_OPT_EWA_CLAMP bounds their
+ * ringing) and run on the reference path's per-texel walk. */
+typedef enum sample_ewa_kernel {
+    SAMPLE_EWA_GAUSSIAN = 0, /* e^(−2r²) − e^(−2), r < 1 (Heckbert, pbrt-v4) */
+    SAMPLE_EWA_LANCZOS2 = 1, /* sinc(r)·sinc(r/2), r < 2 */
+    SAMPLE_EWA_LANCZOS3 = 2, /* sinc(r)·sinc(r/3), r < 3 */
+    SAMPLE_EWA_MITCHELL = 3, /* Mitchell–Netravali cubic, B = C = ⅓, r < 2 */
+    SAMPLE_EWA_KERNEL_COUNT
+} sample_ewa_kernel;
 
 /* Options that change a specified behaviour; all off by default. */
 enum {
@@ -303,6 +318,9 @@ enum {
     /* 1u << 4 is reserved. */
     /* Blinn–Newell corners: texel weight pyramid / |det| of the quad map (screen-space integral). */
     SAMPLE_OPT_BN_AREA_WEIGHT = 1u << 5,
+    /* EWA with a kernel that has negative lobes: clamp each channel to the
+     * range of the texels in the kernel's support, level by level. */
+    SAMPLE_OPT_EWA_CLAMP = 1u << 6,
 };
 
 typedef struct sample_sampler {
@@ -319,6 +337,7 @@ typedef struct sample_sampler {
     sample_footprint footprint;   /* default NONE */
     sample_cubic cubic;           /* default CATMULL_ROM */
     unsigned options;             /* SAMPLE_OPT_* */
+    sample_ewa_kernel ewa_kernel; /* EWA's radial weight; default GAUSSIAN */
 } sample_sampler;
 
 /* OpenGL's initial sampler-object state (GL 4.6 table 23.18). */
@@ -360,6 +379,17 @@ typedef struct sample_batch_args {
     float *drgba_ds;             /* optional: count × 4, ∂result/∂s */
     float *drgba_dt;             /* optional: count × 4, ∂result/∂t */
     sample_stats *stats;         /* optional: count entries */
+    /* optional: count entries, each a uniform random number in [0, 1):
+     * stochastic filtering (doc/footprint-filters.md, "Stochastic
+     * filtering"). Each query then returns one random estimate whose
+     * expectation over u is the deterministic filter's result: trilinear
+     * reads one level (chosen with its blend weight), anisotropic one
+     * probe, Feline one probe, EWA and Blinn–Newell `draws` texels drawn
+     * in proportion to |weight|. A value outside [0, 1) is reduced to its
+     * fractional part (NaN reads as 0). Runs the reference path;
+     * derivatives, when asked for, are the deterministic filter's. */
+    const float *u;
+    unsigned draws; /* texels per EWA / Blinn–Newell estimate; 0 reads as 1 */
 } sample_batch_args;
 
 /* Sample `count` queries. Results are bit-for-bit independent of how a job is
@@ -497,6 +527,8 @@ SAMPLE_API const char *sample_cubic_name(sample_cubic cubic);
 SAMPLE_API int sample_cubic_parse(const char *name);
 SAMPLE_API const char *sample_footprint_name(sample_footprint footprint);
 SAMPLE_API int sample_footprint_parse(const char *name);
+SAMPLE_API const char *sample_ewa_kernel_name(sample_ewa_kernel kernel); /* "gaussian", "lanczos2", … */
+SAMPLE_API int sample_ewa_kernel_parse(const char *name);
 SAMPLE_API const char *sample_mipgen_name(sample_mipgen mipgen);
 SAMPLE_API int sample_mipgen_parse(const char *name);
 SAMPLE_API const char *sample_format_name(sample_format format);

@@ -1,0 +1,24 @@
+/*
+ * Feline: EWA's ellipse approximated by trilinear probes along its major
+ * axis with Gaussian weights (footprint_feline.c; McCormack et al. 1999,
+ * "Feline: fast elliptical lines for anisotropic texture mapping";
+ * Mavridis & Papaioannou 2011). DESIGN §7, doc/footprint-filters.md.
+ */
+#ifndef SAMPLE_FOOTPRINT_FELINE_H
+#define SAMPLE_FOOTPRINT_FELINE_H
+
+#include "lod.h"
+
+/* At most this many probes: 2·16 − 1, the count at the eccentricity
+ * clamp (FP_MAX_ECCENTRICITY). */
+#define FP_FELINE_MAX_PROBES 31
+
+/* Returns texels read, fills out (and dds/ddt if non-NULL) and stats (if
+ * non-NULL); applies the sampler's and the call's bias itself. With u
+ * (a uniform in [0, 1)) the stochastic estimate instead: one probe drawn
+ * with its weight, one of its levels with its blend weight (dds, ddt
+ * untouched). */
+uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, const double *u, float out[4],
+                      float dds[4], float ddt[4], sample_stats *st);
+
+#endif /* SAMPLE_FOOTPRINT_FELINE_H */
