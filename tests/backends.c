@@ -265,6 +265,14 @@ static void test_program(void)
     CHECK(rc == TOOL_BACKEND_ERROR && strstr(err, "wrote 4 bytes, not 64"), "short output: %d %s", rc,
           err);
     tool_backend_close(&p);
+    /* A program that never ends is killed at the time limit, with what it
+     * started (the sleep, a child of the shell): 0.3 s here. */
+    setenv("TEXSAMPLE_PROGRAM_TIMEOUT", "0.3", 1);
+    CHECK(tool_backend_program_open(&p, "sleep 30; :", err, sizeof err) == 0, "open: %s", err);
+    rc = backend_results(&p, tex, &s, queries, 4, got, err, sizeof err);
+    CHECK(rc == TOOL_BACKEND_ERROR && strstr(err, "ran past 0.3 s and was killed"), "hung program: %d %s", rc, err);
+    tool_backend_close(&p);
+    unsetenv("TEXSAMPLE_PROGRAM_TIMEOUT");
 }
 
 /* The RMSE field of results.csv's row `config` of scene plane, or "". */

@@ -20,6 +20,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +30,12 @@
 #include <unistd.h>
 
 #define PROGRAM_NA_STATUS 3
+/* How long one run of an outside program may take before it is killed
+ * (a program that never exits must not hang the tool): 600 s, or
+ * TEXSAMPLE_PROGRAM_TIMEOUT seconds (doc/backends.md). */
+#define PROGRAM_TIMEOUT_S 600.0
+/* run_program's status for a program killed at its time limit. */
+#define PROGRAM_TIMED_OUT (-2)
 
 typedef struct prog_impl {
     char *command;
@@ -150,8 +157,21 @@ static void first_line(const char *path, char *buf, size_t len)
     fclose(f);
 }
 
-/* Run the command with the protocol's arguments; returns its wait status
- * or −1 when it could not be started. Everything the child needs is made
+/* The time limit of one run, in seconds (PROGRAM_TIMEOUT_S). */
+static double program_timeout(void)
+{
+    const char *v = getenv("TEXSAMPLE_PROGRAM_TIMEOUT");
+    char *end;
+    double s;
+    if (!v || !*v) return PROGRAM_TIMEOUT_S;
+    s = strtod(v, &end);
+    return *end == '\0' && s > 0.0 && s <= 86400.0 ? s : PROGRAM_TIMEOUT_S;
+}
+
+/* Run the command with the protocol's arguments; returns its wait status,
+ * −1 when it could not be started, or PROGRAM_TIMED_OUT when it ran past
+ * program_timeout() and was killed with everything it started (its own
+ * process group). Everything the child needs is made
  * before fork: a tool may have threads (OpenImageIO's), and after fork only
  * async-signal-safe calls are safe in the child. */
 static int run_program(const prog_impl *p, char *const *args, const char *log)
@@ -174,6 +194,7 @@ static int run_program(const prog_impl *p, char *const *args, const char *log)
     fflush(NULL);
     pid = fork();
     if (pid == 0) {
+        (void)setpgid(0, 0);
         if (fd >= 0) {
             dup2(fd, 1);
             dup2(fd, 2);
@@ -185,8 +206,21 @@ static int run_program(const prog_impl *p, char *const *args, const char *log)
     if (fd >= 0) close(fd);
     free(script);
     if (pid < 0) return -1;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return -1;
+    (void)setpgid(pid, pid); /* as the child does: whichever runs first */
+    {
+        const double limit = program_timeout(), t0 = now_s();
+        const struct timespec tick = {0, 10 * 1000 * 1000};
+        pid_t r;
+        while ((r = waitpid(pid, &status, WNOHANG)) == 0 || (r < 0 && errno == EINTR)) {
+            if (now_s() - t0 > limit) {
+                kill(-pid, SIGKILL);
+                while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+                return PROGRAM_TIMED_OUT;
+            }
+            nanosleep(&tick, NULL);
+        }
+        if (r < 0) return -1;
+    }
     return status;
 }
 
@@ -238,6 +272,11 @@ static int prog_sample(tool_backend *b, tool_backend_tex *x, const sample_query 
     first_line(log, line, sizeof line);
     if (st == -1) {
         snprintf(err, errlen, "cannot start /bin/sh: %s", strerror(errno));
+        return TOOL_BACKEND_ERROR;
+    }
+    if (st == PROGRAM_TIMED_OUT) {
+        snprintf(err, errlen, "program '%s' ran past %g s and was killed (TEXSAMPLE_PROGRAM_TIMEOUT)", p->command,
+                 program_timeout());
         return TOOL_BACKEND_ERROR;
     }
     if (WIFEXITED(st) && WEXITSTATUS(st) == PROGRAM_NA_STATUS) {
