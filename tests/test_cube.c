@@ -3,49 +3,12 @@
  * face selection and (s, t) by table 8.19, λ from the face coordinates'
  * derivatives, seamless filtering across edges and corners (§8.13.1),
  * pyramids continuous across edges, every format, continuity of every
- * filter across edges and corners, and bad input. Lat-long maps:
- * OpenImageIO's convention at texel centres, the seam and the poles, the
- * Jacobian, continuity over the seam and the poles.
+ * filter across edges and corners, and bad input (of lat-long maps too:
+ * test_extreme_directions). The lat-long maps' own tests: test_latlong.c.
  */
-#include "check.h"
-#include "internal.h"
+#include "env_test.h"
+
 #include "sample/testing.h"
-
-#include <stdint.h>
-#include <stdlib.h>
-
-static uint32_t rnd_u32_of(uint32_t *s)
-{
-    *s ^= *s << 13;
-    *s ^= *s >> 17;
-    *s ^= *s << 5;
-    return *s;
-}
-
-static float rnd(uint32_t *s) { return (float)(rnd_u32_of(s) >> 8) * (1.0f / 16777216.0f); }
-
-/* Texel value of face f, texel (i, j), channel c of an n-sized test cube:
- * distinct exact floats. */
-static float tval(int f, int i, int j, int c, int n) { return (float)(((f * n + j) * n + i) * 4 + c) / 4096.0f; }
-
-/* A float RGBA cube of n × n faces holding tval, levels by mip (NULL: base only). */
-static sample_texture *make_cube(int n, const sample_mip_params *mip)
-{
-    sample_image faces[6];
-    float *d = (float *)malloc((size_t)6 * n * n * 4 * sizeof(float));
-    sample_texture *tex = NULL;
-    sample_error err;
-    int f, i, j, c;
-    for (f = 0; f < 6; ++f) {
-        for (j = 0; j < n; ++j)
-            for (i = 0; i < n; ++i)
-                for (c = 0; c < 4; ++c) d[(((size_t)f * n + j) * n + i) * 4 + c] = tval(f, i, j, c, n);
-        faces[f] = (sample_image){n, n, 4, SAMPLE_FORMAT_F32, d + (size_t)f * n * n * 4, 0};
-    }
-    if (sample_texture_create_cube(faces, mip, &tex, &err) != SAMPLE_OK) fprintf(stderr, "%s\n", err.message);
-    free(d);
-    return tex;
-}
 
 /* Direction of face f's point (s, t). */
 static void face_dir(int f, double s, double t, float r[3])
@@ -68,13 +31,6 @@ static void one(const sample_texture *tex, const sample_sampler *s, const sample
     CHECK(sample_batch_cube(tex, s, &a) == SAMPLE_OK, "sample_batch_cube failed");
 }
 
-static sample_query3 q_dir(const float r[3])
-{
-    sample_query3 q;
-    memset(&q, 0, sizeof q);
-    memcpy(q.p, r, sizeof q.p);
-    return q;
-}
 
 /* Table 8.19: each axis direction selects its face and lands at (½, ½);
  * the face frames' corners by hand. */
@@ -405,8 +361,6 @@ static void test_bad_input(void)
     sample_texture_destroy(tex);
 }
 
-static sample_texture *make_latlong(void);
-
 /* Finite directions and derivatives of any magnitude (FLT_MAX, 1e-45,
  * denormals, −0) give finite results within the texel cap, on cube and
  * lat-long maps, under every footprint filter. */
@@ -630,36 +584,6 @@ static void test_face_interior(void)
 
 /* ---- Continuity across edges and corners ---------------------------------- */
 
-/* The filters the continuity test runs (mag and min filter, footprint)
- * and the bound on one step through a corner (doc/environment-maps.md,
- * "Continuity"): the 2 × 2 filters meet the edge bound there too; wider
- * ones walk their footprint in the coordinates of the face of its centre,
- * where the quadrant past the corner, which no face holds, is filled from
- * its neighbours, so the result moves when the centre changes face. */
-static const struct {
-    const char *name;
-    sample_filter mag, min;
-    sample_footprint fp;
-    double corner_bound;
-} cont_filters[] = {
-    {"linear", SAMPLE_LINEAR, SAMPLE_LINEAR, SAMPLE_FOOTPRINT_NONE, 0.05},
-    {"trilinear", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_NONE, 0.05},
-    {"cubic", SAMPLE_CUBIC, SAMPLE_CUBIC_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_NONE, 0.08},
-    {"aniso", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_ANISOTROPIC, 0.25},
-    {"blinn-newell", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_BLINN_NEWELL, 0.25},
-    {"ewa", SAMPLE_LINEAR, SAMPLE_LINEAR_MIPMAP_LINEAR, SAMPLE_FOOTPRINT_EWA, 0.25},
-};
-#define CONT_FILTERS ((int)(sizeof cont_filters / sizeof cont_filters[0]))
-
-/* The sampler of cont_filters[fi]. */
-static void cont_sampler(int fi, sample_sampler *s)
-{
-    sample_sampler_init(s);
-    s->mag_filter = cont_filters[fi].mag;
-    s->min_filter = cont_filters[fi].min;
-    s->footprint = cont_filters[fi].fp;
-    s->max_anisotropy = 8.0f;
-}
 
 /* Largest change of any channel between consecutive queries along the
  * path R(τ) = a + τ·(b − a), τ ∈ [0, 1] in `steps` steps, with a
@@ -726,12 +650,10 @@ static double path_jump(const sample_texture *tex, const sample_sampler *smp, co
 /* Random texels in [0, 1] (so that a seam, which would pair unrelated
  * texels, jumps by about ⅓ on average): along paths across the middle of
  * each of the 12 edges, 3 texels of path in 200 steps (0.015 texel a
- * step), every filter changes by at most CONT_BOUND a step — the gradient
- * of a bilinear interpolant of such texels is at most 1 per texel,
- * bicubic's about 1.5. Through each of the 8 corners (along the diagonal,
+ * step), every filter changes by at most CONT_BOUND (env_test.h) a step.
+ * Through each of the 8 corners (along the diagonal,
  * the worst way through) each filter stays within its corner_bound. Both
  * with a 2 × ½-texel and a 0.3-texel footprint. */
-#define CONT_BOUND 0.05
 static void test_continuity(void)
 {
     const int n = 16;
@@ -785,239 +707,6 @@ static void test_continuity(void)
     sample_texture_destroy(tex);
 }
 
-/* ---- Lat-long maps ---------------------------------------------------------- */
-
-/* The direction of lat-long position (s, t) (latlong.h inverted):
- * φ = 2π(s − ½), θ = π(½ − t); −x = sin φ cos θ, z = cos φ cos θ,
- * y = sin θ. */
-static void latlong_dir(double s, double t, double r[3])
-{
-    const double pi = 3.14159265358979323846;
-    double phi = 2.0 * pi * (s - 0.5), theta = pi * (0.5 - t);
-    r[0] = -sin(phi) * cos(theta);
-    r[1] = sin(theta);
-    r[2] = cos(phi) * cos(theta);
-}
-
-#define LW 8
-#define LH 4
-static float ll_data[LH][LW][4];
-
-static sample_texture *make_latlong(void)
-{
-    sample_image im = {LW, LH, 4, SAMPLE_FORMAT_F32, ll_data, 0};
-    sample_mip_params mp;
-    sample_texture *tex = NULL;
-    uint32_t seed = 11;
-    int i, j, c;
-    for (j = 0; j < LH; ++j)
-        for (i = 0; i < LW; ++i)
-            for (c = 0; c < 4; ++c) ll_data[j][i][c] = rnd(&seed);
-    sample_mip_params_init(&mp);
-    CHECK(sample_texture_create(&im, &mp, &tex, NULL) == SAMPLE_OK, "lat-long texture");
-    return tex;
-}
-
-static void ll_one(const sample_texture *tex, const sample_sampler *s, const double r[3], float out[4])
-{
-    sample_query3 q;
-    sample_batch3_args a;
-    int k;
-    memset(&q, 0, sizeof q);
-    for (k = 0; k < 3; ++k) q.p[k] = (float)r[k];
-    memset(&a, 0, sizeof a);
-    a.count = 1;
-    a.queries = &q;
-    a.rgba = out;
-    CHECK(sample_batch_latlong(tex, s, &a) == SAMPLE_OK, "sample_batch_latlong");
-}
-
-/* The convention by hand (+y up at t = 0, +z at s = ½, +x at s = ¼),
- * texel centres (NEAREST exact, LINEAR within the rounding of the
- * trigonometry), the seam (LINEAR at s = 1 is the mean of the first and
- * last texels of the row) and the pole (+y: LINEAR blends the two texels
- * each side of s = ½ with the two at s + ½ over the pole). */
-static void test_latlong_values(void)
-{
-    sample_texture *tex = make_latlong();
-    sample_sampler s;
-    sample_query o;
-    int i, j, c;
-    static const struct { float r[3], s, t; } conv[] = {
-        {{0, 1, 0}, 0.5f, 0.0f}, {{0, -1, 0}, 0.5f, 1.0f}, {{0, 0, 1}, 0.5f, 0.5f},
-        {{1, 0, 0}, 0.25f, 0.5f}, {{-1, 0, 0}, 0.75f, 0.5f}, {{0, 0, -1}, 1.0f, 0.5f},
-    };
-    for (i = 0; i < (int)(sizeof conv / sizeof conv[0]); ++i) {
-        sample_query3 q = q_dir(conv[i].r);
-        CHECK(ls_latlong_query(&q, &o) == 0 && o.s == conv[i].s && o.t == conv[i].t, "direction %d: (%g, %g)", i,
-              o.s, o.t);
-    }
-    sample_sampler_init(&s);
-    for (j = 0; j < LH; ++j)
-        for (i = 0; i < LW; ++i) {
-            double r[3];
-            float a[4], b[4];
-            latlong_dir((i + 0.5) / LW, (j + 0.5) / LH, r);
-            s.mag_filter = SAMPLE_NEAREST;
-            ll_one(tex, &s, r, a);
-            s.mag_filter = SAMPLE_LINEAR;
-            ll_one(tex, &s, r, b);
-            for (c = 0; c < 4; ++c) {
-                CHECK_EQF(a[c], ll_data[j][i][c]);
-                CHECK_NEAR(b[c], ll_data[j][i][c], 1e-5);
-            }
-        }
-    for (j = 0; j < LH; ++j) {
-        double r[3];
-        float a[4];
-        latlong_dir(1.0, (j + 0.5) / LH, r);
-        r[0] = 0.0; /* exactly on the seam */
-        ll_one(tex, &s, r, a);
-        for (c = 0; c < 4; ++c) CHECK_NEAR(a[c], 0.5f * (ll_data[j][0][c] + ll_data[j][LW - 1][c]), 1e-5);
-    }
-    {
-        double r[3] = {0, 1, 0};
-        float a[4];
-        ll_one(tex, &s, r, a);
-        for (c = 0; c < 4; ++c)
-            CHECK_NEAR(a[c], 0.25f * (ll_data[0][LW / 2 - 1][c] + ll_data[0][LW / 2][c] + ll_data[0][LW - 1][c] +
-                                      ll_data[0][0][c]),
-                       1e-6);
-    }
-    sample_texture_destroy(tex);
-}
-
-/* The Jacobian of (s, t) against central differences of the mapping,
- * away from the seam and poles; and on the poles' axis ∂s = 0 (its limit
- * along the step's own meridian) with ∂t that of the latitude. */
-static void test_latlong_jacobian(void)
-{
-    uint32_t seed = 3;
-    int i, k;
-    for (i = 0; i < 50; ++i) {
-        sample_query3 q, qp, qm;
-        sample_query o, op, om;
-        const float h = 1e-3f;
-        memset(&q, 0, sizeof q);
-        for (k = 0; k < 3; ++k) {
-            q.p[k] = 2.0f * rnd(&seed) - 1.0f;
-            q.dpdx[k] = 2.0f * rnd(&seed) - 1.0f;
-        }
-        if (fabsf(q.p[0]) + fabsf(q.p[2]) < 0.3f || (q.p[2] < 0.0f && fabsf(q.p[0]) < 0.1f)) continue;
-        qp = qm = q;
-        for (k = 0; k < 3; ++k) {
-            qp.p[k] += h * q.dpdx[k];
-            qm.p[k] -= h * q.dpdx[k];
-        }
-        ls_latlong_query(&q, &o);
-        ls_latlong_query(&qp, &op);
-        ls_latlong_query(&qm, &om);
-        CHECK_NEAR(o.dsdx, (op.s - om.s) / (2.0f * h), 2e-3);
-        CHECK_NEAR(o.dtdx, (op.t - om.t) / (2.0f * h), 2e-3);
-    }
-    {
-        sample_query3 q;
-        sample_query o;
-        memset(&q, 0, sizeof q);
-        q.p[1] = 2.0f;
-        q.dpdx[0] = 0.5f; /* off the north pole by 0.25 rad per pixel: ∂t = 0.25/π */
-        ls_latlong_query(&q, &o);
-        CHECK(o.dsdx == 0.0f && o.dsdy == 0.0f && o.dtdy == 0.0f, "pole: %g %g %g", o.dsdx, o.dsdy, o.dtdy);
-        CHECK_NEAR(o.dtdx, 0.25 / 3.14159265358979323846, 1e-7);
-    }
-}
-
-/* Continuity across the seam (paths through s = 0 = 1 at several
- * latitudes, a footprint of about 2 texels along them) and over both
- * poles (a meridian through the pole, the footprint along it), every
- * filter; the same bound as the cube maps' edges. */
-static void test_latlong_continuity(void)
-{
-    sample_texture *tex = make_latlong();
-    static sample_query3 q[401];
-    static float out[401][4];
-    int fi, path, i, k;
-    for (fi = 0; fi < CONT_FILTERS; ++fi) {
-        sample_sampler s;
-        double worst = 0.0;
-        cont_sampler(fi, &s);
-        for (path = 0; path < 6; ++path) {
-            sample_batch3_args a;
-            for (i = 0; i <= 400; ++i) {
-                double tau = (double)i / 400, r[3], r2[3], st, tt, h = 1e-4;
-                if (path < 4) {
-                    /* Across the seam at latitude t = 0.2 … 0.8. */
-                    st = 1.0 - 0.2 / LW * 3 + tau * 0.4 / LW * 3;
-                    tt = 0.2 + 0.2 * path;
-                    latlong_dir(st, tt, r);
-                    latlong_dir(st + h, tt, r2);
-                } else {
-                    /* Over a pole along the meridian s = 0.3 (and 0.8),
-                     * stepping over the pole point itself, where s is
-                     * undefined and a map whose first row is not constant
-                     * has no single value. */
-                    double lat = ((i + 0.5) / 400.0 - 0.5) * 3.0 / LH; /* past the pole: < 0 */
-                    st = lat < 0.0 ? 0.3 : 0.8;
-                    tt = fabs(lat);
-                    if (path == 5) tt = 1.0 - tt;
-                    latlong_dir(st, tt, r);
-                    latlong_dir(st, tt + h, r2);
-
-                }
-                for (k = 0; k < 3; ++k) {
-                    q[i].p[k] = (float)r[k];
-                    /* A footprint of about 2 texels along the path. */
-                    q[i].dpdx[k] = (float)((r2[k] - r[k]) / h * (path < 4 ? 2.0 / LW : 2.0 / LH));
-                    q[i].dpdy[k] = 0.0f;
-                }
-            }
-            memset(&a, 0, sizeof a);
-            a.count = 401;
-            a.queries = q;
-            a.rgba = &out[0][0];
-            CHECK(sample_batch_latlong(tex, &s, &a) == SAMPLE_OK, "batch");
-            for (i = 1; i <= 400; ++i)
-                for (k = 0; k < 4; ++k) {
-                    double d = fabs((double)out[i][k] - (double)out[i - 1][k]);
-                    if (d > CONT_BOUND && getenv("TEST_CUBE_VERBOSE"))
-                        printf("  %s path %d step %d: %.4f\n", cont_filters[fi].name, path, i, d);
-                    worst = fmax(worst, d);
-                }
-        }
-        CHECK(worst <= CONT_BOUND, "%s: a step of %g across the seam or a pole", cont_filters[fi].name, worst);
-        if (getenv("TEST_CUBE_VERBOSE"))
-            printf("lat-long continuity %s: max step %.4f\n", cont_filters[fi].name, worst);
-    }
-    sample_texture_destroy(tex);
-}
-
-/* Bad input and kinds, as for cube maps. */
-static void test_latlong_bad(void)
-{
-    sample_texture *tex = make_latlong(), *cube = make_cube(2, NULL);
-    sample_sampler s;
-    sample_query3 q[3];
-    float out[3][4];
-    sample_batch3_args a;
-    int i, c;
-    sample_sampler_init(&s);
-    s.border_color[1] = 0.75f;
-    memset(q, 0, sizeof q);
-    q[0].p[0] = NAN;
-    q[2].p[0] = 1.0f;
-    q[2].dpdy[1] = INFINITY;
-    memset(&a, 0, sizeof a);
-    a.count = 3;
-    a.queries = q;
-    a.rgba = &out[0][0];
-    CHECK(sample_batch_latlong(tex, &s, &a) == SAMPLE_OK, "batch");
-    for (i = 0; i < 3; ++i)
-        for (c = 0; c < 4; ++c) CHECK_EQF(out[i][c], s.border_color[c]);
-    CHECK(sample_batch_latlong(cube, &s, &a) == SAMPLE_E_INVALID_ARGUMENT, "cube accepted as lat-long");
-    sample_texture_destroy(cube);
-    sample_texture_destroy(tex);
-}
-
 int main(void)
 {
     RUN(test_face_selection);
@@ -1032,9 +721,5 @@ int main(void)
     RUN(test_pyramids);
     RUN(test_face_interior);
     RUN(test_continuity);
-    RUN(test_latlong_values);
-    RUN(test_latlong_jacobian);
-    RUN(test_latlong_continuity);
-    RUN(test_latlong_bad);
     return check_finish();
 }

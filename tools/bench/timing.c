@@ -48,7 +48,7 @@ typedef struct job {
     float *rgba;
     size_t n, batch, tile;
     int failed;
-    unsigned seen; /* the last pass this worker ran */
+    unsigned seen; /* the last timed run this worker took part in */
     pool *p;
 } job;
 

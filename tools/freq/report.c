@@ -149,7 +149,7 @@ static void table_by_r(const fq_plan *plan, const fq_sweep *s, const table_fmt *
     const char *cols[16];
     char names[16][32];
     int b, ir, n = plan->nr < 15 ? plan->nr : 15;
-    cols[0] = "filter: pass / alias (worst pass / worst alias)";
+    cols[0] = "filter: pass band / aliasing (worst of each)";
     for (ir = 0; ir < n; ++ir) {
         snprintf(names[ir], sizeof names[ir], "r = %g", plan->r[ir]);
         cols[ir + 1] = names[ir];
