@@ -45,14 +45,14 @@ endif()
 # Solid textures baked into 3D textures, through compare's view, truth and
 # runs on a tiny scene (tests/compare_solid.c).
 if(TARGET texsample_render)
-  set(_solid_sources configs view run truth metrics)
+  set(_solid_sources configs view run backends truth metrics)
   list(TRANSFORM _solid_sources PREPEND ${PROJECT_SOURCE_DIR}/tools/compare/)
   list(TRANSFORM _solid_sources APPEND .c)
   add_executable(compare_solid ${CMAKE_CURRENT_SOURCE_DIR}/compare_solid.c ${_solid_sources}
-                 ${PROJECT_SOURCE_DIR}/tools/filters.c ${PROJECT_SOURCE_DIR}/tools/cli.c)
+                 ${PROJECT_SOURCE_DIR}/tools/cli.c)
   target_include_directories(compare_solid PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
                              ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
-  target_link_libraries(compare_solid PRIVATE texsample_render m)
+  target_link_libraries(compare_solid PRIVATE texsample_freq texsample_render m)
   target_compile_options(compare_solid PRIVATE ${SAMPLE_WARNINGS})
   add_test(NAME compare_solid COMMAND compare_solid)
 endif()

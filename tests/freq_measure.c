@@ -13,9 +13,10 @@
 static const fq_backend *backend(const char *name)
 {
     static fq_backend b;
+    static fq_tool_cfg cfg;
     const tool_filter *f = tool_filter_by_name(name);
-    if (!f) return NULL;
-    fq_libsample_backend(f, &b);
+    tool_backend_close(&cfg.own);
+    if (!f || fq_libsample_backend(f, &cfg, &b) != 0) return NULL;
     return &b;
 }
 

@@ -5,6 +5,7 @@
 #include "backend.h"
 #include "filters.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 int tool_backend_prepare(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
@@ -20,8 +21,59 @@ int tool_backend_sample(tool_backend *b, tool_backend_tex *tx, const sample_quer
                         size_t errlen)
 {
     tool_backend_times none = {0, 0, 0};
+    tool_backend_batch a;
+    sample_stats *stats = NULL;
+    size_t i;
+    int rc;
     if (n == 0) return 0;
-    return b->ops->sample(b, tx, q, n, rgba, texels, t ? t : &none, err, errlen);
+    if (b->ops->sample) return b->ops->sample(b, tx, q, n, rgba, texels, t ? t : &none, err, errlen);
+    /* A backend with run alone: the texel counts from its stats. Stats in
+     * the timed call: their cost is the same small per-query store for
+     * every libsample filter (doc/frequency-tests.md §5). */
+    if (texels && b->counts_texels && !(stats = malloc(n * sizeof *stats))) {
+        snprintf(err, errlen, "out of memory");
+        return TOOL_BACKEND_ERROR;
+    }
+    memset(&a, 0, sizeof a);
+    a.count = n;
+    a.q = q;
+    a.rgba = rgba;
+    a.stats = stats;
+    rc = b->ops->run(b, tx, &a, t ? t : &none, err, errlen);
+    if (rc == 0 && stats)
+        for (i = 0; i < n; ++i) *texels += stats[i].texels;
+    free(stats);
+    return rc;
+}
+
+int tool_backend_prepare_env(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
+                             tool_backend_tex **out, tool_backend_times *t, char *err,
+                             size_t errlen)
+{
+    tool_backend_times none = {0, 0, 0};
+    *out = NULL;
+    if (!b->ops->prepare_env) {
+        snprintf(err, errlen, "no environment maps");
+        return TOOL_BACKEND_NA;
+    }
+    return b->ops->prepare_env(b, tex, smp, out, t ? t : &none, err, errlen);
+}
+
+int tool_backend_run(tool_backend *b, tool_backend_tex *tx, const tool_backend_batch *a,
+                     tool_backend_times *t, char *err, size_t errlen)
+{
+    tool_backend_times none = {0, 0, 0};
+    const char *lacks = NULL;
+    if (a->count == 0) return 0;
+    if (b->ops->run) return b->ops->run(b, tx, a, t ? t : &none, err, errlen);
+    if (a->q3) lacks = "direction or volume queries";
+    else if (a->corners) lacks = "exact footprint corners";
+    else if (a->u) lacks = "stochastic draws";
+    if (lacks) {
+        snprintf(err, errlen, "no %s", lacks);
+        return TOOL_BACKEND_NA;
+    }
+    return b->ops->sample(b, tx, a->q, a->count, a->rgba, NULL, t ? t : &none, err, errlen);
 }
 
 void tool_backend_release(tool_backend *b, tool_backend_tex *tx)

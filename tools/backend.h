@@ -4,6 +4,8 @@
  * queries on the same texels and scored against the same ground truth.
  *
  *   backends/libsample.c  libsample itself (sample_batch), any registry entry
+ *   backends/oiio.c       OpenImageIO's TextureSystem (tools/oiio/oiio_ts.h)
+ *                         at a registry entry's twin settings
  *   backends/gl.c         an OpenGL driver through EGL: textureGrad in a
  *                         fragment shader (Mesa llvmpipe by default, any
  *                         EGL device by name)
@@ -22,6 +24,7 @@
 #ifndef TEXSAMPLE_BACKEND_H
 #define TEXSAMPLE_BACKEND_H
 
+#include "oiio/oiio_ts.h"
 #include "sample/sample.h"
 
 #include <stddef.h>
@@ -43,6 +46,22 @@ typedef struct tool_backend_times {
 typedef struct tool_backend tool_backend;
 typedef struct tool_backend_tex tool_backend_tex;
 
+/* A batch with everything a row may ask: 2D queries or, on the texture
+ * prepare saw, direction queries (an environment map: sample_batch_env) or
+ * volume queries (a 3D texture: sample_batch_3d); the exact footprint
+ * corners and the stochastic draws of sample_batch_args (DESIGN §7,
+ * doc/footprint-filters.md "Stochastic"). */
+typedef struct tool_backend_batch {
+    size_t count;
+    const sample_query *q;       /* 2D queries, or NULL with q3 */
+    const sample_query3 *q3;     /* direction or volume queries, or NULL */
+    const sample_quad *corners;  /* exact corners (2D only), or NULL */
+    const float *u;              /* per query a uniform in [0, 1): stochastic, or NULL */
+    unsigned draws;              /* texels per EWA / Blinn–Newell estimate with u */
+    float *rgba;                 /* count × 4 out */
+    sample_stats *stats;         /* per query, by backends that count texels; or NULL */
+} tool_backend_batch;
+
 typedef struct tool_backend_ops {
     /* tex: a 2D or other texture of libsample (its levels are what the
      * backend receives); smp: the full sampler state. Returns 0 with *out
@@ -55,6 +74,15 @@ typedef struct tool_backend_ops {
      * TOOL_BACKEND_ERROR with a message. */
     int (*sample)(tool_backend *b, tool_backend_tex *tx, const sample_query *q, size_t n,
                   float *rgba, double *texels, tool_backend_times *t, char *err, size_t errlen);
+    /* Optional: prepare an environment map (a lat-long 2D texture or a cube
+     * map) for direction queries; NULL: the backend has none (n/a). */
+    int (*prepare_env)(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
+                       tool_backend_tex **out, tool_backend_times *t, char *err, size_t errlen);
+    /* Optional: the whole batch (direction and volume queries, corners,
+     * stochastic draws). A backend without it answers 2D batches through
+     * `sample`, and anything more is n/a (tool_backend_run). */
+    int (*run)(tool_backend *b, tool_backend_tex *tx, const tool_backend_batch *a,
+               tool_backend_times *t, char *err, size_t errlen);
     void (*release)(tool_backend *b, tool_backend_tex *tx);
     void (*close)(tool_backend *b);
 } tool_backend_ops;
@@ -66,14 +94,39 @@ struct tool_backend {
      * "program: python3 tools/examples/bilinear.py". */
     char driver[384];
     int counts_texels; /* 1: sample adds the texels read */
+    /* 1: sample and run may be called from many threads at once on one
+     * prepared texture (libsample, OpenImageIO); 0: one caller at a time
+     * (a GL context, a program's files). */
+    int thread_safe;
     void *impl;
 };
 
 /* ---- Opening ------------------------------------------------------------- */
 
-/* libsample (sample_batch; the reference path when `reference`). Never
- * fails. */
-void tool_backend_libsample(tool_backend *b, int reference);
+/* libsample: 2D batches through `batch` (NULL: sample_batch; the tools
+ * pass sample_batch_reference for the reference path, sample/testing.h),
+ * direction queries through sample_batch_env, volume queries through
+ * sample_batch_3d. Returns 0, or TOOL_BACKEND_ERROR (out of memory). */
+typedef sample_status (*tool_batch_fn)(const sample_texture *tex, const sample_sampler *smp,
+                                       const sample_batch_args *args);
+int tool_backend_libsample(tool_backend *b, tool_batch_fn batch);
+
+/* OpenImageIO's TextureSystem (backends/oiio.c) at the settings `opts`
+ * (a registry entry's twin: tool_filter_oiio_opts; the wrap modes come
+ * from the sampler prepare gets). prepare writes the texture's base level
+ * as OpenImageIO's own mip-mapped file (oiio_ts_make_texture, as maketx
+ * would) and opens it; prepare_env writes an environment map's as
+ * OpenImageIO's lat-long map (sample_io_write_env).
+ * Backends opened on one store share its TextureSystem (cache_mb MiB;
+ * 0: OpenImageIO's default) and its last file, so that rows asked the same
+ * texels read the same file. Returns 0, or TOOL_BACKEND_ERROR (no
+ * OpenImageIO in this build, no temporary folder). */
+typedef struct tool_oiio_store tool_oiio_store;
+int tool_oiio_available(void);
+tool_oiio_store *tool_oiio_store_open(double cache_mb, char *err, size_t errlen);
+void tool_oiio_store_close(tool_oiio_store *s);
+int tool_backend_oiio_open(tool_backend *b, tool_oiio_store *store, const oiio_ts_opts *opts,
+                           char *err, size_t errlen);
 
 /* 1 when this build has the OpenGL backend (EGL found at configure time). */
 int tool_backend_gl_available(void);
@@ -100,6 +153,16 @@ int tool_backend_prepare(tool_backend *b, const sample_texture *tex, const sampl
 int tool_backend_sample(tool_backend *b, tool_backend_tex *tx, const sample_query *q, size_t n,
                         float *rgba, double *texels, tool_backend_times *t, char *err,
                         size_t errlen);
+/* prepare for an environment map's direction queries (prepare_env). */
+int tool_backend_prepare_env(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
+                             tool_backend_tex **out, tool_backend_times *t, char *err,
+                             size_t errlen);
+/* The whole batch: through the backend's run, or, for a plain 2D batch,
+ * its sample (stats then left alone). A batch the backend cannot answer
+ * (direction queries on OpenGL, stochastic draws in a program) is
+ * TOOL_BACKEND_NA with the reason. */
+int tool_backend_run(tool_backend *b, tool_backend_tex *tx, const tool_backend_batch *a,
+                     tool_backend_times *t, char *err, size_t errlen);
 void tool_backend_release(tool_backend *b, tool_backend_tex *tx);
 /* Accepts a backend that was never opened (zeroed). */
 void tool_backend_close(tool_backend *b);

@@ -1,17 +1,19 @@
-# The backends (tools/backend.h): libsample, OpenGL through EGL, outside
-# programs. A static library shared by texsample (compare, freq, bench) and
-# the tests (tests/backends.cmake). The OpenGL backend is compiled in where
+# The backends (tools/backend.h) beside libsample's (which rides in
+# texsample_freq with the interface, tools/freq.cmake): OpenGL through EGL
+# and outside programs, a static library shared by texsample (compare,
+# freq, bench) and the tests (tests/backends.cmake); OpenImageIO's
+# (backends/oiio.c) is compiled into texsample, which has the OpenImageIO
+# shim (tools/oiio.cmake). The OpenGL backend is compiled in where
 # CMake finds EGL and the GL headers (Debian: libegl-dev, libgl-dev; at run
 # time Mesa's EGL driver, libegl-mesa0); elsewhere it reports that it is
 # missing and its tests skip.
-set(TEXSAMPLE_BACKEND_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/backend.c
-  ${CMAKE_CURRENT_SOURCE_DIR}/backends/libsample.c
-  ${CMAKE_CURRENT_SOURCE_DIR}/backends/gl.c
+set(TEXSAMPLE_BACKEND_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/backends/gl.c
   ${CMAKE_CURRENT_SOURCE_DIR}/backends/program.c)
 add_library(texsample_backends STATIC ${TEXSAMPLE_BACKEND_SOURCES})
 target_include_directories(texsample_backends PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_compile_options(texsample_backends PRIVATE ${SAMPLE_WARNINGS})
-# The registry (tools/filters.c) rides in texsample_freq (tools/freq.cmake).
+# The registry (tools/filters.c) and the interface (tools/backend.c) ride in
+# texsample_freq (tools/freq.cmake).
 target_link_libraries(texsample_backends PUBLIC sample texsample_freq)
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL QUIET COMPONENTS OpenGL EGL)

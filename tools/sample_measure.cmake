@@ -13,7 +13,7 @@
 # Not in the sanitizer and fuzzing builds: nothing there loads it (the
 # Python tests are not run under them, tests/python.cmake).
 if(TARGET texsample_render AND NOT SAMPLE_SANITIZE AND NOT SAMPLE_TSAN AND NOT SAMPLE_FUZZ)
-  set(_cmp_sources configs scenes view run truth metrics sample_compare)
+  set(_cmp_sources configs scenes view run backends truth metrics sample_compare)
   list(TRANSFORM _cmp_sources PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/compare/)
   list(TRANSFORM _cmp_sources APPEND .c)
   add_library(sample_measure SHARED ${TEXSAMPLE_FREQ_SOURCES} ${_cmp_sources}

@@ -527,7 +527,8 @@ static void gl_release(tool_backend *b, tool_backend_tex *x)
     free(x);
 }
 
-static const tool_backend_ops gl_ops = {gl_prepare, gl_sample, gl_release, gl_close};
+static const tool_backend_ops gl_ops = {
+    .prepare = gl_prepare, .sample = gl_sample, .release = gl_release, .close = gl_close};
 
 int tool_backend_gl_open(tool_backend *b, const char *device, char *err, size_t errlen)
 {

@@ -1,19 +1,24 @@
 /* libsample as a backend (backend.h): sample_batch on the caller's texture
- * with the caller's sampler state, texels counted. */
+ * with the caller's sampler state, texels counted; direction queries
+ * through sample_batch_env, volume queries through sample_batch_3d. One
+ * prepared texture serves any number of threads (sample.h: the batch
+ * calls only read the texture and the sampler). */
 #include "backend.h"
-#include "sample/testing.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 struct tool_backend_tex {
     const sample_texture *tex;
     sample_sampler smp;
+    int volume; /* a 3D texture: q3 are volume queries (sample_batch_3d) */
 };
 
 static int lib_prepare(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
                        tool_backend_tex **out, tool_backend_times *t, char *err, size_t errlen)
 {
     tool_backend_tex *x;
+    sample_texture_info info;
     sample_status st = sample_sampler_validate(smp);
     (void)b;
     (void)t;
@@ -25,39 +30,45 @@ static int lib_prepare(tool_backend *b, const sample_texture *tex, const sample_
         snprintf(err, errlen, "out of memory");
         return TOOL_BACKEND_ERROR;
     }
+    sample_texture_info_get(tex, &info);
     x->tex = tex;
     x->smp = *smp;
+    x->volume = info.kind == SAMPLE_TEXTURE_3D;
     *out = x;
     return 0;
 }
 
-static int lib_sample(tool_backend *b, tool_backend_tex *x, const sample_query *q, size_t n,
-                      float *rgba, double *texels, tool_backend_times *t, char *err, size_t errlen)
+typedef struct lib_impl {
+    tool_batch_fn batch;
+} lib_impl;
+
+static int lib_run(tool_backend *b, tool_backend_tex *x, const tool_backend_batch *a,
+                   tool_backend_times *t, char *err, size_t errlen)
 {
-    sample_batch_args a = {0};
-    sample_stats *stats = NULL;
     sample_status st;
-    size_t i;
     (void)t;
-    /* Stats in the timed call: their cost is the same small per-query
-     * store for every libsample filter (doc/frequency-tests.md §5). */
-    if (texels && !(stats = malloc(n * sizeof *stats))) {
-        snprintf(err, errlen, "out of memory");
-        return TOOL_BACKEND_ERROR;
+    if (a->q3) {
+        sample_batch3_args a3 = {0};
+        a3.count = a->count;
+        a3.queries = a->q3;
+        a3.rgba = a->rgba;
+        a3.stats = a->stats;
+        st = (x->volume ? sample_batch_3d : sample_batch_env)(x->tex, &x->smp, &a3);
+    } else {
+        sample_batch_args a2 = {0};
+        a2.count = a->count;
+        a2.queries = a->q;
+        a2.corners = a->corners;
+        a2.rgba = a->rgba;
+        a2.stats = a->stats;
+        a2.u = a->u;
+        a2.draws = a->draws;
+        st = ((const lib_impl *)b->impl)->batch(x->tex, &x->smp, &a2);
     }
-    a.count = n;
-    a.queries = q;
-    a.rgba = rgba;
-    a.stats = stats;
-    st = (b->impl ? sample_batch_reference : sample_batch)(x->tex, &x->smp, &a);
     if (st != SAMPLE_OK) {
         snprintf(err, errlen, "sample_batch: %s", sample_strerror(st));
-        free(stats);
         return TOOL_BACKEND_ERROR;
     }
-    if (texels)
-        for (i = 0; i < n; ++i) *texels += stats[i].texels;
-    free(stats);
     return 0;
 }
 
@@ -67,16 +78,25 @@ static void lib_release(tool_backend *b, tool_backend_tex *x)
     free(x);
 }
 
-static void lib_close(tool_backend *b) { (void)b; }
+static void lib_close(tool_backend *b) { free(b->impl); }
 
-static const tool_backend_ops lib_ops = {lib_prepare, lib_sample, lib_release, lib_close};
+static const tool_backend_ops lib_ops = {.prepare = lib_prepare,
+                                         .prepare_env = lib_prepare,
+                                         .run = lib_run,
+                                         .release = lib_release,
+                                         .close = lib_close};
 
-void tool_backend_libsample(tool_backend *b, int reference)
+int tool_backend_libsample(tool_backend *b, tool_batch_fn batch)
 {
+    lib_impl *l = malloc(sizeof *l);
+    memset(b, 0, sizeof *b);
+    if (!l) return TOOL_BACKEND_ERROR;
+    l->batch = batch ? batch : sample_batch;
     b->ops = &lib_ops;
     snprintf(b->driver, sizeof b->driver, "libsample %s%s", SAMPLE_VERSION_STRING,
-             reference ? ", reference path" : "");
+             batch && batch != sample_batch ? ", reference path" : "");
     b->counts_texels = 1;
-    /* impl is only a flag here: non-NULL selects the reference path. */
-    b->impl = reference ? (void *)&lib_ops : NULL;
+    b->thread_safe = 1;
+    b->impl = l;
+    return 0;
 }

@@ -337,7 +337,8 @@ static void prog_close(tool_backend *b)
     b->impl = NULL;
 }
 
-static const tool_backend_ops prog_ops = {prog_prepare, prog_sample, prog_release, prog_close};
+static const tool_backend_ops prog_ops = {
+    .prepare = prog_prepare, .sample = prog_sample, .release = prog_release, .close = prog_close};
 
 int tool_backend_program_open(tool_backend *b, const char *command, char *err, size_t errlen)
 {

@@ -2,8 +2,10 @@
  * texsample compare: every filter configuration against the
  * ground truth of DESIGN §8, in pictures and numbers (doc/comparison.md).
  * For each scene: one ray cast per pixel (view.c), the ground truth
- * (truth.c), each configuration (run.c, oiio.c), metrics (metrics.c), the
- * pictures (sheet.c); then the tables and the page (report.c).
+ * (truth.c), each configuration through its backend (backends.c, run.c),
+ * the stochastic filters' sweep when asked (stochastic.c), metrics
+ * (metrics.c), the pictures (sheet.c, cost.c); then the tables and the page
+ * (report.c).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
@@ -29,14 +31,19 @@ typedef struct opts {
     const char *gl_device;
     tool_program_row prog[MAX_PROGRAMS];
     int nprog;
-    tool_backend gl, progb[MAX_PROGRAMS]; /* opened by open_backends */
+    /* opened by open_backends: libsample, OpenImageIO (one per row, one
+     * store), OpenGL, the programs */
+    tool_backend lib, oiio[CMP_MAX_CONFIGS], gl, progb[MAX_PROGRAMS];
+    tool_oiio_store *store;
+    int spp[CMP_MAX_SPP], nspp; /* the stochastic sweep; nspp 0: none */
+    int draws;
 } opts;
 
 /* The rows compare runs: any registry pick, corners included; OpenImageIO's
  * twins unless --no-oiio; OpenGL's where the build has EGL. */
 static unsigned accepted(int no_oiio)
 {
-    return TOOL_PICK_CORNERS | (no_oiio ? 0u : TOOL_PICK_OIIO) |
+    return TOOL_PICK_CORNERS | (no_oiio || !tool_oiio_available() ? 0u : TOOL_PICK_OIIO) |
            (tool_backend_gl_available() ? TOOL_PICK_GL : 0u);
 }
 
@@ -79,9 +86,31 @@ static void usage(void)
     tool_picks_help(stdout, "                     ", cmp_default_configs, accepted(0));
     tool_backend_help(stdout, 22);
     printf("  --no-oiio           leave out OpenImageIO's TextureSystem\n"
+           "  --spp LIST          also score the stochastic filters among the rows as RMSE\n"
+           "                      against samples per pixel, at these counts (increasing,\n"
+           "                      1 to 1024, e.g. 1,2,4,8,16,32); default: no sweep\n"
+           "  --draws K           texels per EWA / Blinn-Newell stochastic lookup (default\n"
+           "                      1; 1 to 64)\n"
            "  --raw               also write float32 RGBA images (truth.f32, CONFIG.f32) and\n"
            "                      the metric mask (mask.u8) into each scene's folder\n\n"
            "Exit codes: 0 success, 1 runtime error, 2 usage error.\n");
+}
+
+/* "1,2,4" into o->spp: increasing counts 1 to 1024. Returns 0, or −1. */
+static int parse_spp(const char *v, opts *o)
+{
+    char buf[256], *tok, *save = NULL;
+    if (strlen(v) >= sizeof buf) return -1;
+    memcpy(buf, v, strlen(v) + 1);
+    o->nspp = 0;
+    for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        int n;
+        if (o->nspp == CMP_MAX_SPP || !cli_parse_int(tok, &n) || n < 1 || n > 1024 ||
+            (o->nspp && n <= o->spp[o->nspp - 1]))
+            return -1;
+        o->spp[o->nspp++] = n;
+    }
+    return o->nspp ? 0 : -1;
 }
 
 static int parse_args(int argc, char **argv, opts *o)
@@ -93,6 +122,7 @@ static int parse_args(int argc, char **argv, opts *o)
     o->size = 256;
     o->truth = 32;
     o->runs = 3;
+    o->draws = 1;
     o->out = "out/compare";
     {
         long n = sysconf(_SC_NPROCESSORS_ONLN);
@@ -127,6 +157,13 @@ static int parse_args(int argc, char **argv, opts *o)
         } else if (cli_opt(argc, argv, &i, "--configs", &v)) {
             if (!v) return cli_usage_error("compare", "--configs needs a list");
             configs = v;
+        } else if (cli_opt(argc, argv, &i, "--spp", &v)) {
+            if (!v || parse_spp(v, o) != 0)
+                return cli_usage_error("compare", "--spp needs up to %d increasing counts 1 to 1024",
+                                       CMP_MAX_SPP);
+        } else if (cli_opt(argc, argv, &i, "--draws", &v)) {
+            if (!v || !cli_parse_int(v, &o->draws) || o->draws < 1 || o->draws > 64)
+                return cli_usage_error("compare", "--draws needs an integer 1 to 64");
         } else if (cli_opt(argc, argv, &i, "--no-oiio", NULL)) {
             no_oiio = 1;
         } else if (cli_opt(argc, argv, &i, "--gl-device", &v)) {
@@ -154,7 +191,7 @@ static int parse_args(int argc, char **argv, opts *o)
     o->ncfg = cmp_configs_parse(configs, accepted(no_oiio), o->cfg, CMP_MAX_CONFIGS, err, sizeof err);
     if (o->ncfg < 0) return cli_usage_error("compare", "--configs: %s", err);
     for (k = 0; k < o->ncfg; ++k)
-        if (o->cfg[k].pick.gl) o->cfg[k].tb = &o->gl;
+        o->cfg[k].tb = o->cfg[k].pick.gl ? &o->gl : o->cfg[k].pick.oiio ? &o->oiio[k] : &o->lib;
     if (o->ncfg + o->nprog > CMP_MAX_CONFIGS)
         return cli_usage_error("compare", "at most %d rows in all", CMP_MAX_CONFIGS);
     /* The programs' rows after the registry's. */
@@ -176,12 +213,24 @@ static int parse_args(int argc, char **argv, opts *o)
     return -1;
 }
 
-/* The OpenGL context (once, for every gl-* row) and the programs. */
+/* libsample, OpenImageIO's TextureSystem (one store for every oiio-* row),
+ * the OpenGL context (once, for every gl-* row) and the programs. */
 static int open_backends(opts *o)
 {
     char err[512];
     int k, gl = 0;
-    for (k = 0; k < o->ncfg; ++k) gl |= o->cfg[k].pick.gl;
+    if (tool_backend_libsample(&o->lib, NULL) != 0) return cli_runtime_error("compare", "out of memory");
+    for (k = 0; k < o->ncfg; ++k) {
+        oiio_ts_opts twin;
+        gl |= o->cfg[k].pick.gl;
+        if (!o->cfg[k].pick.oiio) continue;
+        if (!o->store && !(o->store = tool_oiio_store_open(0.0, err, sizeof err)))
+            return cli_runtime_error("compare", "OpenImageIO: %s", err);
+        oiio_ts_opts_init(&twin);
+        tool_filter_oiio_opts(o->cfg[k].pick.f, &twin);
+        if (tool_backend_oiio_open(&o->oiio[k], o->store, &twin, err, sizeof err) != 0)
+            return cli_runtime_error("compare", "OpenImageIO: %s", err);
+    }
     if (gl && tool_backend_gl_open(&o->gl, o->gl_device, err, sizeof err) != 0)
         return cli_runtime_error("compare", "OpenGL: %s", err);
     for (k = 0; k < o->nprog; ++k)
@@ -193,8 +242,45 @@ static int open_backends(opts *o)
 static void close_backends(opts *o)
 {
     int k;
+    tool_backend_close(&o->lib);
+    for (k = 0; k < CMP_MAX_CONFIGS; ++k) tool_backend_close(&o->oiio[k]);
+    tool_oiio_store_close(o->store);
+    o->store = NULL;
     tool_backend_close(&o->gl);
     for (k = 0; k < o->nprog; ++k) tool_backend_close(&o->progb[k]);
+}
+
+/* The stochastic rows' sweep (stochastic.c), after the rows: each row's
+ * deterministic RMSE is its row's. */
+static int sweep_scene(const opts *o, const cmp_view *v, const cmp_truth *t, cmp_scene_result *s)
+{
+    char err[256];
+    int r;
+    memcpy(s->spp, o->spp, sizeof s->spp);
+    s->nspp = o->nspp;
+    s->draws = (unsigned)o->draws;
+    for (r = 0; r < s->nrows; ++r) {
+        const cmp_row *w = &s->rows[r];
+        cmp_spp_row *x;
+        int st;
+        if (!w->ok || !cmp_config_stochastic(w->cfg, &v->sampler)) continue;
+        x = &s->spp_rows[s->nspp_rows];
+        fprintf(stderr, "compare %s: %s, 1 to %d samples per pixel\n", s->label, w->cfg->label,
+                o->spp[o->nspp - 1]);
+        st = cmp_spp_sweep(v, w->cfg, t, o->spp, o->nspp, (unsigned)o->draws, o->threads, x, err,
+                           sizeof err);
+        if (st == TOOL_BACKEND_NA) {
+            fprintf(stderr, "texsample compare: %s: %s: stochastic sweep n/a: %s\n", s->label,
+                    w->cfg->name, err);
+            continue;
+        }
+        if (st != 0)
+            return cli_runtime_error("compare", "%s: %s: stochastic sweep: %s", s->label,
+                                     w->cfg->name, err);
+        x->det_rmse = w->m.rmse;
+        ++s->nspp_rows;
+    }
+    return cmp_spp_plot(o->out, s) ? EXIT_RUNTIME : EXIT_OK;
 }
 
 /* mkdir -p */
@@ -291,8 +377,8 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
         cmp_result r;
         w->cfg = c;
         fprintf(stderr, "compare %s: %s\n", s->label, c->label);
-        if (c->tb) {
-            int st = cmp_run_backend(&v, c, o->runs, &r, w->note, sizeof w->note);
+        {
+            int st = cmp_run_backend(&v, c, o->threads, o->runs, &r, w->note, sizeof w->note);
             if (st == TOOL_BACKEND_NA) {
                 w->na = 1;
                 fprintf(stderr, "texsample compare: %s: %s: n/a: %s\n", s->label, c->name, w->note);
@@ -302,11 +388,6 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
                 cli_runtime_error("compare", "%s: %s: %s", s->label, c->name, w->note);
                 goto out;
             }
-        } else if (c->pick.oiio
-                ? cmp_run_oiio(&v, c, dir, o->threads, o->runs, &r, w->note, sizeof w->note)
-                : cmp_run_sample(&v, c, o->threads, o->runs, &r, w->note, sizeof w->note)) {
-            fprintf(stderr, "texsample compare: %s: %s (left out)\n", s->label, w->note);
-            continue;
         }
         w->ok = 1;
         cmp_metrics_compute(r.rgba, t.rgba, t.mask, s->pixels, &w->m);
@@ -320,6 +401,7 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
         size_t px;
         for (px = 0; px < s->pixels; ++px) s->measured += t.mask[px];
     }
+    if (o->nspp && sweep_scene(o, &v, &t, s) != EXIT_OK) goto out;
     choose_crop(s, images, &t);
     if (cmp_scene_pictures(o->out, s, &t, images) || cmp_cost_plot(o->out, s)) goto out;
     if (o->raw) {
@@ -374,6 +456,22 @@ static void print_table(const cmp_scene_result *s)
     }
 }
 
+static void print_spp_table(const cmp_scene_result *s)
+{
+    int r, k;
+    if (!s->nspp_rows) return;
+    printf("%s, stochastic filters: RMSE at samples per pixel (%u texel%s per EWA / Blinn-Newell "
+           "lookup)\n  %-28s", s->label, s->draws, s->draws == 1 ? "" : "s", "filter");
+    for (k = 0; k < s->nspp; ++k) printf(" %8d", s->spp[k]);
+    printf(" %8s %10s\n", "determ.", "ns/sample");
+    for (r = 0; r < s->nspp_rows; ++r) {
+        const cmp_spp_row *w = &s->spp_rows[r];
+        printf("  %-28.28s", w->cfg->label);
+        for (k = 0; k < s->nspp; ++k) printf(" %8.5f", w->rmse[k]);
+        printf(" %8.5f %10.1f\n", w->det_rmse, w->ns_per_sample);
+    }
+}
+
 int cmd_compare(int argc, char **argv)
 {
     opts o;
@@ -412,9 +510,15 @@ int cmd_compare(int argc, char **argv)
         snprintf(path, sizeof path, "%s/index.html", o.out);
         if (cmp_write_html(path, res, o.nscenes, command))
             rc = cli_runtime_error("compare", "cannot write %s", path);
+        snprintf(path, sizeof path, "%s/stochastic.csv", o.out);
+        if (o.nspp && cmp_write_spp_csv(path, res, o.nscenes))
+            rc = cli_runtime_error("compare", "cannot write %s", path);
     }
     if (rc == EXIT_OK) {
-        for (k = 0; k < o.nscenes; ++k) print_table(&res[k]);
+        for (k = 0; k < o.nscenes; ++k) {
+            print_table(&res[k]);
+            print_spp_table(&res[k]);
+        }
         printf("\nHTML page:      %s/index.html\n", o.out);
         printf("Table:          %s/results.csv, %s/results.json\n", o.out, o.out);
         for (k = 0; k < o.nscenes; ++k)

@@ -4,10 +4,10 @@
  *   configs.c     the default rows and --configs parsing (tools/filters.h)
  *   scenes.c      the built-in comparison set (scene names → scenes)
  *   view.c        one ray cast per pixel: the queries every filter answers
- *   run.c         one configuration over a view (libsample), timed
- *   oiio.c        the same through OpenImageIO's TextureSystem
- *   backends.c    the same through a backend of tools/backend.h (OpenGL,
- *                 outside programs)
+ *   run.c         one configuration over a view, on many threads, timed
+ *   backends.c    a row through its backend of tools/backend.h (libsample,
+ *                 OpenImageIO, OpenGL, outside programs)
+ *   stochastic.c  stochastic filters: RMSE against samples per pixel
  *   truth.c       the ground truth of DESIGN §8 and the metric mask
  *   metrics.c     RMSE, PSNR, per-pixel error, the worst crop
  *   picture.c     8-bit pictures: tone, heat map + legend, crops, contact sheet;
@@ -15,7 +15,9 @@
  *   font.c        a 5 × 7 bitmap font for labels in the pictures
  *   legend.c      where the heat map's colour scale and its labels go
  *   sheet.c       a scene's pictures and its contact sheet
- *   report.c      results.csv, results.json, index.html
+ *   cost.c        the plots: RMSE against ns/sample, and the writer
+ *                 stochastic.c's plot shares
+ *   report.c      results.csv, results.json, index.html, stochastic.csv
  *   cmd_compare.c the subcommand
  */
 #ifndef TEXSAMPLE_CMP_INTERNAL_H
@@ -33,12 +35,13 @@
 #define CMP_MAX_CONFIGS 32
 
 /* One row: a registry pick (libsample, its OpenImageIO or OpenGL twin), or
- * an outside program (pick.f NULL: the program's own filter). */
+ * an outside program (pick.f NULL: the program's own filter), and the
+ * backend that samples it. */
 typedef struct cmp_config {
     tool_pick pick;
     char name[TOOL_FILTER_NAME_MAX];   /* command-line and file name: "trilinear" */
     char label[TOOL_FILTER_LABEL_MAX]; /* what the page calls it */
-    tool_backend *tb; /* OpenGL and program rows: the backend that samples */
+    tool_backend *tb; /* the backend that samples (cmd_compare.c opens them) */
 } cmp_config;
 
 /* compare's default rows, NULL-terminated registry names. */
@@ -101,30 +104,49 @@ typedef struct cmp_result {
 } cmp_result;
 
 /* An engine: filter n queries of one texture (quad: exact corners or NULL)
- * into n × 4 floats; stats may be NULL. For the environment (texture ==
+ * into n × 4 floats; px: the queries' pixel indices; stats may be NULL. For the environment (texture ==
  * env_tex) and a solid texture (cmp_view_3d) q is NULL and q3 holds the
  * direction or volume queries; else q3 is NULL. Returns 0 on success. Called from
  * many threads at once. */
-typedef int (*cmp_batch_fn)(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
-                            const sample_quad *quad, size_t n, float *rgba, sample_stats *stats);
+typedef int (*cmp_batch_fn)(void *ctx, int texture, const size_t *px, const sample_query *q,
+                            const sample_query3 *q3, const sample_quad *quad, size_t n, float *rgba,
+                            sample_stats *stats);
 /* Run an engine over every textured pixel of the view, `runs` times (≥ 1)
  * (run.c): the times are the medians over the runs (one run's time moves
  * with whatever else the machine does); the image and texel counts are the
  * same every run. stats: ask for texel counts. Returns 0 on success. */
 int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stats, int threads,
             int runs, cmp_result *r);
-int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, int runs, cmp_result *r,
-                   char *err, size_t errlen);
-/* 1 if this build can run OpenImageIO's TextureSystem. */
-int cmp_oiio_available(void);
-int cmp_run_oiio(const cmp_view *v, const cmp_config *c, const char *workdir, int threads,
-                 int runs, cmp_result *r, char *err, size_t errlen);
-/* A row on c->tb (backends.c): every textured pixel, one batch per
- * texture, `runs` times; ns_per_sample is the sampling alone (the
- * backend's upload and read-back left out). Returns 0, TOOL_BACKEND_NA or
+
+/* ---- Rows through their backends (backends.c) ------------------------ */
+
+/* A row's backend with every texture of the view that a pixel uses
+ * prepared (tex[k] for texture k; tex[env_tex] the environment). */
+typedef struct cmp_prepared {
+    tool_backend *tb;
+    tool_backend_tex **tex;
+    int ntex;
+} cmp_prepared;
+/* Prepare c's backend for the view (the scene's sampler with c's filter; a
+ * solid texture with its own wrap). Returns 0, TOOL_BACKEND_NA or
  * TOOL_BACKEND_ERROR with the reason in err. */
-int cmp_run_backend(const cmp_view *v, const cmp_config *c, int runs, cmp_result *r, char *err,
-                    size_t errlen);
+int cmp_prepare(const cmp_view *v, const cmp_config *c, cmp_prepared *p, char *err, size_t errlen);
+void cmp_prepared_release(cmp_prepared *p);
+/* One batch of texture `texture` (tool_backend_run): u and draws for
+ * stochastic lookups (NULL, 0: deterministic); stats where the backend
+ * counts texels; t may be NULL. */
+int cmp_prepared_batch(const cmp_prepared *p, int texture, const sample_query *q,
+                       const sample_query3 *q3, const sample_quad *quad, const float *u,
+                       unsigned draws, size_t n, float *rgba, sample_stats *stats,
+                       tool_backend_times *t, char *err, size_t errlen);
+/* Row c over every textured pixel, `runs` times: a backend that serves
+ * many threads (libsample, OpenImageIO) through cmp_run on `threads`
+ * threads, with texel counts where it counts them; any other (OpenGL, a
+ * program) one batch per texture on one thread, ns_per_sample the sampling
+ * alone (the backend's upload and read-back left out). Returns 0,
+ * TOOL_BACKEND_NA or TOOL_BACKEND_ERROR with the reason in err. */
+int cmp_run_backend(const cmp_view *v, const cmp_config *c, int threads, int runs, cmp_result *r,
+                    char *err, size_t errlen);
 void cmp_result_free(cmp_result *r);
 
 /* Background and untextured pixels, shared by every engine. */
@@ -237,6 +259,16 @@ typedef struct cmp_row {
     double seconds, ns_per_sample, texels; /* texels < 0: not known */
 } cmp_row;
 
+/* A stochastic filter's sweep (stochastic.c). */
+#define CMP_MAX_SPP 12
+typedef struct cmp_spp_row {
+    const cmp_config *cfg;
+    int ok;
+    double rmse[CMP_MAX_SPP]; /* at the scene's spp[k] */
+    double det_rmse;          /* the deterministic row's (NaN: not run) */
+    double ns_per_sample;     /* one stochastic lookup, median over the lookups */
+} cmp_spp_row;
+
 typedef struct cmp_scene_result {
     char label[64];      /* file-name-safe; also the folder of its pictures */
     char source[256];    /* what --scene said */
@@ -248,6 +280,10 @@ typedef struct cmp_scene_result {
     int crop_x, crop_y, crop_size, crop_zoom;
     cmp_row rows[CMP_MAX_CONFIGS];
     int nrows;
+    int spp[CMP_MAX_SPP], nspp;    /* the sweep's samples per pixel; nspp 0: no sweep */
+    unsigned draws;                /* texels per EWA / Blinn–Newell lookup */
+    cmp_spp_row spp_rows[CMP_MAX_CONFIGS];
+    int nspp_rows;
 } cmp_scene_result;
 
 /* Paths of a scene's pictures relative to the output folder. */
@@ -259,16 +295,54 @@ void cmp_pic_path(char *out, size_t len, const cmp_scene_result *s, const char *
 int cmp_scene_pictures(const char *dir, const cmp_scene_result *s, const cmp_truth *t,
                        float *const *images);
 
-/* dir/<label>/cost.png: every row's RMSE against its ns/sample, with named
- * axes and a legend in the picture (cost.c); nothing when no row was timed.
+/* A plot (cost.c): series of (x, RMSE) points on a logarithmic x axis,
+ * named axes and a legend in the picture. */
+typedef struct cmp_series {
+    const char *label;
+    int colour;           /* palette index */
+    int n;                /* points; joined by lines when more than one */
+    const double *x, *y;
+    double hline;         /* >= 0: a dashed horizontal line at this RMSE */
+} cmp_series;
+typedef struct cmp_plot {
+    const char *title, *xlabel;
+    const double *xticks; /* NULL: decades */
+    int nxticks;
+    const cmp_series *series;
+    int nseries;
+} cmp_plot;
+/* Write the plot as a PNG at path; nothing when no series has a point.
  * Returns 0, or 1 after a message on stderr. */
+int cmp_plot_write(const char *path, const cmp_plot *pl);
+/* dir/<label>/cost.png: every row's RMSE against its ns/sample; nothing
+ * when no row was timed. Returns as cmp_plot_write. */
 int cmp_cost_plot(const char *dir, const cmp_scene_result *s);
+
+/* ---- Stochastic filters (stochastic.c) -------------------------------- */
+
+/* 1 if row c is libsample's and u changes its result (a footprint filter
+ * or a two-level mipmap blend). */
+int cmp_config_stochastic(const cmp_config *c, const sample_sampler *scene);
+/* The sweep's uniform for lookup `lookup` of pixel `pixel`: a fixed-seed
+ * hash, in [0, 1), the same on every run and for any thread count. */
+float cmp_spp_u(size_t pixel, int lookup);
+/* Row c at spp[0] < … < spp[nspp − 1] samples per pixel: each pixel the
+ * mean of spp stochastic lookups (draws texels per EWA / Blinn–Newell
+ * lookup), scored against t. Returns 0 (out->ok), TOOL_BACKEND_NA or
+ * TOOL_BACKEND_ERROR with the reason in err. */
+int cmp_spp_sweep(const cmp_view *v, const cmp_config *c, const cmp_truth *t, const int *spp, int nspp,
+                  unsigned draws, int threads, cmp_spp_row *out, char *err, size_t errlen);
+/* dir/<label>/spp.png: each swept row's RMSE against samples per pixel,
+ * its deterministic RMSE a dashed line; nothing without a sweep. */
+int cmp_spp_plot(const char *dir, const cmp_scene_result *s);
 
 /* results.csv, results.json, index.html in dir. command: the command line,
  * quoted on the page. Return 0 on success. */
 int cmp_write_csv(const char *path, const cmp_scene_result *s, int n);
 int cmp_write_json(const char *path, const cmp_scene_result *s, int n, const char *command);
 int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const char *command);
+/* stochastic.csv: every scene's sweep (nothing written when none ran). */
+int cmp_write_spp_csv(const char *path, const cmp_scene_result *s, int n);
 
 /* Monotonic seconds, for the timings (run.c). Rows run in parallel through
  * the renderer's render_parallel_rows (render.h). */

@@ -126,6 +126,27 @@ int cmp_write_csv(const char *path, const cmp_scene_result *s, int n)
     return bwrite(&b, path);
 }
 
+/* The stochastic sweep: one line per (scene, filter, spp). */
+int cmp_write_spp_csv(const char *path, const cmp_scene_result *s, int n)
+{
+    buf b = {0};
+    int k, r, j;
+    bprintf(&b, "scene,config,label,spp,draws,rmse,deterministic_rmse,ns_per_sample\n");
+    for (k = 0; k < n; ++k)
+        for (r = 0; r < s[k].nspp_rows; ++r) {
+            const cmp_spp_row *w = &s[k].spp_rows[r];
+            for (j = 0; j < s[k].nspp; ++j) {
+                bprintf(&b, "%s,%s,\"%s\",%d,%u,", s[k].label, w->cfg->name, w->cfg->label,
+                        s[k].spp[j], s[k].draws);
+                bnum(&b, w->rmse[j], "");
+                bprintf(&b, ",");
+                bnum(&b, w->det_rmse, "");
+                bprintf(&b, ",%.6g\n", w->ns_per_sample);
+            }
+        }
+    return bwrite(&b, path);
+}
+
 /* ---- JSON ---------------------------------------------------------------- */
 
 static void jstr(buf *b, const char *key, const char *v)
@@ -315,6 +336,32 @@ static int html_has_cost(const cmp_scene_result *c)
     return 0;
 }
 
+/* The stochastic sweep: its table (RMSE per samples per pixel, the
+ * deterministic RMSE, the time per lookup) and spp.png. */
+static void html_spp(buf *b, const cmp_scene_result *c)
+{
+    int r, k;
+    if (!c->nspp_rows) return;
+    bprintf(b, "<p>Stochastic filters (one random estimate per lookup, %u texel%s per EWA / "
+               "Blinn&ndash;Newell lookup): RMSE of the mean of <i>spp</i> lookups per pixel, "
+               "against the same ground truth; the deterministic filter's RMSE beside it.</p>\n"
+               "<table>\n<tr><th class=\"l\">filter</th>",
+            c->draws, c->draws == 1 ? "" : "s");
+    for (k = 0; k < c->nspp; ++k) bprintf(b, "<th>%d spp</th>", c->spp[k]);
+    bprintf(b, "<th>deterministic</th><th>ns/lookup,<br>median</th></tr>\n");
+    for (r = 0; r < c->nspp_rows; ++r) {
+        const cmp_spp_row *w = &c->spp_rows[r];
+        bprintf(b, "<tr><td class=\"l\">");
+        bescape(b, w->cfg->label, 0);
+        bprintf(b, "</td>");
+        for (k = 0; k < c->nspp; ++k) bprintf(b, "<td>%.5f</td>", w->rmse[k]);
+        bprintf(b, "<td>%.5f</td><td>%.1f</td></tr>\n", w->det_rmse, w->ns_per_sample);
+    }
+    bprintf(b, "</table>\n<p>");
+    html_img(b, c, "spp", "", 560, "RMSE against samples per pixel");
+    bprintf(b, "</p>\n");
+}
+
 /* A filter's (or the truth's) image and its heat map (the truth: its mask). */
 static void html_figure(buf *b, const cmp_scene_result *c, const char *name, const char *label,
                         const char *metrics, int heat)
@@ -383,6 +430,7 @@ int cmp_write_html(const char *path, const cmp_scene_result *s, int n, const cha
             html_img(&b, c, "cost", "", 560, "RMSE against ns/sample");
             bprintf(&b, "</p>\n");
         }
+        html_spp(&b, c);
         html_crop_strip(&b, c);
         bprintf(&b, "<div class=\"grid\">\n");
         html_figure(&b, c, "truth", "ground truth",

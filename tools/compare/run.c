@@ -1,6 +1,6 @@
 /*
- * One configuration over a view, for any engine (libsample here, OpenImageIO
- * in oiio.c). Each row is split into batches of pixels that share a texture
+ * One configuration over a view, for any engine (a backend of
+ * tools/backend.h that serves many threads: backends.c). Each row is split into batches of pixels that share a texture
  * (and, for the corner mode, have valid corners), because sample_batch() is
  * the primary entry point and validates once per call (sample.h §3); the
  * time spent inside the engine's calls is summed per row so ns/sample does
@@ -65,6 +65,7 @@ static void run_row(void *ctx, int j)
     size_t base = (size_t)j * (size_t)v->w;
     const int *tex = v->tex + base;
     int *list = malloc(sizeof *list * (size_t)v->w), *pix = malloc(sizeof *pix * (size_t)v->w);
+    size_t *gpx = malloc(sizeof *gpx * (size_t)v->w);
     sample_query *q = malloc(sizeof *q * (size_t)v->w);
     sample_query3 *q3 = v->q3 ? malloc(sizeof *q3 * (size_t)v->w) : NULL;
     sample_quad *quad = malloc(sizeof *quad * (size_t)v->w);
@@ -73,7 +74,7 @@ static void run_row(void *ctx, int j)
     int nt, t, pass, i, k;
     double secs = 0.0, texels = 0.0;
     size_t queries = 0;
-    if (!list || !pix || !q || !quad || !st || !out || (v->q3 && !q3)) {
+    if (!list || !pix || !gpx || !q || !quad || !st || !out || (v->q3 && !q3)) {
         jb->row_failed[j] = 1;
         goto done;
     }
@@ -89,11 +90,12 @@ static void run_row(void *ctx, int j)
                 if (three) q3[n] = v->q3[base + (size_t)i];
                 else q[n] = v->q[base + (size_t)i];
                 if (with) quad[n] = v->quad[base + (size_t)i];
+                gpx[n] = base + (size_t)i;
                 pix[n++] = i;
             }
             if (n == 0) continue;
             t0 = cmp_now();
-            if (jb->fn(jb->ctx, list[t], three ? NULL : q, three ? q3 : NULL, pass ? quad : NULL,
+            if (jb->fn(jb->ctx, list[t], gpx, three ? NULL : q, three ? q3 : NULL, pass ? quad : NULL,
                        (size_t)n, out, jb->stats ? st : NULL) != 0) {
                 jb->row_failed[j] = 1;
                 goto done;
@@ -112,6 +114,7 @@ done:
     jb->row_queries[j] = queries;
     free(list);
     free(pix);
+    free(gpx);
     free(q);
     free(q3);
     free(quad);
@@ -176,45 +179,6 @@ int cmp_run(const cmp_view *v, int corners, cmp_batch_fn fn, void *ctx, int stat
     free(ns);
     if (failed) cmp_result_free(r);
     return failed;
-}
-
-typedef struct sample_ctx {
-    const render_scene *sc;
-    sample_sampler smp;
-} sample_ctx;
-
-static int sample_fn(void *ctx, int texture, const sample_query *q, const sample_query3 *q3,
-                     const sample_quad *quad, size_t n, float *rgba, sample_stats *stats)
-{
-    const sample_ctx *c = ctx;
-    sample_batch_args a;
-    if (q3 && render_scene_texture_solid(c->sc, texture))
-        return render_scene_solid_sample(c->sc, texture, &c->smp, q3, n, rgba, stats) ? 0 : 1;
-    if (q3) return render_scene_env_sample(c->sc, &c->smp, q3, n, rgba, stats) ? 0 : 1;
-    memset(&a, 0, sizeof a);
-    a.count = n;
-    a.queries = q;
-    a.corners = quad;
-    a.rgba = rgba;
-    a.stats = stats;
-    return sample_batch(render_scene_texture(c->sc, texture), &c->smp, &a) == SAMPLE_OK ? 0 : 1;
-}
-
-int cmp_run_sample(const cmp_view *v, const cmp_config *c, int threads, int runs, cmp_result *r,
-                   char *err, size_t errlen)
-{
-    sample_ctx ctx;
-    ctx.sc = v->sc;
-    cmp_config_sampler(c, &v->sampler, &ctx.smp);
-    if (sample_sampler_validate(&ctx.smp) != SAMPLE_OK) {
-        snprintf(err, errlen, "%s: invalid sampler state", c->name);
-        return 1;
-    }
-    if (cmp_run(v, c->pick.f->corners, sample_fn, &ctx, 1, threads, runs, r)) {
-        snprintf(err, errlen, "%s: out of memory or sampling failed", c->name);
-        return 1;
-    }
-    return 0;
 }
 
 void cmp_result_free(cmp_result *r)

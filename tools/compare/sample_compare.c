@@ -22,10 +22,11 @@ typedef struct fn_ctx {
     char err[256];
 } fn_ctx;
 
-static int fn_batch(void *ctx, int texture, const sample_query *q, const sample_query3 *q3, const sample_quad *quad,
-                    size_t n, float *rgba, sample_stats *stats)
+static int fn_batch(void *ctx, int texture, const size_t *px, const sample_query *q, const sample_query3 *q3,
+                    const sample_quad *quad, size_t n, float *rgba, sample_stats *stats)
 {
     fn_ctx *c = (fn_ctx *)ctx;
+    (void)px;
     (void)quad;
     (void)stats;
     if (q3) {
@@ -58,6 +59,7 @@ static int run_filter(const sample_compare_params *p, const cmp_view *v, const s
         }
     } else {
         cmp_config cfg;
+        tool_backend lib;
         char perr[256];
         /* libsample's entries, corner mode included; not OpenImageIO's twins. */
         if (!f->name || cmp_configs_parse(f->name, TOOL_PICK_CORNERS, &cfg, 1, perr, sizeof perr) != 1) {
@@ -65,7 +67,15 @@ static int run_filter(const sample_compare_params *p, const cmp_view *v, const s
                      f->name ? f->name : "(null)");
             return -1;
         }
-        if (cmp_run_sample(v, &cfg, p->threads, 1, &r, err, errlen)) return -1;
+        int rc;
+        if (tool_backend_libsample(&lib, NULL) != 0) {
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+        cfg.tb = &lib;
+        rc = cmp_run_backend(v, &cfg, p->threads, 1, &r, err, errlen);
+        tool_backend_close(&lib);
+        if (rc) return -1;
     }
     cmp_metrics_compute(r.rgba, res->truth.rgba, res->truth.mask, n, &m);
     o->rmse = m.rmse;

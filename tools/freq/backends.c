@@ -1,9 +1,10 @@
-/* freq's rows on the backends of tools/backend.h: the OpenGL twins of
- * registry entries and outside programs, each asked the same gratings and
- * queries as libsample's rows. Built into texsample only (the
- * texsample_freq library stays free of EGL). */
+/* freq's rows on the backends of tools/backend.h: registry entries on
+ * libsample, their OpenImageIO and OpenGL twins, and outside programs,
+ * each asked the same gratings and queries. Only the interface is called
+ * here, so the texsample_freq library stays free of EGL and OpenImageIO
+ * (texsample opens those backends). */
 #include "backend.h"
-#include "freq_cli.h"
+#include "freq.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -59,7 +60,7 @@ static void tb_release(void *ctx)
 }
 
 void fq_tool_backend(tool_backend *tb, const tool_filter *f, const char *name, const char *label,
-                     fq_tool_cfg *cfg, fq_backend *out)
+                     const char *driver, fq_tool_cfg *cfg, fq_backend *out)
 {
     cfg->tb = tb;
     cfg->f = f;
@@ -72,7 +73,14 @@ void fq_tool_backend(tool_backend *tb, const tool_filter *f, const char *name, c
     out->release = tb_release;
     out->config = cfg;
     out->counts_texels = tb->counts_texels;
-    out->driver = tb->driver;
+    out->driver = driver;
+}
+
+int fq_libsample_backend(const tool_filter *f, fq_tool_cfg *cfg, fq_backend *out)
+{
+    if (tool_backend_libsample(&cfg->own, NULL) != 0) return -1;
+    fq_tool_backend(&cfg->own, f, tool_filter_name(f), f->label, NULL, cfg, out);
+    return 0;
 }
 
 int fq_tool_probe(const fq_backend *b, char *err, size_t errlen)

@@ -54,7 +54,7 @@ static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usa
  * OpenGL twins with EGL. */
 static unsigned accepted(int no_oiio)
 {
-    return (fq_oiio_available() && !no_oiio ? TOOL_PICK_OIIO : 0u) |
+    return (tool_oiio_available() && !no_oiio ? TOOL_PICK_OIIO : 0u) |
            (tool_backend_gl_available() ? TOOL_PICK_GL : 0u);
 }
 
@@ -113,16 +113,15 @@ int cmd_freq(int argc, char **argv)
     float step = 0.0f, fmax = 2.0f;
     const char *out_dir = "freq-out", *filters = NULL, *gl_device = NULL;
     tool_program_row prog[MAX_PROGRAMS];
-    tool_backend gl, progb[MAX_PROGRAMS];
+    tool_backend gl, progb[MAX_PROGRAMS], oiio[MAX_BACKENDS];
+    tool_oiio_store *store = NULL;
     fq_tool_cfg tool_cfg[MAX_BACKENDS];
     fq_na_row na[MAX_BACKENDS];
     int nprog = 0, nna = 0;
     const fq_backend *list[MAX_BACKENDS];
     fq_backend backends[MAX_BACKENDS];
     tool_pick picks[MAX_BACKENDS];
-    fq_oiio_cfg oiio_cfg[MAX_BACKENDS];
-    fq_oiio_file oiio_file;
-    char tmp[1024] = "", err[512] = "", command[2048];
+    char err[512] = "", command[2048];
     fq_plan plan;
     fq_sweep sweep = {0};
     float *zone[MAX_BACKENDS] = {0};
@@ -217,24 +216,36 @@ int cmd_freq(int argc, char **argv)
         return cli_usage_error("freq", "at most %d rows in all", MAX_BACKENDS);
     for (k = 0; k < npicks; ++k) any_oiio |= picks[k].oiio;
 
-    /* OpenImageIO writes a texture file per grating into a private folder. */
-    memset(&oiio_file, 0, sizeof oiio_file);
-    if (any_oiio) {
-        const char *base = getenv("TMPDIR");
-        snprintf(tmp, sizeof tmp, "%s/texsample-freq-XXXXXX", base && *base ? base : "/tmp");
-        if (!mkdtemp(tmp))
-            return cli_runtime_error("freq", "cannot create a temporary folder %s", tmp);
-        fq_oiio_file_init(&oiio_file, tmp);
-    }
+    /* OpenImageIO writes a texture file per grating into the store's
+     * private folder; one TextureSystem (64 MB of cache) for every row:
+     * creating one per grating grows the process by about a megabyte each
+     * time (OpenImageIO keeps per-system state). */
+    if (any_oiio && !(store = tool_oiio_store_open(64.0, err, sizeof err)))
+        return cli_runtime_error("freq", "OpenImageIO: %s", err);
     memset(&plan, 0, sizeof plan);
     memset(&gl, 0, sizeof gl);
     memset(progb, 0, sizeof progb);
+    memset(oiio, 0, sizeof oiio);
+    memset(tool_cfg, 0, sizeof tool_cfg);
     for (k = 0; k < npicks + nprog; ++k) {
         const tool_pick *p = k < npicks ? &picks[k] : NULL;
         if (p && p->oiio) {
-            fq_oiio_backend(p, &oiio_file, &oiio_cfg[k], &backends[k]);
+            char name[TOOL_FILTER_NAME_MAX], label[TOOL_FILTER_LABEL_MAX];
+            oiio_ts_opts opts;
+            oiio_ts_opts_init(&opts);
+            tool_filter_oiio_opts(p->f, &opts);
+            if (tool_backend_oiio_open(&oiio[k], store, &opts, err, sizeof err) != 0) {
+                rc = cli_runtime_error("freq", "OpenImageIO: %s", err);
+                goto done;
+            }
+            tool_pick_name(p, name, sizeof name);
+            tool_pick_label(p, label, sizeof label);
+            fq_tool_backend(&oiio[k], p->f, name, label, NULL, &tool_cfg[k], &backends[k]);
         } else if (p && !p->gl) {
-            fq_libsample_backend(p->f, &backends[k]);
+            if (fq_libsample_backend(p->f, &tool_cfg[k], &backends[k]) != 0) {
+                rc = cli_runtime_error("freq", "out of memory");
+                goto done;
+            }
         } else {
             /* OpenGL and outside programs: opened here, and tried once so
              * that a configuration they cannot do is a row "n/a: why". */
@@ -254,7 +265,7 @@ int cmd_freq(int argc, char **argv)
                 snprintf(name, sizeof name, "%s", prog[k - npicks].name);
                 snprintf(label, sizeof label, "%s (program)", prog[k - npicks].name);
             }
-            fq_tool_backend(tb, p ? p->f : NULL, name, label, &tool_cfg[k], &backends[k]);
+            fq_tool_backend(tb, p ? p->f : NULL, name, label, tb->driver, &tool_cfg[k], &backends[k]);
             if ((st = fq_tool_probe(&backends[k], err, sizeof err)) == TOOL_BACKEND_NA) {
                 na[nna].label = tool_cfg[k].label;
                 na[nna].driver = tb->driver;
@@ -322,7 +333,10 @@ done:
     tool_backend_close(&gl);
     for (k = 0; k < MAX_PROGRAMS; ++k) tool_backend_close(&progb[k]);
     fq_sweep_free(&sweep);
-    fq_oiio_file_clear(&oiio_file);
-    if (tmp[0]) rmdir(tmp);
+    for (k = 0; k < MAX_BACKENDS; ++k) {
+        tool_backend_close(&oiio[k]);
+        tool_backend_close(&tool_cfg[k].own);
+    }
+    tool_oiio_store_close(store);
     return rc;
 }

@@ -2,13 +2,14 @@
  * freq.h — the frequency-test harness behind `texsample freq` (DESIGN §9,
  * doc/frequency-tests.md). Library code of the tools, not of libsample: the
  * texsample_freq static library (tools/freq.cmake) holds everything except
- * the command line (cmd_freq.c), file output (out.c) and the OpenImageIO
- * backend (oiio_backend.c), so that tests can call the measurement directly.
+ * the command line (cmd_freq.c) and file output (out.c), so that tests can
+ * call the measurement directly. Every row samples through a backend of
+ * tools/backend.h (libsample, OpenImageIO, OpenGL, an outside program).
  *
  *   grating.c   wave vectors, grating and zone-plate textures
  *   measure.c   screen layout, offsets, least-squares amplitude fit
- *   filters.c   the libsample backend and freq's default rows of the
- *               filter registry (tools/filters.h)
+ *   filters.c   freq's default rows of the filter registry (tools/filters.h)
+ *   backends.c  a row on a backend of tools/backend.h
  *   sweep.c     the (m, θ, r) × filter × frequency loops
  *   summary.c   per-curve and per-filter numbers
  *   report.c    CSV, Markdown and HTML text
@@ -31,6 +32,7 @@
 #ifndef TEXSAMPLE_FREQ_H
 #define TEXSAMPLE_FREQ_H
 
+#include "backend.h"
 #include "filters.h"
 #include "sample/sample.h"
 
@@ -124,9 +126,29 @@ typedef struct fq_na_row {
  * the OpenGL ladder, cubic, the footprint filters and OpenImageIO's
  * trilinear and anisotropic twins. */
 extern const char *const fq_default_filters[];
-/* The backend that samples registry entry f (libsample, REPEAT on both
- * axes); f's lifetime is the registry's (tools/filters.c). */
-void fq_libsample_backend(const tool_filter *f, fq_backend *out);
+
+/* A row on a backend of tools/backend.h (backends.c): a registry entry on
+ * libsample, its OpenImageIO or OpenGL twin, or an outside program (f
+ * NULL: the program's own filter). Caller-owned, must outlive the
+ * fq_backend; `own` holds the backend where the row opened its own
+ * (fq_libsample_backend). */
+typedef struct fq_tool_cfg {
+    tool_backend *tb;
+    tool_backend own;
+    const tool_filter *f;
+    char name[TOOL_FILTER_NAME_MAX], label[TOOL_FILTER_LABEL_MAX];
+} fq_tool_cfg;
+/* The row as a backend of the sweep: REPEAT on both axes, f's settings.
+ * driver: what the pages name as the row's sampler, or NULL (libsample
+ * and OpenImageIO rows: their label says it). */
+void fq_tool_backend(tool_backend *tb, const tool_filter *f, const char *name, const char *label,
+                     const char *driver, fq_tool_cfg *cfg, fq_backend *out);
+/* Registry entry f on libsample (its own backend in cfg->own). Returns 0,
+ * or −1 (out of memory). */
+int fq_libsample_backend(const tool_filter *f, fq_tool_cfg *cfg, fq_backend *out);
+/* Try the row on a small texture and one query: 0 (it runs),
+ * TOOL_BACKEND_NA or TOOL_BACKEND_ERROR with the reason in err. */
+int fq_tool_probe(const fq_backend *b, char *err, size_t errlen);
 
 /* ---- Measurement (measure.c) --------------------------------------------- */
 

@@ -55,6 +55,7 @@ int sample_freq_run(const sample_freq_params *params, const sample_measure_filte
 {
     sample_freq_result *res;
     fq_backend *backends;
+    fq_tool_cfg *cfgs;
     const fq_backend **list;
     size_t nl;
     int k, rc;
@@ -79,9 +80,10 @@ int sample_freq_run(const sample_freq_params *params, const sample_measure_filte
     nl = (size_t)params->nm + (size_t)params->ntheta + (size_t)params->nr;
     res = (sample_freq_result *)calloc(1, sizeof *res);
     backends = (fq_backend *)calloc((size_t)nfilters, sizeof *backends);
+    cfgs = (fq_tool_cfg *)calloc((size_t)nfilters, sizeof *cfgs);
     list = (const fq_backend **)calloc((size_t)nfilters, sizeof *list);
     if (res) res->lists = (double *)malloc(nl * sizeof *res->lists);
-    if (!res || !backends || !list || !res->lists) {
+    if (!res || !backends || !cfgs || !list || !res->lists) {
         snprintf(err, errlen, "out of memory");
         rc = -1;
         goto done;
@@ -103,7 +105,11 @@ int sample_freq_run(const sample_freq_params *params, const sample_measure_filte
                 rc = -1;
                 goto done;
             }
-            fq_libsample_backend(tf, &backends[k]);
+            if (fq_libsample_backend(tf, &cfgs[k], &backends[k]) != 0) {
+                snprintf(err, errlen, "out of memory");
+                rc = -1;
+                goto done;
+            }
         }
         list[k] = &backends[k];
     }
@@ -128,7 +134,9 @@ int sample_freq_run(const sample_freq_params *params, const sample_measure_filte
     /* The summary needs the plan's lists only, not the backends. */
     res->plan.backends = NULL;
 done:
+    for (k = 0; cfgs && k < nfilters; ++k) tool_backend_close(&cfgs[k].own);
     free(backends);
+    free(cfgs);
     free(list);
     if (rc == 0)
         *out = res;

@@ -202,6 +202,9 @@ int render_scene_env_truth(const render_scene *sc, const render_hit *h, float ou
 /* 1 if the texture is a solid texture baked into a 3D texture (its
  * render_scene_texture is then SAMPLE_TEXTURE_3D). */
 int render_scene_texture_solid(const render_scene *sc, int texture);
+/* A solid texture's wrap mode on s, t and r (its box's, not the scene's
+ * sampler's); SAMPLE_WRAP_REPEAT for any other texture. */
+sample_wrap render_scene_solid_wrap(const render_scene *sc, int texture);
 /* The volume query of a hit on such a texture: (s, t, r) of the surface
  * point P in the solid's box and the columns dP/dx, dP/dy of the exact ray
  * differentials in the same units. 0 if the texture is not a baked solid. */

@@ -125,6 +125,11 @@ int render_scene_texture_solid(const render_scene *sc, int texture)
     return texture >= 0 && texture < sc->ntex && sc->tex[texture].solid.on;
 }
 
+sample_wrap render_scene_solid_wrap(const render_scene *sc, int texture)
+{
+    return render_scene_texture_solid(sc, texture) ? sc->tex[texture].solid.wrap : SAMPLE_WRAP_REPEAT;
+}
+
 int render_scene_solid_sample(const render_scene *sc, int texture, const sample_sampler *smp,
                               const sample_query3 *q, size_t n, float *rgba, sample_stats *stats)
 {
