@@ -56,3 +56,21 @@ if(TARGET texsample_render)
   target_compile_options(compare_solid PRIVATE ${SAMPLE_WARNINGS})
   add_test(NAME compare_solid COMMAND compare_solid)
 endif()
+
+# compare's stochastic sweep (RMSE against samples per pixel) and its plot
+# on a tiny plane (tests/compare_spp.c).
+if(TARGET texsample_render)
+  set(_spp_sources configs scenes view run backends truth metrics stochastic cost picture font
+    legend report)
+  list(TRANSFORM _spp_sources PREPEND ${PROJECT_SOURCE_DIR}/tools/compare/)
+  list(TRANSFORM _spp_sources APPEND .c)
+  add_executable(compare_spp ${CMAKE_CURRENT_SOURCE_DIR}/compare_spp.c ${_spp_sources}
+                 ${PROJECT_SOURCE_DIR}/tools/cli.c)
+  target_include_directories(compare_spp PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
+                             ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
+  target_compile_definitions(compare_spp PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_link_libraries(compare_spp PRIVATE texsample_freq texsample_render m)
+  target_compile_options(compare_spp PRIVATE ${SAMPLE_WARNINGS})
+  add_test(NAME compare_spp COMMAND compare_spp ${CMAKE_CURRENT_BINARY_DIR}/compare_spp_out)
+  set_tests_properties(compare_spp PROPERTIES SKIP_RETURN_CODE 77)
+endif()

@@ -41,10 +41,14 @@ static double rmse_of(const cmp_view *v, const cmp_truth *t, const char *name)
     cmp_config cfg;
     cmp_result r;
     cmp_metrics m;
+    tool_backend lib;
     char err[256];
     size_t k, n = (size_t)v->w * (size_t)v->h;
     CHECK(cmp_configs_parse(name, 0, &cfg, 1, err, sizeof err) == 1, "%s", err_hint);
-    CHECK(cmp_run_sample(v, &cfg, 2, 1, &r, err, sizeof err) == 0, "%s", err_hint);
+    CHECK(tool_backend_libsample(&lib, NULL) == 0, "%s", err_hint);
+    cfg.tb = &lib;
+    CHECK(cmp_run_backend(v, &cfg, 2, 1, &r, err, sizeof err) == 0, "%s", err);
+    tool_backend_close(&lib);
     for (k = 0; k < 4 * n; ++k) CHECK(isfinite(r.rgba[k]), "%s", err_hint);
     cmp_metrics_compute(r.rgba, t->rgba, t->mask, n, &m);
     CHECK(m.count > 100, "%s", err_hint);
