@@ -35,7 +35,7 @@ src=$(cd "$(dirname "$(readlink -f "$0")")/.." && pwd)
 exe="$build/$probe"
 cc -O2 -ffp-contract=off -std=c11 -I"$src/libsample/include" -I"$src/libsample/src" -I"$src/tools/bench" \
     -I"$src/tools/oiio" -I"$src/dev" "$here/$probe.c" "$src/tools/bench/queries.c" "$src/tools/bench/engines.c" \
-    "$src/tools/filters.c" \
+    "$src/tools/filters.c" "$src/tools/backend.c" "$src/tools/backends/libsample.c" -I"$src/tools" \
     "$build/libsample/libsample.a" -lm -lpthread -o "$exe"
 if [ -n "${PB_CALLGRIND:-}" ]; then
     valgrind --tool=callgrind --callgrind-out-file="$build/$probe.callgrind" \

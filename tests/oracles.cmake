@@ -7,11 +7,11 @@
 # OpenImageIO (tools/bench/bench_no_oiio.h) and shares the developer's
 # probe helpers (dev/probe_util.h).
 add_executable(lean_footprint ${CMAKE_CURRENT_SOURCE_DIR}/oracles/lean_footprint.c
-                              ${PROJECT_SOURCE_DIR}/tools/bench/queries.c ${PROJECT_SOURCE_DIR}/tools/bench/engines.c
-                              ${PROJECT_SOURCE_DIR}/tools/filters.c)
+                              ${PROJECT_SOURCE_DIR}/tools/bench/queries.c ${PROJECT_SOURCE_DIR}/tools/bench/engines.c)
 target_include_directories(lean_footprint PRIVATE ${PROJECT_SOURCE_DIR}/libsample/src ${PROJECT_SOURCE_DIR}/tools/bench
                                                   ${PROJECT_SOURCE_DIR}/tools/oiio ${PROJECT_SOURCE_DIR}/dev)
-target_link_libraries(lean_footprint PRIVATE sample m)
+# texsample_freq: the filter registry and libsample's backend (tools/backend.h).
+target_link_libraries(lean_footprint PRIVATE texsample_freq sample m)
 target_compile_options(lean_footprint PRIVATE ${SAMPLE_WARNINGS})
 foreach(case "blinn-newell;minify" "blinn-newell;aniso8" "ewa;minify" "ewa;aniso8")
   list(GET case 0 filt)
