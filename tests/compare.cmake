@@ -42,35 +42,28 @@ if(TARGET texsample)
     ENVIRONMENT "ASAN_OPTIONS=new_delete_type_mismatch=0")
 endif()
 
-# Solid textures baked into 3D textures, through compare's view, truth and
-# runs on a tiny scene (tests/compare_solid.c).
+# compare's view, truth, runs, stochastic sweep and plots as a library for
+# the tests below that call them on tiny scenes: solid textures baked into
+# 3D textures (tests/compare_solid.c) and the stochastic sweep with its plot
+# (tests/compare_spp.c).
 if(TARGET texsample_render)
-  set(_solid_sources configs view run backends truth metrics)
-  list(TRANSFORM _solid_sources PREPEND ${PROJECT_SOURCE_DIR}/tools/compare/)
-  list(TRANSFORM _solid_sources APPEND .c)
-  add_executable(compare_solid ${CMAKE_CURRENT_SOURCE_DIR}/compare_solid.c ${_solid_sources}
-                 ${PROJECT_SOURCE_DIR}/tools/cli.c)
-  target_include_directories(compare_solid PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
-                             ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
-  target_link_libraries(compare_solid PRIVATE texsample_freq texsample_render m)
-  target_compile_options(compare_solid PRIVATE ${SAMPLE_WARNINGS})
+  set(_cmp_sources configs scenes view run backends truth metrics stochastic cost picture font legend
+    report)
+  list(TRANSFORM _cmp_sources PREPEND ${PROJECT_SOURCE_DIR}/tools/compare/)
+  list(TRANSFORM _cmp_sources APPEND .c)
+  add_library(compare_parts STATIC ${_cmp_sources} ${PROJECT_SOURCE_DIR}/tools/cli.c)
+  target_include_directories(compare_parts PUBLIC ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
+  # The photograph of the teapot-image scene, as in tools/compare.cmake.
+  target_compile_definitions(compare_parts PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_link_libraries(compare_parts PUBLIC texsample_freq texsample_render m)
+  target_compile_options(compare_parts PRIVATE ${SAMPLE_WARNINGS})
+  foreach(t compare_solid compare_spp)
+    add_executable(${t} ${CMAKE_CURRENT_SOURCE_DIR}/${t}.c)
+    target_include_directories(${t} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+    target_link_libraries(${t} PRIVATE compare_parts)
+    target_compile_options(${t} PRIVATE ${SAMPLE_WARNINGS})
+  endforeach()
   add_test(NAME compare_solid COMMAND compare_solid)
-endif()
-
-# compare's stochastic sweep (RMSE against samples per pixel) and its plot
-# on a tiny plane (tests/compare_spp.c).
-if(TARGET texsample_render)
-  set(_spp_sources configs scenes view run backends truth metrics stochastic cost picture font
-    legend report)
-  list(TRANSFORM _spp_sources PREPEND ${PROJECT_SOURCE_DIR}/tools/compare/)
-  list(TRANSFORM _spp_sources APPEND .c)
-  add_executable(compare_spp ${CMAKE_CURRENT_SOURCE_DIR}/compare_spp.c ${_spp_sources}
-                 ${PROJECT_SOURCE_DIR}/tools/cli.c)
-  target_include_directories(compare_spp PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
-                             ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
-  target_compile_definitions(compare_spp PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  target_link_libraries(compare_spp PRIVATE texsample_freq texsample_render m)
-  target_compile_options(compare_spp PRIVATE ${SAMPLE_WARNINGS})
   add_test(NAME compare_spp COMMAND compare_spp ${CMAKE_CURRENT_BINARY_DIR}/compare_spp_out)
   set_tests_properties(compare_spp PROPERTIES SKIP_RETURN_CODE 77)
 endif()

@@ -14,7 +14,10 @@
  *     of the metrics;
  *   - the face-on zone plate ties four mip filters, the oblique one does not;
  *   - the outputs exist (PNG signatures, CSV, JSON, HTML; pictures linked to
- *     full size, the median of 3 runs reported) and the exit codes.
+ *     full size, the median of 3 runs reported) and the exit codes;
+ *   - --spp: the stochastic sweep's table (stochastic.csv), plot (spp.png)
+ *     and page section; on the mirrors scene it is n/a with the reason
+ *     (direction queries take no u).
  * Usage: compare_cli TEXSAMPLE WORKDIR
  */
 #define _POSIX_C_SOURCE 200809L
@@ -58,6 +61,9 @@ static void exit_codes(void)
     CHECK(run("--runs 0") == 2, "--runs 0 exits 2");
     CHECK(run("--runs") == 2, "--runs without a value exits 2");
     CHECK(run("--configs trilinear,nope") == 2, "unknown configuration exits 2");
+    CHECK(run("--spp 4,2") == 2, "--spp counts that do not increase exit 2");
+    CHECK(run("--spp 0") == 2, "--spp 0 exits 2");
+    CHECK(run("--draws 65") == 2, "--draws past 64 exits 2");
     CHECK(run("--scene no-such-scene.json --size 16 --out bad") == 1, "missing scene exits 1");
 }
 
@@ -301,6 +307,32 @@ static void ordering_and_outputs(void)
     free(csv);
 }
 
+/* The stochastic sweep end to end, on a 16 x 16 plane and mirrors. */
+static void stochastic(void)
+{
+    size_t len;
+    char *csv, *html;
+    unsigned char *png;
+    CHECK(run("--scene plane --scene mirrors --size 16 --truth-samples 2 --runs 1 --configs "
+              "bilinear,trilinear --spp 1,4 --out spp") == 0,
+          "sweep run");
+    csv = slurp("spp", "stochastic.csv", &len);
+    CHECK(csv && strstr(csv, "scene,config,label,spp,draws,rmse,deterministic_rmse,ns_per_sample,note\n") &&
+              strstr(csv, "\nplane,trilinear,\"trilinear\",4,1,0.") && !strstr(csv, "bilinear"),
+          "stochastic.csv holds trilinear's sweep, not bilinear (u changes nothing)");
+    CHECK(csv && strstr(csv, "\nmirrors,trilinear,\"trilinear\",1,1,,,,\"n/a: direction"),
+          "the sweep on an environment map is n/a with the reason");
+    free(csv);
+    png = slurp("spp/plane", "spp.png", &len);
+    CHECK(png && len > 8 && memcmp(png, "\x89PNG\r\n\x1a\n", 8) == 0, "spp.png is a PNG");
+    free(png);
+    html = slurp("spp", "index.html", &len);
+    CHECK(html && strstr(html, "<img src=\"plane/spp.png\"") && strstr(html, "<th>4 spp</th>") &&
+              !strstr(html, "<img src=\"mirrors/spp.png\""),
+          "index.html shows the sweep's table and plot where it ran");
+    free(html);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -316,5 +348,6 @@ int main(int argc, char **argv)
     RUN(zoneplate_ties);
     RUN(ordering_and_outputs);
     RUN(mirrors);
+    RUN(stochastic);
     return check_finish();
 }

@@ -34,16 +34,23 @@ int tool_backend_sample(tool_backend *b, tool_backend_tex *tx, const sample_quer
         snprintf(err, errlen, "out of memory");
         return TOOL_BACKEND_ERROR;
     }
-    memset(&a, 0, sizeof a);
-    a.count = n;
-    a.q = q;
-    a.rgba = rgba;
-    a.stats = stats;
+    tool_backend_batch_init(&a, n, q, NULL, rgba, stats);
     rc = b->ops->run(b, tx, &a, t ? t : &none, err, errlen);
     if (rc == 0 && stats)
         for (i = 0; i < n; ++i) *texels += stats[i].texels;
     free(stats);
     return rc;
+}
+
+void tool_backend_batch_init(tool_backend_batch *a, size_t count, const sample_query *q,
+                             const sample_query3 *q3, float *rgba, sample_stats *stats)
+{
+    memset(a, 0, sizeof *a);
+    a->count = count;
+    a->q = q;
+    a->q3 = q3;
+    a->rgba = rgba;
+    a->stats = stats;
 }
 
 int tool_backend_prepare_env(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,

@@ -153,6 +153,10 @@ int tool_backend_prepare(tool_backend *b, const sample_texture *tex, const sampl
 int tool_backend_sample(tool_backend *b, tool_backend_tex *tx, const sample_query *q, size_t n,
                         float *rgba, double *texels, tool_backend_times *t, char *err,
                         size_t errlen);
+/* A batch of count queries (q or q3) into rgba, stats (may be NULL); no
+ * corners, deterministic. */
+void tool_backend_batch_init(tool_backend_batch *a, size_t count, const sample_query *q,
+                             const sample_query3 *q3, float *rgba, sample_stats *stats);
 /* prepare for an environment map's direction queries (prepare_env). */
 int tool_backend_prepare_env(tool_backend *b, const sample_texture *tex, const sample_sampler *smp,
                              tool_backend_tex **out, tool_backend_times *t, char *err,

@@ -47,6 +47,12 @@ static int lib_run(tool_backend *b, tool_backend_tex *x, const tool_backend_batc
 {
     sample_status st;
     (void)t;
+    if (a->q3 && a->u) {
+        /* sample_batch3_args has no u: the 3D and environment paths are
+         * deterministic. */
+        snprintf(err, errlen, "no stochastic draws for direction or volume queries");
+        return TOOL_BACKEND_NA;
+    }
     if (a->q3) {
         sample_batch3_args a3 = {0};
         a3.count = a->count;

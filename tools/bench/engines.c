@@ -75,12 +75,7 @@ static int lib_batch(const bench_engine *e, const bench_texture *t, const void *
     int rc = (e->env ? tool_backend_prepare_env : tool_backend_prepare)(b, t->ours, &e->smp, &x, NULL,
                                                                         err, sizeof err);
     if (rc == 0) {
-        memset(&a, 0, sizeof a);
-        a.count = n;
-        a.q = e->env ? NULL : q;
-        a.q3 = e->env ? q : NULL;
-        a.rgba = rgba;
-        a.stats = stats;
+        tool_backend_batch_init(&a, n, e->env ? NULL : q, e->env ? q : NULL, rgba, stats);
         rc = tool_backend_run(b, x, &a, NULL, err, sizeof err);
         tool_backend_release(b, x);
     }

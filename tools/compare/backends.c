@@ -63,15 +63,10 @@ int cmp_prepared_batch(const cmp_prepared *p, int texture, const sample_query *q
                        tool_backend_times *t, char *err, size_t errlen)
 {
     tool_backend_batch a;
-    memset(&a, 0, sizeof a);
-    a.count = n;
-    a.q = q;
-    a.q3 = q3;
+    tool_backend_batch_init(&a, n, q, q3, rgba, p->tb->counts_texels ? stats : NULL);
     a.corners = quad;
     a.u = u;
     a.draws = draws;
-    a.rgba = rgba;
-    a.stats = p->tb->counts_texels ? stats : NULL;
     return tool_backend_run(p->tb, p->tex[texture], &a, t, err, errlen);
 }
 

@@ -272,11 +272,12 @@ static int sweep_scene(const opts *o, const cmp_view *v, const cmp_truth *t, cmp
         if (st == TOOL_BACKEND_NA) {
             fprintf(stderr, "texsample compare: %s: %s: stochastic sweep n/a: %s\n", s->label,
                     w->cfg->name, err);
-            continue;
-        }
-        if (st != 0)
+            snprintf(x->note, sizeof x->note, "%.*s", (int)sizeof x->note - 1, err);
+        } else if (st != 0) {
             return cli_runtime_error("compare", "%s: %s: stochastic sweep: %s", s->label,
                                      w->cfg->name, err);
+        }
+        x->cfg = w->cfg;
         x->det_rmse = w->m.rmse;
         ++s->nspp_rows;
     }
@@ -467,6 +468,10 @@ static void print_spp_table(const cmp_scene_result *s)
     for (r = 0; r < s->nspp_rows; ++r) {
         const cmp_spp_row *w = &s->spp_rows[r];
         printf("  %-28.28s", w->cfg->label);
+        if (!w->ok) {
+            printf(" n/a: %s\n", w->note);
+            continue;
+        }
         for (k = 0; k < s->nspp; ++k) printf(" %8.5f", w->rmse[k]);
         printf(" %8.5f %10.1f\n", w->det_rmse, w->ns_per_sample);
     }

@@ -263,7 +263,8 @@ typedef struct cmp_row {
 #define CMP_MAX_SPP 12
 typedef struct cmp_spp_row {
     const cmp_config *cfg;
-    int ok;
+    int ok;                   /* 0: n/a, note says why */
+    char note[160];
     double rmse[CMP_MAX_SPP]; /* at the scene's spp[k] */
     double det_rmse;          /* the deterministic row's (NaN: not run) */
     double ns_per_sample;     /* one stochastic lookup, median over the lookups */

@@ -94,6 +94,15 @@ static void bnum(buf *b, double v, const char *none)
 
 /* ---- CSV ----------------------------------------------------------------- */
 
+/* A note as a quoted CSV field ("n/a: " first for an n/a row). */
+static void bnote(buf *b, int na, const char *note)
+{
+    const char *c;
+    bprintf(b, "\"%s", na ? "n/a: " : "");
+    for (c = note; *c; ++c) bprintf(b, *c == '"' ? "\"\"" : "%c", *c);
+    bprintf(b, "\"\n");
+}
+
 int cmp_write_csv(const char *path, const cmp_scene_result *s, int n)
 {
     buf b = {0};
@@ -115,13 +124,8 @@ int cmp_write_csv(const char *path, const cmp_scene_result *s, int n)
             } else {
                 bprintf(&b, ",,,,,");
             }
-            bprintf(&b, ",%zu,%d,%d,\"", s[k].measured, s[k].truth_samples, s[k].runs);
-            {
-                const char *c;
-                if (w->na) bprintf(&b, "n/a: ");
-                for (c = w->note; *c; ++c) bprintf(&b, *c == '"' ? "\"\"" : "%c", *c);
-            }
-            bprintf(&b, "\"\n");
+            bprintf(&b, ",%zu,%d,%d,", s[k].measured, s[k].truth_samples, s[k].runs);
+            bnote(&b, w->na, w->note);
         }
     return bwrite(&b, path);
 }
@@ -131,17 +135,22 @@ int cmp_write_spp_csv(const char *path, const cmp_scene_result *s, int n)
 {
     buf b = {0};
     int k, r, j;
-    bprintf(&b, "scene,config,label,spp,draws,rmse,deterministic_rmse,ns_per_sample\n");
+    bprintf(&b, "scene,config,label,spp,draws,rmse,deterministic_rmse,ns_per_sample,note\n");
     for (k = 0; k < n; ++k)
         for (r = 0; r < s[k].nspp_rows; ++r) {
             const cmp_spp_row *w = &s[k].spp_rows[r];
             for (j = 0; j < s[k].nspp; ++j) {
                 bprintf(&b, "%s,%s,\"%s\",%d,%u,", s[k].label, w->cfg->name, w->cfg->label,
                         s[k].spp[j], s[k].draws);
-                bnum(&b, w->rmse[j], "");
-                bprintf(&b, ",");
-                bnum(&b, w->det_rmse, "");
-                bprintf(&b, ",%.6g\n", w->ns_per_sample);
+                if (w->ok) {
+                    bnum(&b, w->rmse[j], "");
+                    bprintf(&b, ",");
+                    bnum(&b, w->det_rmse, "");
+                    bprintf(&b, ",%.6g,", w->ns_per_sample);
+                } else {
+                    bprintf(&b, ",,,");
+                }
+                bnote(&b, !w->ok, w->note);
             }
         }
     return bwrite(&b, path);
@@ -354,12 +363,24 @@ static void html_spp(buf *b, const cmp_scene_result *c)
         bprintf(b, "<tr><td class=\"l\">");
         bescape(b, w->cfg->label, 0);
         bprintf(b, "</td>");
+        if (!w->ok) {
+            bprintf(b, "<td class=\"l\" colspan=\"%d\">n/a: ", c->nspp + 2);
+            bescape(b, w->note, 0);
+            bprintf(b, "</td></tr>\n");
+            continue;
+        }
         for (k = 0; k < c->nspp; ++k) bprintf(b, "<td>%.5f</td>", w->rmse[k]);
         bprintf(b, "<td>%.5f</td><td>%.1f</td></tr>\n", w->det_rmse, w->ns_per_sample);
     }
-    bprintf(b, "</table>\n<p>");
-    html_img(b, c, "spp", "", 560, "RMSE against samples per pixel");
-    bprintf(b, "</p>\n");
+    bprintf(b, "</table>\n");
+    for (r = 0; r < c->nspp_rows; ++r)
+        if (c->spp_rows[r].ok) {
+            /* cmp_spp_plot drew spp.png: a row was swept. */
+            bprintf(b, "<p>");
+            html_img(b, c, "spp", "", 560, "RMSE against samples per pixel");
+            bprintf(b, "</p>\n");
+            break;
+        }
 }
 
 /* A filter's (or the truth's) image and its heat map (the truth: its mask). */

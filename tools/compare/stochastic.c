@@ -84,6 +84,17 @@ int cmp_spp_sweep(const cmp_view *v, const cmp_config *c, const cmp_truth *t, co
         goto done;
     }
     if ((rc = cmp_prepare(v, c, &p, err, errlen)) != 0) goto done;
+    for (j = 0; j < p.ntex && rc == 0; ++j)
+        if (p.tex[j] && (j == v->env_tex || cmp_view_3d(v, j))) {
+            /* sample_batch3_args has no u. */
+            snprintf(err, errlen, "direction and volume queries (%s) take no stochastic draws",
+                     j == v->env_tex ? "an environment map" : "a solid texture");
+            rc = TOOL_BACKEND_NA;
+        }
+    if (rc != 0) {
+        cmp_prepared_release(&p);
+        goto done;
+    }
     ctx.p = &p;
     ctx.draws = draws;
     for (j = 0; j < most && rc == 0; ++j) {
