@@ -92,7 +92,7 @@ int cmp_view_3d(const cmp_view *v, int texture);
 int cmp_view_build(const render_scene *sc, int threads, cmp_view *v, char *err, size_t errlen);
 void cmp_view_free(cmp_view *v);
 
-/* ---- Running one configuration (run.c, oiio.c) ----------------------- */
+/* ---- Running one configuration (run.c) ------------------------------- */
 
 typedef struct cmp_result {
     float *rgba;          /* w × h × 4 linear */
