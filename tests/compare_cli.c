@@ -15,6 +15,8 @@
  *   - the face-on zone plate ties four mip filters, the oblique one does not;
  *   - the outputs exist (PNG signatures, CSV, JSON, HTML; pictures linked to
  *     full size, the median of 3 runs reported) and the exit codes;
+ *   - OpenImageIO's rows are n/a with the reason on a cube environment map,
+ *     a wrap mode it lacks and a solid texture (tools/backends/oiio.c);
  *   - --spp: the stochastic sweep's table (stochastic.csv), plot (spp.png)
  *     and page section; on the mirrors scene it is n/a with the reason
  *     (direction queries take no u).
@@ -307,6 +309,59 @@ static void ordering_and_outputs(void)
     free(csv);
 }
 
+/* Write `text` to dir/name. */
+static void put(const char *name, const char *text)
+{
+    char p[1024];
+    FILE *f;
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    f = fopen(p, "w");
+    CHECK(f != NULL, "cannot write %s", p);
+    if (!f) return;
+    fputs(text, f);
+    fclose(f);
+}
+
+/* What OpenImageIO's backend cannot do is an n/a row with the reason. */
+static void oiio_na(void)
+{
+    static const char *const want[] = {
+        "\ncube,oiio-trilinear,\"OpenImageIO trilinear\",,,,,,,42,2,1,\"n/a: OpenImageIO's environment() "
+        "reads lat-long maps only, not cube maps\"\n",
+        "\nwrap,oiio-trilinear,\"OpenImageIO trilinear\",,,,,,,256,2,1,\"n/a: OpenImageIO has no equivalent "
+        "of wrap modes mirror_clamp_to_edge/repeat\"\n",
+        "\nsolid,oiio-trilinear,\"OpenImageIO trilinear\",,,,,,,42,2,1,\"n/a: OpenImageIO's texture3d has no "
+        "mip or footprint filtering for a solid texture's volume\"\n"};
+    size_t len;
+    char *csv;
+    int k;
+    put("cube.json", "{\"camera\":{\"eye\":[0,-5,1],\"look\":[0,0,0.5],\"up\":[0,0,1],\"fov\":40},"
+                     "\"materials\":[{\"name\":\"mirror\",\"reflect\":1}],"
+                     "\"environment\":{\"type\":\"cube\",\"size\":16},"
+                     "\"objects\":[{\"type\":\"sphere\",\"centre\":[0,0,0.5],\"radius\":1,\"material\":\"mirror\"}]}");
+    put("wrap.json", "{\"camera\":{\"eye\":[0,-5,3],\"look\":[0,0,0],\"up\":[0,0,1],\"fov\":40},"
+                     "\"sampler\":{\"wrap_s\":\"mirror_clamp_to_edge\",\"wrap_t\":\"repeat\"},"
+                     "\"textures\":[{\"name\":\"g\",\"type\":\"checker\",\"freq\":4,\"size\":32}],"
+                     "\"materials\":[{\"name\":\"m\",\"texture\":\"g\"}],"
+                     "\"objects\":[{\"type\":\"plane\",\"centre\":[0,0,0],\"axis\":[0,0,1],\"size\":2,"
+                     "\"material\":\"m\"}]}");
+    put("solid.json", "{\"camera\":{\"eye\":[0,-5,1],\"look\":[0,0,0.5],\"up\":[0,0,1],\"fov\":40},"
+                      "\"textures\":[{\"name\":\"w\",\"type\":\"wood\",\"freq\":2,"
+                      "\"solid\":{\"min\":[-1,-1,-0.5],\"max\":[1,1,1.5],\"size\":8}}],"
+                      "\"materials\":[{\"name\":\"w\",\"texture\":\"w\"}],"
+                      "\"objects\":[{\"type\":\"sphere\",\"centre\":[0,0,0.5],\"radius\":1,\"material\":\"w\"}]}");
+    if (run("--scene cube.json --scene wrap.json --scene solid.json --size 16 --truth-samples 2 --runs 1 "
+            "--configs trilinear,oiio-trilinear --out na") == 2) {
+        check_skip("no OpenImageIO in this build");
+        return;
+    }
+    csv = slurp("na", "results.csv", &len);
+    CHECK(csv != NULL, "results.csv written");
+    for (k = 0; csv && k < 3; ++k) CHECK(strstr(csv, want[k]) != NULL, "n/a row %d", k);
+    CHECK(csv && strstr(csv, "\nsolid,trilinear,\"trilinear\",0."), "libsample's row runs beside it");
+    free(csv);
+}
+
 /* The stochastic sweep end to end, on a 16 x 16 plane and mirrors. */
 static void stochastic(void)
 {
@@ -348,6 +403,7 @@ int main(int argc, char **argv)
     RUN(zoneplate_ties);
     RUN(ordering_and_outputs);
     RUN(mirrors);
+    RUN(oiio_na);
     RUN(stochastic);
     return check_finish();
 }
