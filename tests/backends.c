@@ -11,7 +11,12 @@
  *     wrap mode it lacks;
  *   - a missing device, a failing program, a program that writes the wrong
  *     amount are errors with a clear message, and `texsample freq` exits 1
- *     with it.
+ *     with it;
+ *   - the interface's whole batch (tool_backend_run): libsample's backend
+ *     gives sample_batch's values bit for bit, stochastic draws and
+ *     texel counts included; a backend without `run` (a program) answers
+ *     a plain 2D batch and is n/a with the reason for direction queries,
+ *     stochastic draws and environment maps.
  *
  *   backends TEXSAMPLE EXAMPLE_DIR OUT_DIR
  *
@@ -275,6 +280,72 @@ static void test_program(void)
     unsetenv("TEXSAMPLE_PROGRAM_TIMEOUT");
 }
 
+static void test_interface(void)
+{
+    enum { N = 64 };
+    tool_backend lib, p;
+    tool_backend_tex *x = NULL;
+    tool_backend_batch a;
+    sample_batch_args want = {0};
+    sample_sampler s;
+    sample_stats st[N], st_want[N];
+    sample_query3 q3[1] = {{{0}, {0}, {0}}};
+    float u[N], got[4 * N], ref[4 * N];
+    double texels = 0.0, sum = 0.0;
+    char err[512], cmd[1200];
+    int k;
+    sampler_of("ewa", SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT, &s);
+    for (k = 0; k < N; ++k) u[k] = (float)k / N;
+    CHECK(tool_backend_libsample(&lib, NULL) == 0 && lib.thread_safe && lib.counts_texels, "libsample");
+    CHECK(tool_backend_prepare(&lib, tex, &s, &x, NULL, err, sizeof err) == 0, "%s", err);
+    tool_backend_batch_init(&a, N, queries, NULL, got, st);
+    a.u = u;
+    a.draws = 3;
+    CHECK(tool_backend_run(&lib, x, &a, NULL, err, sizeof err) == 0, "%s", err);
+    want.count = N;
+    want.queries = queries;
+    want.rgba = ref;
+    want.stats = st_want;
+    want.u = u;
+    want.draws = 3;
+    CHECK(sample_batch(tex, &s, &want) == SAMPLE_OK, "sample_batch");
+    CHECK(memcmp(got, ref, sizeof got) == 0, "stochastic batch through the backend as sample_batch");
+    for (k = 0; k < N; ++k) CHECK(st[k].texels == st_want[k].texels, "stats of query %d", k);
+    /* tool_backend_sample: deterministic, the texels summed. */
+    CHECK(tool_backend_sample(&lib, x, queries, N, got, &texels, NULL, err, sizeof err) == 0, "%s", err);
+    want.u = NULL;
+    CHECK(sample_batch(tex, &s, &want) == SAMPLE_OK, "sample_batch");
+    for (k = 0; k < N; ++k) sum += st_want[k].texels;
+    CHECK(memcmp(got, ref, sizeof got) == 0 && texels == sum, "texels %g, want %g", texels, sum);
+    tool_backend_release(&lib, x);
+    tool_backend_close(&lib);
+
+    /* A program has `sample` alone. */
+    sampler_of("bilinear", SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT, &s);
+    snprintf(cmd, sizeof cmd, "'%s' lookup --min linear --mag linear", texsample);
+    CHECK(tool_backend_program_open(&p, cmd, err, sizeof err) == 0, "open: %s", err);
+    CHECK(!p.thread_safe, "a program is called from one thread");
+    CHECK(tool_backend_prepare_env(&p, tex, &s, &x, NULL, err, sizeof err) == TOOL_BACKEND_NA &&
+              strcmp(err, "no environment maps") == 0,
+          "environment map: %s", err);
+    CHECK(tool_backend_prepare(&p, tex, &s, &x, NULL, err, sizeof err) == 0, "%s", err);
+    tool_backend_batch_init(&a, 1, NULL, q3, got, NULL);
+    CHECK(tool_backend_run(&p, x, &a, NULL, err, sizeof err) == TOOL_BACKEND_NA &&
+              strcmp(err, "no direction or volume queries") == 0,
+          "direction queries: %s", err);
+    tool_backend_batch_init(&a, 4, queries, NULL, got, NULL);
+    a.u = u;
+    CHECK(tool_backend_run(&p, x, &a, NULL, err, sizeof err) == TOOL_BACKEND_NA &&
+              strcmp(err, "no stochastic draws") == 0,
+          "stochastic draws: %s", err);
+    a.u = NULL;
+    CHECK(tool_backend_run(&p, x, &a, NULL, err, sizeof err) == 0, "plain 2D batch: %s", err);
+    lib_results(tex, &s, queries, 4, ref);
+    CHECK(memcmp(got, ref, 16 * sizeof *got) == 0, "the program's 2D batch as libsample's");
+    tool_backend_release(&p, x);
+    tool_backend_close(&p);
+}
+
 /* The RMSE field of results.csv's row `config` of scene plane, or "". */
 static void csv_rmse(const char *csv, const char *config, char *out, size_t len)
 {
@@ -344,6 +415,7 @@ int main(int argc, char **argv)
     make_queries(queries, NQ);
     RUN(test_gl);
     RUN(test_program);
+    RUN(test_interface);
     RUN(test_cli);
     sample_texture_destroy(tex);
     return check_finish();

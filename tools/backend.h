@@ -104,7 +104,7 @@ struct tool_backend {
 /* ---- Opening ------------------------------------------------------------- */
 
 /* libsample: 2D batches through `batch` (NULL: sample_batch; the tools
- * pass sample_batch_reference for the reference path, sample/testing.h),
+ * give sample_batch_reference for the reference path, sample/testing.h),
  * direction queries through sample_batch_env, volume queries through
  * sample_batch_3d. Returns 0, or TOOL_BACKEND_ERROR (out of memory). */
 typedef sample_status (*tool_batch_fn)(const sample_texture *tex, const sample_sampler *smp,
