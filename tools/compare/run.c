@@ -71,7 +71,7 @@ static void run_row(void *ctx, int j)
     sample_quad *quad = malloc(sizeof *quad * (size_t)v->w);
     sample_stats *st = malloc(sizeof *st * (size_t)v->w);
     float *out = malloc(sizeof *out * 4 * (size_t)v->w);
-    int nt, t, pass, i, k;
+    int nt, t, group, i, k;
     double secs = 0.0, texels = 0.0;
     size_t queries = 0;
     if (!list || !pix || !gpx || !q || !quad || !st || !out || (v->q3 && !q3)) {
@@ -80,13 +80,13 @@ static void run_row(void *ctx, int j)
     }
     nt = row_textures(tex, v->w, list);
     for (t = 0; t < nt; ++t)
-        /* pass 0: Jacobian only; pass 1: with exact corners (corner mode only). */
-        for (pass = 0; pass < 2; ++pass) {
+        /* Two groups of pixels: 0 with the Jacobian only, 1 with exact corners (corner mode only). */
+        for (group = 0; group < 2; ++group) {
             int n = 0, three = list[t] == v->env_tex || cmp_view_3d(v, list[t]);
             double t0;
             for (i = 0; i < v->w; ++i) {
                 int with = jb->corners && v->quad_ok[base + (size_t)i];
-                if (tex[i] != list[t] || with != pass) continue;
+                if (tex[i] != list[t] || with != group) continue;
                 if (three) q3[n] = v->q3[base + (size_t)i];
                 else q[n] = v->q[base + (size_t)i];
                 if (with) quad[n] = v->quad[base + (size_t)i];
@@ -95,7 +95,7 @@ static void run_row(void *ctx, int j)
             }
             if (n == 0) continue;
             t0 = cmp_now();
-            if (jb->fn(jb->ctx, list[t], gpx, three ? NULL : q, three ? q3 : NULL, pass ? quad : NULL,
+            if (jb->fn(jb->ctx, list[t], gpx, three ? NULL : q, three ? q3 : NULL, group ? quad : NULL,
                        (size_t)n, out, jb->stats ? st : NULL) != 0) {
                 jb->row_failed[j] = 1;
                 goto done;
