@@ -110,6 +110,16 @@ SAMPLE_IO_API void sample_texsys_destroy(sample_texsys *sys);
 SAMPLE_IO_API sample_status sample_texsys_open(sample_texsys *sys, const char *filename, const sample_texture **tex,
                                                sample_error *err);
 
+/* sample_texsys_open with the colour space the file's texels are decoded
+ * from (an OCIO name or role, e.g. "data" for a bump or normal map: as
+ * sample_io_options.colorspace). It overrides the system's `colorspace`
+ * option for this texture; NULL opens as sample_texsys_open does. The same
+ * file opened with two colour spaces is two textures, each with its own
+ * tiles. SAMPLE_E_COLOR for a name the OCIO config lacks. */
+SAMPLE_IO_API sample_status sample_texsys_open_colorspace(sample_texsys *sys, const char *filename,
+                                                          const char *colorspace, const sample_texture **tex,
+                                                          sample_error *err);
+
 typedef struct sample_texsys_info {
     /* Size, levels, channels, format, kind (sample_texture_info_get); of
      * a UDIM set, the virtual texture's (section 3). */
