@@ -208,6 +208,7 @@ static void counts(const cs_run *r, sample_texsys *sys, double *tiles, double *b
 typedef struct cs_result {
     bench_timing timing;
     double tiles, bytes; /* per timed run */
+    double working_set;  /* libsample's rows: bytes one run reads through a cache that never evicts */
 } cs_result;
 
 /* One engine on `threads` threads: a warm-up run, then o->runs timed
@@ -229,9 +230,10 @@ static int measure(cs_run *r, sample_texsys *sys, int threads, int runs, size_t 
     return 0;
 }
 
-static void print_row(const char *name, int threads, const cs_result *ours, const cs_result *theirs)
+static void print_row(const char *name, int threads, double cache_mb, const cs_result *ours, const cs_result *theirs)
 {
-    printf("| %s | %d | %.2f | ", name, threads, ours->timing.median / 1e6);
+    printf("| %s | %.1f (%.1f x) | %d | %.2f | ", name, ours->working_set / 1048576.0,
+           ours->working_set / 1048576.0 / cache_mb, threads, ours->timing.median / 1e6);
     if (theirs)
         printf("%.2f | %.2f | ", theirs->timing.median / 1e6, ours->timing.median / theirs->timing.median);
     else
@@ -277,8 +279,8 @@ int bench_cacheset(const bench_cacheset_opts *o)
     sample_texsys_stats st;
     oiio_ts *ts = NULL;
     cs_result *res = NULL;
-    double ws = 0.0, rss_setup, rss_ours;
-    int e, k, nthr = o->threads > 1 ? 2 : 1, rc = 1, made_dir = 0, first_ours = -1;
+    double rss_setup, rss_ours;
+    int e, k, nthr = o->threads > 1 ? 2 : 1, rc = 1, made_dir = 0;
 
     if (!path || !tex || make_frames(o->queries, o->textures, &q, &jobs, &njobs) != 0) {
         fprintf(stderr, "texsample bench: out of memory\n");
@@ -300,11 +302,10 @@ int bench_cacheset(const bench_cacheset_opts *o)
     if (!(sys = open_all(o, o->cache_mb, path, ts, tex))) goto done;
     if (!(res = calloc((size_t)o->neng * 2, sizeof *res))) goto done;
     nq = o->queries * (size_t)o->textures;
-    for (e = 0; e < o->neng && first_ours < 0; ++e)
-        if (!o->eng[e].oiio) first_ours = e;
-    {
-        cs_run r = {&o->eng[first_ours], tex, ts, q, jobs, njobs, 0, 0};
-        if (working_set(o, path, &r, &ws) != 0) goto done;
+    for (e = 0; e < o->neng; ++e) {
+        cs_run r = {&o->eng[e], tex, ts, q, jobs, njobs, 0, 0};
+        if (!o->eng[e].oiio && working_set(o, path, &r, &res[2 * e].working_set) != 0) goto done;
+        res[2 * e + 1].working_set = res[2 * e].working_set;
     }
     rss_setup = peak_rss_mib();
     rss_ours = rss_setup;
@@ -327,16 +328,17 @@ int bench_cacheset(const bench_cacheset_opts *o)
            o->texsize, o->cache_mb);
     printf("one timed run: %d plane frames of %zu queries, screen tiles of %d^2 cycling textures (%zu queries)\n",
            o->textures, o->queries, CS_TILE, nq);
-    printf("working set of one run (%s, a cache that never evicts): %.1f MiB, %.2f x the cache\n\n",
-           o->eng[first_ours].name, ws / 1048576.0, ws / 1048576.0 / o->cache_mb);
-    printf("| filter | threads | ours Msamples/s | OIIO Msamples/s | ratio | ours tiles/run | ours MiB/run "
-           "| OIIO tiles/run | OIIO MiB/run |\n|---|---|---|---|---|---|---|---|---|\n");
+    printf("working set: the MiB one run reads through a cache that never evicts (libsample), and that "
+           "over the cache\n\n");
+    printf("| filter | working set MiB | threads | ours Msamples/s | OIIO Msamples/s | ratio | ours tiles/run | ours MiB/run "
+           "| OIIO tiles/run | OIIO MiB/run |\n|---|---|---|---|---|---|---|---|---|---|\n");
     for (e = 0; e < o->neng; ++e) {
         int t, m;
         if (o->eng[e].oiio) continue;
         m = o->eng[e].match >= 0 && ts ? o->eng[e].match : -1;
         for (t = 0; t < nthr; ++t)
-            print_row(o->eng[e].name, t ? o->threads : 1, &res[2 * e + t], m >= 0 ? &res[2 * m + t] : NULL);
+            print_row(o->eng[e].name, t ? o->threads : 1, o->cache_mb, &res[2 * e + t],
+                      m >= 0 ? &res[2 * m + t] : NULL);
     }
     printf("\nlibsample: peak cache memory %.1f MiB (limit %g MiB)\n", (double)st.peak_memory / 1048576.0,
            o->cache_mb);
