@@ -14,6 +14,7 @@
 
 #ifdef TEXSAMPLE_HAVE_IO
 #include "sample/sample_io.h"
+#include "sample/texsys.h"
 
 /* base_dir/file, or file alone when it is absolute or there is no base. */
 static int resolve(const char *base_dir, const char *file, char *out, size_t outlen)
@@ -70,8 +71,10 @@ static int broadcast_grey(rn_texture *t, char *err, size_t errlen)
         if (ok == 0) rn_seterr(err, errlen, "image texture '%s': out of memory", t->path);
         return 0;
     }
-    sample_texture_destroy(t->tex);
+    /* A cached texture stays its system's; the copy is the scene's. */
+    if (!t->cached) sample_texture_destroy(t->tex);
     t->tex = out;
+    t->cached = 0;
     return 1;
 }
 
@@ -99,8 +102,53 @@ static int read_options(const rn_texture *t, const char *path, const char *what,
     return 1;
 }
 
-int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
-               size_t errlen)
+/* The file through the scene's texture system: header now, tiles as
+ * filters touch them. The texel budget is applied as sample_io applies
+ * max_bytes (every level's texels as float RGBA), so that a scene refused
+ * whole is refused cached too. */
+static int open_cached(rn_texture *t, render_scene *sc, const char *path, const sample_io_options *o,
+                       char *err, size_t errlen)
+{
+    sample_texsys_options so;
+    sample_texsys *sys = sc->texsys;
+    const sample_texture *tex;
+    sample_texture_info info;
+    sample_error e;
+    double bytes = 0.0;
+    int k;
+    if (!sys) {
+        sample_texsys_options_init(&so);
+        so.max_memory_mb = sc->cache_mb;
+        if (sample_texsys_create(&so, &sys, &e) != SAMPLE_OK) {
+            rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
+            return 0;
+        }
+        sc->texsys = sys;
+    }
+    if (sample_texsys_open_colorspace(sys, path, o->colorspace, &tex, &e) != SAMPLE_OK) {
+        rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
+        return 0;
+    }
+    sample_texture_info_get(tex, &info);
+    for (k = 0; k < info.levels; ++k) {
+        int w, h;
+        sample_texture_level_size(tex, k, &w, &h);
+        bytes += 16.0 * (double)w * (double)h;
+    }
+    if (bytes > (double)o->max_bytes) {
+        rn_seterr(err, errlen, "image texture '%s': %d x %d with its levels is more than the scene's texel budget",
+                  t->path, info.width, info.height);
+        return 0;
+    }
+    t->tex = (sample_texture *)(uintptr_t)tex;
+    t->cached = 1;
+    return 1;
+}
+
+void image_texsys_destroy(void *texsys) { sample_texsys_destroy((sample_texsys *)texsys); }
+
+int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max_texels, double *texels,
+               char *err, size_t errlen)
 {
     char path[4096], what[600];
     sample_io_options o;
@@ -116,7 +164,13 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
     sample_mip_params_init(&mip);
     mip.wrap_s = t->wrap_s;
     mip.wrap_t = t->wrap_t;
-    if (sample_io_read_texture(path, &o, &mip, &t->tex, &e) != SAMPLE_OK) {
+    if (sc->cache_mb > 0.0) {
+        /* The box pyramid a texture system builds for a file without
+         * levels reads only in-range texels (libsample/src/mip.c,
+         * fill_box), so the scene's wrap modes and the file's give the
+         * same levels: the cached texture is the whole one, bit for bit. */
+        if (!open_cached(t, sc, path, &o, err, errlen)) return 0;
+    } else if (sample_io_read_texture(path, &o, &mip, &t->tex, &e) != SAMPLE_OK) {
         t->tex = NULL;
         rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
         return 0;
@@ -184,9 +238,12 @@ int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double 
 
 #else
 
-int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
-               size_t errlen)
+void image_texsys_destroy(void *texsys) { (void)texsys; }
+
+int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max_texels, double *texels,
+               char *err, size_t errlen)
 {
+    (void)sc;
     (void)base_dir;
     (void)max_texels;
     *texels = 0;
