@@ -4,13 +4,15 @@
  * for bit — the built-in photo-plane (an untiled JPEG, tiled and
  * mip-mapped on first use) and the same photograph as a tiled, mip-mapped
  * OpenEXR, through the default cache and through one that holds a fraction
- * of its tiles (evicting while two threads render). Also: the same file
- * as colour and as data is two textures, and --cache-mb's usage error.
+ * of its tiles (evicting while two threads render), the same file as
+ * colour and as a bump map (two textures of the system); a mirror sphere
+ * under a cube and a lat-long environment file; --cache-mb's usage error.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 #include "render.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <unistd.h>
 
@@ -102,6 +104,61 @@ static void test_tiled(void)
     remove(scene);
 }
 
+/* A mirror sphere under an environment file: a cube map (16² faces) and a
+ * 2:1 lat-long map, both written by sample_io_write_env, through the
+ * texture system and read whole: the same pictures. */
+static void test_environment(void)
+{
+    static const char *const names[2] = {"cube.exr", "latlong.exr"};
+    float *px = malloc(sizeof(float) * 4 * 16 * 16 * 6);
+    sample_image faces[6], img;
+    sample_mip_params mip;
+    sample_texture *env[2] = {NULL, NULL};
+    sample_error e;
+    char path[128], scene[128];
+    uint64_t r = 88172645463325252ull;
+    int k;
+    if (!px) return;
+    for (k = 0; k < 4 * 16 * 16 * 6; ++k) {
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        px[k] = (float)(r >> 40) / 16777216.0f;
+    }
+    for (k = 0; k < 6; ++k) {
+        faces[k].width = faces[k].height = 16;
+        faces[k].channels = 4;
+        faces[k].format = SAMPLE_FORMAT_F32;
+        faces[k].data = px + (size_t)k * 4 * 16 * 16;
+        faces[k].row_stride = 0;
+    }
+    img = faces[0];
+    img.width = 32; /* the first two faces' texels as a 32 x 16 map */
+    sample_mip_params_init(&mip);
+    CHECK(sample_texture_create_cube(faces, &mip, &env[0], &e) == SAMPLE_OK, "%s", e.message);
+    CHECK(sample_texture_create(&img, &mip, &env[1], &e) == SAMPLE_OK, "%s", e.message);
+    for (k = 0; k < 2; ++k) {
+        render_image whole, cached;
+        FILE *f;
+        snprintf(path, sizeof path, "%s/%s", dir, names[k]);
+        snprintf(scene, sizeof scene, "%s/mirror.json", dir);
+        CHECK(env[k] && sample_io_write_env(path, env[k], NULL, &e) == SAMPLE_OK, "%s", e.message);
+        if (!(f = fopen(scene, "w"))) continue;
+        fprintf(f, "{\"camera\":{\"eye\":[0,-3,0.5],\"look\":[0,0,0],\"up\":[0,0,1],\"fov\":45},"
+                   "\"environment\":{\"file\":\"%s\"},"
+                   "\"materials\":[{\"diffuse\":[0,0,0],\"ambient\":0,\"reflect\":1}],"
+                   "\"objects\":[{\"type\":\"sphere\"}]}",
+                names[k]);
+        fclose(f);
+        if (render(scene, NULL, 0.0, 1, &whole) && render(scene, NULL, RENDER_CACHE_MB, 1, &cached))
+            same_picture(&whole, &cached, names[k]);
+        render_image_free(&whole);
+        render_image_free(&cached);
+        remove(path);
+        remove(scene);
+        sample_texture_destroy(env[k]);
+    }
+    free(px);
+}
+
 static int exit_code(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -1; }
 
 static void test_usage(void)
@@ -121,6 +178,7 @@ int main(int argc, char **argv)
     texsample = argc > 1 ? argv[1] : "texsample";
     RUN(test_builtin);
     RUN(test_tiled);
+    RUN(test_environment);
     RUN(test_usage);
     rmdir(dir);
     return check_finish();

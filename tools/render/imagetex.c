@@ -107,7 +107,7 @@ static int read_options(const rn_texture *t, const char *path, const char *what,
  * max_bytes (every level's texels as float RGBA), so that a scene refused
  * whole is refused cached too. */
 static int open_cached(rn_texture *t, render_scene *sc, const char *path, const sample_io_options *o,
-                       char *err, size_t errlen)
+                       const char *what, char *err, size_t errlen)
 {
     sample_texsys_options so;
     sample_texsys *sys = sc->texsys;
@@ -120,13 +120,13 @@ static int open_cached(rn_texture *t, render_scene *sc, const char *path, const 
         sample_texsys_options_init(&so);
         so.max_memory_mb = sc->cache_mb;
         if (sample_texsys_create(&so, &sys, &e) != SAMPLE_OK) {
-            rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
+            rn_seterr(err, errlen, "%s '%s': %s", what, t->path, e.message);
             return 0;
         }
         sc->texsys = sys;
     }
     if (sample_texsys_open_colorspace(sys, path, o->colorspace, &tex, &e) != SAMPLE_OK) {
-        rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
+        rn_seterr(err, errlen, "%s '%s': %s", what, t->path, e.message);
         return 0;
     }
     sample_texture_info_get(tex, &info);
@@ -136,7 +136,7 @@ static int open_cached(rn_texture *t, render_scene *sc, const char *path, const 
         bytes += 16.0 * (double)w * (double)h;
     }
     if (bytes > (double)o->max_bytes) {
-        rn_seterr(err, errlen, "image texture '%s': %d x %d with its levels is more than the scene's texel budget",
+        rn_seterr(err, errlen, "%s '%s': %d x %d with its levels is more than the scene's texel budget", what,
                   t->path, info.width, info.height);
         return 0;
     }
@@ -169,7 +169,7 @@ int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max
          * levels reads only in-range texels (libsample/src/mip.c,
          * fill_box), so the scene's wrap modes and the file's give the
          * same levels: the cached texture is the whole one, bit for bit. */
-        if (!open_cached(t, sc, path, &o, err, errlen)) return 0;
+        if (!open_cached(t, sc, path, &o, "image texture", err, errlen)) return 0;
     } else if (sample_io_read_texture(path, &o, &mip, &t->tex, &e) != SAMPLE_OK) {
         t->tex = NULL;
         rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
@@ -181,8 +181,8 @@ int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max
     return 1;
 }
 
-int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
-                   char *err, size_t errlen)
+int env_image_load(const rn_texture *t, rn_env *e, render_scene *sc, const char *base_dir, double max_texels,
+                   double *texels, char *err, size_t errlen)
 {
     char path[4096], what[600];
     sample_io_options o;
@@ -197,7 +197,22 @@ int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double 
     snprintf(what, sizeof what, "environment file '%s' at", t->path);
     if (!read_options(t, path, what, max_texels, &o, err, errlen)) return 0;
     sample_mip_params_init(&mip);
-    if (sample_io_read_env(path, &o, &mip, &e->tex, &er) != SAMPLE_OK) {
+    if (sc->cache_mb > 0.0 && e->file_kind == RN_ENV_NONE && !e->file_size) {
+        /* Through the texture system where it gives what
+         * sample_io_read_env gives: a cube map (N x 6N), or a 2:1 lat-long
+         * map as a 2D texture of the file's levels (a box pyramid, which
+         * reads no texel past an edge, where it has none). Another shape
+         * goes to sample_io_read_env, which applies the rest of its rule;
+         * a map resampled into another layout or size is read whole. */
+        rn_texture c = *t;
+        if (!open_cached(&c, sc, path, &o, "file", err, errlen)) return 0;
+        sample_texture_info_get(c.tex, &info);
+        if (info.kind == SAMPLE_TEXTURE_CUBE || (info.kind == SAMPLE_TEXTURE_2D && info.width == 2 * info.height)) {
+            e->tex = c.tex;
+            e->cached = 1;
+        }
+    }
+    if (!e->tex && sample_io_read_env(path, &o, &mip, &e->tex, &er) != SAMPLE_OK) {
         e->tex = NULL;
         rn_seterr(err, errlen, "file '%s': %s", t->path, er.message);
         return 0;
@@ -213,12 +228,14 @@ int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double 
             return 0;
         }
         g.tex = e->tex;
+        g.cached = e->cached;
         e->tex = NULL;
         if (!broadcast_grey(&g, err, errlen)) {
-            sample_texture_destroy(g.tex);
+            if (!g.cached) sample_texture_destroy(g.tex);
             return 0;
         }
         e->tex = g.tex;
+        e->cached = g.cached;
     }
     if ((e->file_kind != RN_ENV_NONE && e->file_kind != e->kind) || e->file_size) {
         rn_env_kind want = e->file_kind != RN_ENV_NONE ? e->file_kind : e->kind;
@@ -252,10 +269,11 @@ int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max
     return 0;
 }
 
-int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
-                   char *err, size_t errlen)
+int env_image_load(const rn_texture *t, rn_env *e, render_scene *sc, const char *base_dir, double max_texels,
+                   double *texels, char *err, size_t errlen)
 {
     (void)e;
+    (void)sc;
     (void)base_dir;
     (void)max_texels;
     *texels = 0;

@@ -270,8 +270,9 @@ typedef enum rn_env_kind { RN_ENV_NONE = 0, RN_ENV_LATLONG = 1, RN_ENV_CUBE = 2 
 typedef struct rn_env {
     rn_env_kind kind;
     /* A cube map (SAMPLE_TEXTURE_CUBE) or a lat-long 2D texture, in the
-     * maps' y-up frame (env_to_map); owned. */
+     * maps' y-up frame (env_to_map); owned unless `cached`. */
     sample_texture *tex;
+    int cached; /* 1: tex belongs to the scene's texture system */
     double radius;            /* > 0: the paper's position correction, the
                                  environment painted on a sphere this big
                                  around `centre`; 0: infinitely far */
@@ -308,9 +309,11 @@ void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
 void env_release(rn_env *e);
 /* An environment file (t->path, t->colorspace) into e->tex: its own layout
  * (sample_io_read_env), resampled into e->file_kind at e->file_size where
- * that is set; *texels as image_load (imagetex.c). */
-int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
-                   char *err, size_t errlen);
+ * that is set; *texels as image_load (imagetex.c). Unresampled, a cube or
+ * 2:1 lat-long map opens through the scene's texture system (as
+ * image_load) where sc->cache_mb > 0. */
+int env_image_load(const rn_texture *t, rn_env *e, render_scene *sc, const char *base_dir, double max_texels,
+                   double *texels, char *err, size_t errlen);
 
 /* ---- Scene (scene.c) ---------------------------------------------------- */
 

@@ -243,7 +243,7 @@ int scene_finish(render_scene *sc, const render_parse_options *po, double texels
     if (sc->env_image.path[0]) {
         double n = 0.0;
         char inner[400];
-        if (!env_image_load(&sc->env_image, &sc->env, base_dir, texels_left, &n, err, errlen)) {
+        if (!env_image_load(&sc->env_image, &sc->env, sc, base_dir, texels_left, &n, err, errlen)) {
             snprintf(inner, sizeof inner, "%s", err ? err : "");
             rn_seterr(err, errlen, "environment: %s", inner);
             return 0;
