@@ -183,10 +183,36 @@ static sample_texsys *open_all(const bench_cacheset_opts *o, double mb, char (*p
     return sys;
 }
 
+/* The process's peak resident memory in MiB: Linux's VmHWM, which
+ * rss_peak_reset sets back to the memory resident now (proc(5),
+ * /proc/pid/clear_refs, value 5), so that a peak can be had per phase;
+ * elsewhere getrusage's ru_maxrss, the peak of the whole run. */
+static double status_mib(const char *field)
+{
+    char line[256];
+    FILE *f = fopen("/proc/self/status", "r");
+    double kib = -1.0;
+    while (f && fgets(line, sizeof line, f))
+        if (strncmp(line, field, strlen(field)) == 0) kib = atof(line + strlen(field));
+    if (f) fclose(f);
+    return kib < 0.0 ? -1.0 : kib / 1024.0;
+}
+
 static double peak_rss_mib(void)
 {
     struct rusage ru;
-    return getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss / 1024.0 : -1.0;
+    double mib = status_mib("VmHWM:");
+    if (mib < 0.0 && getrusage(RUSAGE_SELF, &ru) == 0) mib = (double)ru.ru_maxrss / 1024.0;
+    return mib;
+}
+
+/* 1 if the peak now starts again from the resident memory. */
+static int rss_peak_reset(void)
+{
+    FILE *f = fopen("/proc/self/clear_refs", "w");
+    int ok = f && fputs("5", f) >= 0;
+    if (f) ok = fclose(f) == 0 && ok;
+    return ok;
 }
 
 /* Tiles and bytes one side has read so far. */
@@ -279,8 +305,8 @@ int bench_cacheset(const bench_cacheset_opts *o)
     sample_texsys_stats st;
     oiio_ts *ts = NULL;
     cs_result *res = NULL;
-    double rss_setup, rss_ours;
-    int e, k, nthr = o->threads > 1 ? 2 : 1, rc = 1, made_dir = 0;
+    double rss_setup, rss_phase[2] = {-1.0, -1.0}, rss_start[2] = {-1.0, -1.0};
+    int e, k, reset = 0, nthr = o->threads > 1 ? 2 : 1, rc = 1, made_dir = 0;
 
     if (!path || !tex || make_frames(o->queries, o->textures, &q, &jobs, &njobs) != 0) {
         fprintf(stderr, "texsample bench: out of memory\n");
@@ -302,16 +328,12 @@ int bench_cacheset(const bench_cacheset_opts *o)
     if (!(sys = open_all(o, o->cache_mb, path, ts, tex))) goto done;
     if (!(res = calloc((size_t)o->neng * 2, sizeof *res))) goto done;
     nq = o->queries * (size_t)o->textures;
-    for (e = 0; e < o->neng; ++e) {
-        cs_run r = {&o->eng[e], tex, ts, q, jobs, njobs, 0, 0};
-        if (!o->eng[e].oiio && working_set(o, path, &r, &res[2 * e].working_set) != 0) goto done;
-        res[2 * e + 1].working_set = res[2 * e].working_set;
-    }
     rss_setup = peak_rss_mib();
-    rss_ours = rss_setup;
-    /* libsample's engines first, then OIIO's, so that the process's peak
-     * RSS after the first group is libsample's alone. */
-    for (k = 0; k < 2; ++k)
+    /* libsample's engines first, then OIIO's, the peak RSS of each group
+     * apart where it can be reset. */
+    for (k = 0; k < 2; ++k) {
+        reset = rss_peak_reset();
+        rss_start[k] = status_mib("VmRSS:");
         for (e = 0; e < o->neng; ++e) {
             cs_run r = {&o->eng[e], tex, ts, q, jobs, njobs, 0, 0};
             int t;
@@ -321,8 +343,16 @@ int bench_cacheset(const bench_cacheset_opts *o)
                     fprintf(stderr, "texsample bench: %s failed\n", o->eng[e].name);
                     goto done;
                 }
-            if (!k) rss_ours = peak_rss_mib();
         }
+        rss_phase[k] = peak_rss_mib();
+    }
+    /* Last: the freed tiles of a cache that never evicts would stay in
+     * the heap, resident, under the RSS of the timed runs. */
+    for (e = 0; e < o->neng; ++e) {
+        cs_run r = {&o->eng[e], tex, ts, q, jobs, njobs, 0, 0};
+        if (!o->eng[e].oiio && working_set(o, path, &r, &res[2 * e].working_set) != 0) goto done;
+        res[2 * e + 1].working_set = res[2 * e].working_set;
+    }
     sample_texsys_stats_get(sys, &st);
     printf("%d textures of %d^2 half (tiled 64^2, mip-mapped), cache %g MiB on both sides\n", o->textures,
            o->texsize, o->cache_mb);
@@ -348,9 +378,13 @@ int bench_cacheset(const bench_cacheset_opts *o)
         printf("OIIO: cache memory at the end %.1f MiB, peak %lld tiles\n", (double)os.memory / 1048576.0,
                os.peak_tiles);
     }
-    printf("process peak RSS: %.0f MiB after writing and opening the files, %.0f MiB after libsample's runs, "
-           "%.0f MiB at the end\n",
-           rss_setup, rss_ours, peak_rss_mib());
+    if (reset)
+        printf("process RSS: peak %.0f MiB writing and opening the files; libsample's runs from %.0f MiB to a peak "
+               "of %.0f MiB (+%.1f), OIIO's from %.0f to %.0f MiB (+%.1f)\n",
+               rss_setup, rss_start[0], rss_phase[0], rss_phase[0] - rss_start[0], rss_start[1], rss_phase[1],
+               rss_phase[1] - rss_start[1]);
+    else
+        printf("process peak RSS: %.0f MiB (the whole run's)\n", peak_rss_mib());
     rc = 0;
 done:
     sample_texsys_destroy(sys);
