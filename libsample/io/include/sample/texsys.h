@@ -34,6 +34,13 @@
  *   again. Texels are stored as sample_io_read_texture stores them:
  *   the same format, colour conversion and premultiplication.
  *
+ *   A cube map (an N × 6N image, as sample_io_read_env reads it) opens as
+ *   a SAMPLE_TEXTURE_CUBE texture and a volume (as sample_io_read_volume
+ *   reads one) as a SAMPLE_TEXTURE_3D texture: read whole by that reader
+ *   when opened, with the default pyramid, and held until the system is
+ *   destroyed, outside the memory limit (doc/texture-system.md, "Cube maps
+ *   and volumes"). A lat-long map is a 2D texture, read tile by tile.
+ *
  * 3. UDIM
  *
  *   A name holding <UDIM>, <u>, <v>, <U>, <V> or <uvtile> names a set of
