@@ -484,7 +484,8 @@ int cmd_bench(int argc, char **argv)
     b.o.filters = "all";
     b.o.frame = 256;
     if (parse_args(argc, argv, &b.o) != 0) return EXIT_USAGE;
-    if (b.o.volume && b.o.env) return cli_usage_error("bench", "--volume and --env are two different runs: give one");
+    if (b.o.volume + b.o.env + (b.o.textures > 0 || b.o.nfiles > 0) > 1)
+        return cli_usage_error("bench", "--volume, --env and --textures are different runs: give one");
     if (b.o.volume) {
         /* A volume of --size³ texels: 512³ float RGBA is already 2 GiB. */
         if (b.o.size_given && b.o.size > 512)
@@ -500,7 +501,7 @@ int cmd_bench(int argc, char **argv)
     }
     if (b.o.textures) {
         if (!(b.o.cache_mb > 0.0f)) return cli_usage_error("bench", "--textures needs --cache-mb");
-        if (b.o.env || b.o.threads > 64) return cli_usage_error("bench", "--textures: no --env, at most 64 threads");
+        if (b.o.threads > 64) return cli_usage_error("bench", "--textures: at most 64 threads");
         if (!b.o.filters_given) b.o.filters = "trilinear";
     } else if (b.o.texsize) {
         return cli_usage_error("bench", "--texsize is an option of --textures");
