@@ -153,6 +153,15 @@ static void test_env(void)
     CHECK(sample_texsys_open(sys, pc, &tc, &e) == SAMPLE_OK, "%s", e.message);
     CHECK(sample_texsys_open(sys, pl, &tl, &e) == SAMPLE_OK, "%s", e.message);
     CHECK(sample_texsys_open(sys, pc, &again, &e) == SAMPLE_OK && again == tc, "the cube opens once");
+    {
+        /* An N x 6N picture that does not say it is a cube map stays 2D. */
+        const sample_texture *strip = NULL;
+        char ps[512];
+        snprintf(ps, sizeof ps, "%s/strip.exr", dir);
+        CHECK(sample_io_write_image(ps, px, N, 6 * N, 4, NULL, &e) == SAMPLE_OK, "%s", e.message);
+        CHECK(sample_texsys_open(sys, ps, &strip, &e) == SAMPLE_OK, "%s", e.message);
+        if (strip) check_kind(sys, strip, SAMPLE_TEXTURE_2D, "unnamed strip");
+    }
     random_dirs(q, Q);
     if (tc && rc) {
         check_kind(sys, tc, SAMPLE_TEXTURE_CUBE, "cube");

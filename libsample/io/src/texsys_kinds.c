@@ -3,8 +3,11 @@
  * "Cube maps and volumes"). sample_texsys_open recognises them by the
  * rules of their whole-file readers: a volume as sample_io_read_volume
  * reads one (an image with a z extent, or subimages of one size), a cube
- * map as sample_io_read_env reads one (an N × 6N image: OpenEXR's stacked
- * faces). A lat-long environment is a 2D texture and opens as any other.
+ * map as sample_io_read_env reads one, where the file says it is one
+ * (textureformat "CubeFace Environment", which OpenEXR's envmap attribute
+ * reads as): an image that does not say so is a 2D texture whatever its
+ * shape, since a texture opened by name need not be an environment. A
+ * lat-long environment is a 2D texture and opens as any other.
  *
  * Such a texture is read whole, when it is opened, by that reader with
  * the default pyramid (sample_mip_params_init: the box filter across the
@@ -58,7 +61,8 @@ static int whole_kind(const char *path, const char *cs, sample_error *err)
     sample_io_options_init(&o);
     o.colorspace = cs;
     if (sample_io_describe(path, &o, &info, err) != SAMPLE_OK) return -1;
-    return info.height == 6 * info.width ? 2 : 0;
+    /* sample_io_read_env refuses a named cube of another shape. */
+    return strcmp(info.textureformat, "CubeFace Environment") == 0 ? 2 : 0;
 }
 
 sample_status io_ts_whole_open(sample_texsys *sys, const char *path, const char *cs, const sample_texture **out,

@@ -34,7 +34,8 @@
  *   again. Texels are stored as sample_io_read_texture stores them:
  *   the same format, colour conversion and premultiplication.
  *
- *   A cube map (an N × 6N image, as sample_io_read_env reads it) opens as
+ *   A cube map (a file that says so, textureformat "CubeFace Environment",
+ *   in OpenEXR's N × 6N layout, as sample_io_read_env reads it) opens as
  *   a SAMPLE_TEXTURE_CUBE texture and a volume (as sample_io_read_volume
  *   reads one) as a SAMPLE_TEXTURE_3D texture: read whole by that reader
  *   when opened, with the default pyramid, and held until the system is
