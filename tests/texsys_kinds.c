@@ -153,6 +153,13 @@ static void test_env(void)
     CHECK(sample_texsys_open(sys, pc, &tc, &e) == SAMPLE_OK, "%s", e.message);
     CHECK(sample_texsys_open(sys, pl, &tl, &e) == SAMPLE_OK, "%s", e.message);
     CHECK(sample_texsys_open(sys, pc, &again, &e) == SAMPLE_OK && again == tc, "the cube opens once");
+    if (rc) {
+        sample_texsys_stats st;
+        sample_texture_info ri;
+        sample_texsys_stats_get(sys, &st);
+        sample_texture_info_get(rc, &ri);
+        CHECK(st.held_memory == ri.bytes, "held %zu bytes, the cube has %zu", st.held_memory, ri.bytes);
+    }
     {
         /* An N x 6N picture that does not say it is a cube map stays 2D. */
         const sample_texture *strip = NULL;

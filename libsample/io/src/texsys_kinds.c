@@ -112,6 +112,7 @@ sample_status io_ts_whole_open(sample_texsys *sys, const char *path, const char 
     sys->st.files_opened++;
     sys->st.tiles_read++;
     sys->st.bytes_read += w->held->bytes;
+    sys->st.held_memory += w->held->bytes;
     w->next = sys->wholes;
     sys->wholes = w;
     pthread_mutex_unlock(&sys->lock);

@@ -170,6 +170,9 @@ typedef struct sample_texsys_stats {
     size_t memory;          /* bytes of tiles held now */
     size_t peak_memory;     /* most bytes of tiles ever held at once */
     int open_files, peak_open_files;
+    /* Bytes of the cube maps and volumes held whole (section 2), outside
+     * max_memory_mb and not in `memory`. */
+    size_t held_memory;
 } sample_texsys_stats;
 
 SAMPLE_IO_API void sample_texsys_stats_get(sample_texsys *sys, sample_texsys_stats *stats);
