@@ -19,7 +19,7 @@ enum { SIZE = 96, MARGIN = SIZE / 25 };
 static int open_view(const char *name, render_scene **sc, cmp_view *v)
 {
     char label[64], err[512];
-    if (cmp_scene_open(name, SIZE, sc, label, sizeof label, err, sizeof err) != 0) {
+    if (cmp_scene_open(name, SIZE, RENDER_CACHE_MB, sc, label, sizeof label, err, sizeof err) != 0) {
         CHECK(0, "%s: %s", name, err);
         return 1;
     }

@@ -8,6 +8,8 @@ if(TARGET texsample_render)
     target_link_libraries(${name} PRIVATE texsample_render)
     target_include_directories(${name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
     target_compile_options(${name} PRIVATE ${SAMPLE_WARNINGS})
+    # render_cache converts testimages/photo.jpg.
+    target_compile_definitions(${name} PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
     # The texsample program for the tests that run the command line.
     add_test(NAME ${name} COMMAND ${name} $<TARGET_FILE:texsample>)
     set_tests_properties(${name} PROPERTIES TIMEOUT 300 SKIP_RETURN_CODE 77)

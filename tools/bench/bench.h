@@ -86,6 +86,10 @@ int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts
 /* Replace t's libsample texture by OIIO's file (in dir) opened through a
  * texture system of cache_mb MiB. Returns 0, or reports and returns −1. */
 int bench_texture_cache(bench_texture *t, bench_format fmt, const char *dir, double cache_mb);
+/* bench_texture.cached for a texture of a texture system: sys is the
+ * sample_texsys. */
+sample_status bench_texsys_batch(void *sys, const sample_texture *tex, const sample_sampler *s,
+                                 const sample_batch_args *a);
 /* What the texture system of a cached texture read (nothing otherwise). */
 void bench_texture_stats(const bench_texture *t, FILE *f);
 void bench_texture_free(bench_texture *t);
@@ -192,6 +196,26 @@ int bench_env(const bench_env_opts *o);
  * OpenImageIO's texture3d() (its file in tmpdir) unless oiio is 0;
  * prints the table. Returns an exit code. */
 int bench_volume(int size, size_t queries, int runs, int frame, int oiio, const char *tmpdir);
+
+/* ---- A working set larger than the cache (cacheset.c) ------------------ */
+
+/* bench --textures N: N tiled, mip-mapped half-float OpenEXR files of
+ * texsize² (written to tmpdir and removed after, or the named `files`),
+ * sampled by plane frames whose screen tiles cycle through the textures,
+ * through one texture system of cache_mb MiB and OIIO's TextureSystem of
+ * the same max_memory_MB, on 1 and `threads` threads; prints samples/s,
+ * the tiles and bytes each side read, and peak memory. Returns an exit
+ * code. */
+typedef struct bench_cacheset_opts {
+    int textures, texsize, runs, threads, oiio;
+    size_t queries; /* per frame */
+    double cache_mb;
+    const char *tmpdir;
+    char **files; /* NULL, or `textures` names of existing files */
+    const bench_engine *eng; /* the filters, as bench_engines_of makes them */
+    int neng;
+} bench_cacheset_opts;
+int bench_cacheset(const bench_cacheset_opts *o);
 
 /* ---- Report (report.c) ------------------------------------------------ */
 

@@ -85,6 +85,18 @@ static const char help_kinds[] =
     "                     --sets, --formats, --filters, --cache-mb, --scalar,\n"
     "                     --json and --save do not apply\n"
     "  --frame N          the teapot frame's side with --volume (default 256)\n\n"
+    "  --textures N       a working set larger than the cache instead (needs\n"
+    "                     --cache-mb): N tiled mip-mapped half OpenEXR files of\n"
+    "                     --texsize^2 in --tmpdir (removed after), plane frames of\n"
+    "                     --queries (default 65536) whose 16^2-pixel screen tiles\n"
+    "                     cycle the textures, N frames a timed run; libsample\n"
+    "                     through one texture system and OIIO's TextureSystem with\n"
+    "                     the same cache; prints samples/s, tiles and bytes read\n"
+    "                     by each, peak memory; takes --runs, --threads (at most\n"
+    "                     64), --filters (default trilinear), --no-oiio\n"
+    "  --texsize N        those textures' side (default 4096)\n"
+    "  --texture-file F   sample file F instead of writing one (repeat the option,\n"
+    "                     once per texture; N is their count)\n\n"
     "Filters:\n";
 static const char help_tail[] = "\nExit codes: 0 success, 1 runtime error, 2 usage error.\n";
 
@@ -93,6 +105,8 @@ enum { MAX_ENGINES = 32 };
 typedef struct bench_opts {
     int size, runs, threads, oiio, scalar, gl, env;
     int volume, frame, size_given, queries_given; /* --volume and its options */
+    int textures, texsize, nfiles, filters_given;  /* --textures and its options */
+    char *files[256];
     float cache_mb; /* 0: resident textures, OIIO's default cache */
     const char *gl_device;
     size_t queries, batch;
@@ -160,6 +174,16 @@ static int parse_args(int argc, char **argv, bench_opts *o)
         } else if (cli_opt(argc, argv, &i, "--frame", &v)) {
             if (parse_size("--frame", v, 1, 4096, &x)) return -1;
             o->frame = (int)x;
+        } else if (cli_opt(argc, argv, &i, "--textures", &v)) {
+            if (parse_size("--textures", v, 1, 256, &x)) return -1;
+            o->textures = (int)x;
+        } else if (cli_opt(argc, argv, &i, "--texsize", &v)) {
+            if (parse_size("--texsize", v, 16, SAMPLE_MAX_SIZE, &x)) return -1;
+            o->texsize = (int)x;
+        } else if (cli_opt(argc, argv, &i, "--texture-file", &v)) {
+            if (!v || !*v) return cli_usage_error("bench", "--texture-file needs a file name");
+            if (o->nfiles == 256) return cli_usage_error("bench", "--texture-file: at most 256 files");
+            o->files[o->nfiles++] = (char *)(uintptr_t)v;
         } else if (cli_opt(argc, argv, &i, "--size", &v)) {
             if (parse_size("--size", v, 16, SAMPLE_MAX_SIZE / 4, &x)) return -1;
             o->size = (int)x;
@@ -185,6 +209,7 @@ static int parse_args(int argc, char **argv, bench_opts *o)
         } else if (cli_opt(argc, argv, &i, "--filters", &v)) {
             if (!v || !*v) return cli_usage_error("bench", "--filters needs a list");
             o->filters = v;
+            o->filters_given = 1;
         } else if (cli_opt(argc, argv, &i, "--json", &v)) {
             if (!v) return cli_usage_error("bench", "--json needs a file name");
             o->json = v;
@@ -459,7 +484,8 @@ int cmd_bench(int argc, char **argv)
     b.o.filters = "all";
     b.o.frame = 256;
     if (parse_args(argc, argv, &b.o) != 0) return EXIT_USAGE;
-    if (b.o.volume && b.o.env) return cli_usage_error("bench", "--volume and --env are two different runs: give one");
+    if (b.o.volume + b.o.env + (b.o.textures > 0 || b.o.nfiles > 0) > 1)
+        return cli_usage_error("bench", "--volume, --env and --textures are different runs: give one");
     if (b.o.volume) {
         /* A volume of --size³ texels: 512³ float RGBA is already 2 GiB. */
         if (b.o.size_given && b.o.size > 512)
@@ -468,7 +494,36 @@ int cmd_bench(int argc, char **argv)
         return bench_volume(b.o.size_given ? b.o.size : 128, b.o.queries_given ? b.o.queries : 65536,
                             b.o.runs, b.o.frame, b.o.oiio, tmp && *tmp ? tmp : "/tmp");
     }
+    if (b.o.nfiles) {
+        if (b.o.textures && b.o.textures != b.o.nfiles)
+            return cli_usage_error("bench", "--textures %d but %d --texture-file", b.o.textures, b.o.nfiles);
+        b.o.textures = b.o.nfiles;
+    }
+    if (b.o.textures) {
+        if (!(b.o.cache_mb > 0.0f)) return cli_usage_error("bench", "--textures needs --cache-mb");
+        if (b.o.threads > 64) return cli_usage_error("bench", "--textures: at most 64 threads");
+        if (!b.o.filters_given) b.o.filters = "trilinear";
+    } else if (b.o.texsize) {
+        return cli_usage_error("bench", "--texsize is an option of --textures");
+    }
     if (make_engines(&b) != 0) return EXIT_USAGE;
+    if (b.o.textures) {
+        bench_cacheset_opts co;
+        tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
+        memset(&co, 0, sizeof co);
+        co.textures = b.o.textures;
+        co.texsize = b.o.texsize ? b.o.texsize : 4096;
+        co.runs = b.o.runs;
+        co.threads = b.o.threads;
+        co.oiio = b.o.oiio;
+        co.queries = b.o.queries_given ? b.o.queries : 65536;
+        co.cache_mb = b.o.cache_mb;
+        co.tmpdir = tmp && *tmp ? tmp : "/tmp";
+        co.files = b.o.nfiles ? b.o.files : NULL;
+        co.eng = b.eng;
+        co.neng = b.neng;
+        return bench_cacheset(&co);
+    }
     if (b.o.env) {
         bench_env_opts eo;
         if (b.o.json || b.o.save || b.o.scalar || b.o.sets != (1u << BENCH_SET_COUNT) - 1 ||

@@ -141,8 +141,8 @@ int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts
     return rc;
 }
 
-static sample_status cached_batch(void *sys, const sample_texture *tex, const sample_sampler *s,
-                                  const sample_batch_args *a)
+sample_status bench_texsys_batch(void *sys, const sample_texture *tex, const sample_sampler *s,
+                                 const sample_batch_args *a)
 {
     return sample_texsys_batch((sample_texsys *)sys, tex, s, a);
 }
@@ -166,7 +166,7 @@ int bench_texture_cache(bench_texture *t, bench_format fmt, const char *dir, dou
     /* The system owns it; bench_texture_free destroys the system. */
     t->ours = (sample_texture *)(uintptr_t)tex;
     t->sys = sys;
-    t->cached = cached_batch;
+    t->cached = bench_texsys_batch;
     return 0;
 }
 

@@ -25,6 +25,7 @@ typedef struct opts {
     const char *scenes[MAX_SCENES];
     int nscenes;
     int size, truth, threads, raw, runs;
+    double cache_mb; /* image textures' texture system (render --cache-mb) */
     const char *out;
     cmp_config cfg[CMP_MAX_CONFIGS];
     int ncfg;
@@ -80,6 +81,9 @@ static void usage(void)
            "  --runs N            filter each image N times and report the median times\n"
            "                      (default 3; 1 to 100)\n"
            "  --out DIR           output folder (default out/compare)\n"
+           "  --cache-mb N        image textures open through one texture system per scene\n"
+           "                      whose tile cache holds N MiB (default 1024); 0 reads\n"
+           "                      each image file whole (doc/renderer.md)\n"
            "  --configs LIST      comma-separated configurations from the tools' filter\n"
            "                      registry (doc/comparison.md); default, or 'all': those\n"
            "                      marked *\n");
@@ -123,6 +127,7 @@ static int parse_args(int argc, char **argv, opts *o)
     o->truth = 32;
     o->runs = 3;
     o->draws = 1;
+    o->cache_mb = RENDER_CACHE_MB;
     o->out = "out/compare";
     {
         long n = sysconf(_SC_NPROCESSORS_ONLN);
@@ -139,6 +144,11 @@ static int parse_args(int argc, char **argv, opts *o)
             } else {
                 return cli_usage_error("compare", "at most %d scenes", MAX_SCENES);
             }
+        } else if (cli_opt(argc, argv, &i, "--cache-mb", &v)) {
+            float mb;
+            if (!v || !cli_parse_float(v, &mb) || !(mb >= 0.0f) || mb > 1048576.0f)
+                return cli_usage_error("compare", "--cache-mb needs a size in MiB in [0, 1048576]");
+            o->cache_mb = mb;
         } else if (cli_opt(argc, argv, &i, "--size", &v)) {
             if (!v || !cli_parse_int(v, &o->size) || o->size < 8 || o->size > 4096)
                 return cli_usage_error("compare", "--size needs an integer 8 to 4096");
@@ -349,7 +359,7 @@ static int compare_scene(const opts *o, const char *name, cmp_scene_result *s)
     memset(s, 0, sizeof *s);
     snprintf(s->source, sizeof s->source, "%s", name);
     s->runs = o->runs;
-    if (cmp_scene_open(name, o->size, &sc, s->label, sizeof s->label, err, sizeof err))
+    if (cmp_scene_open(name, o->size, o->cache_mb, &sc, s->label, sizeof s->label, err, sizeof err))
         return cli_runtime_error("compare", "scene '%s': %s", name, err);
     snprintf(dir, sizeof dir, "%s/%s", o->out, s->label);
     if (make_dirs(dir)) {

@@ -61,9 +61,11 @@ void cmp_config_sampler(const cmp_config *c, const sample_sampler *scene, sample
 extern const char *const cmp_scene_names[];
 extern const char *const cmp_default_scenes[];
 /* A built-in scene of render (render_builtin_names), one of compare's own,
- * or a scene file. label gets a file-name-safe name. Returns 0 on success. */
-int cmp_scene_open(const char *name, int size, render_scene **out, char *label, size_t labellen,
-                   char *err, size_t errlen);
+ * or a scene file. label gets a file-name-safe name. Image textures open
+ * through a texture system of cache_mb MiB (render_parse_options.cache_mb;
+ * 0: read whole). Returns 0 on success. */
+int cmp_scene_open(const char *name, int size, double cache_mb, render_scene **out, char *label,
+                   size_t labellen, char *err, size_t errlen);
 
 /* ---- View: what every configuration is asked (view.c) ---------------- */
 

@@ -115,7 +115,7 @@ int sample_compare_run(const sample_compare_params *p, const sample_measure_filt
         snprintf(err, errlen, "out of memory");
         goto done;
     }
-    if (cmp_scene_open(p->scene, p->size, &sc, label, sizeof label, err, errlen)) goto done;
+    if (cmp_scene_open(p->scene, p->size, RENDER_CACHE_MB, &sc, label, sizeof label, err, errlen)) goto done;
     if (cmp_view_build(sc, p->threads, &v, err, errlen)) goto done;
     res->w = v.w;
     res->h = v.h;

@@ -144,22 +144,23 @@ static void file_label(const char *path, char *label, size_t len)
     label[n] = '\0';
 }
 
-int cmp_scene_open(const char *name, int size, render_scene **out, char *label, size_t labellen,
-                   char *err, size_t errlen)
+int cmp_scene_open(const char *name, int size, double cache_mb, render_scene **out, char *label,
+                   size_t labellen, char *err, size_t errlen)
 {
+    render_parse_options po;
     size_t k;
     snprintf(label, labellen, "%s", name);
+    render_parse_options_init(&po);
+    po.cache_mb = cache_mb;
     for (k = 0; k < sizeof own_scenes / sizeof own_scenes[0]; ++k)
         if (strcmp(name, own_scenes[k].name) == 0) {
-            render_parse_options po;
-            render_parse_options_init(&po);
             po.base_dir = CMP_IMAGES;
             return render_scene_parse_ex(own_scenes[k].json, strlen(own_scenes[k].json), size,
                                          size, &po, out, err, errlen);
         }
     for (k = 0; render_builtin_names[k]; ++k)
         if (strcmp(name, render_builtin_names[k]) == 0)
-            return render_scene_builtin(name, size, size, out, err, errlen);
+            return render_scene_builtin_ex(name, size, size, &po, out, err, errlen);
     file_label(name, label, labellen);
-    return render_scene_load(name, size, size, out, err, errlen);
+    return render_scene_load_ex(name, size, size, &po, out, err, errlen);
 }

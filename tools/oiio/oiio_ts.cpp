@@ -180,6 +180,19 @@ extern "C" void oiio_ts_destroy(oiio_ts *ts)
     delete ts;
 }
 
+extern "C" void oiio_ts_stats_get(oiio_ts *ts, oiio_ts_stats *out)
+{
+    int i;
+    long long ll;
+    out->tiles_read = out->bytes_read = out->memory = out->peak_tiles = -1;
+    if (!ts) return;
+    // The TextureSystem answers its ImageCache's attributes.
+    if (ts->sys->getattribute("stat:tiles_created", TypeDesc::INT, &i)) out->tiles_read = i;
+    if (ts->sys->getattribute("stat:bytes_read", TypeDesc::INT64, &ll)) out->bytes_read = ll;
+    if (ts->sys->getattribute("stat:cache_memory_used", TypeDesc::INT64, &ll)) out->memory = ll;
+    if (ts->sys->getattribute("stat:tiles_peak", TypeDesc::INT, &i)) out->peak_tiles = i;
+}
+
 extern "C" oiio_ts_tex *oiio_ts_open(oiio_ts *ts, const char *path, char *err, size_t errlen)
 {
     if (!ts || !path) {

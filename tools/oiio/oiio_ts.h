@@ -106,6 +106,16 @@ int oiio_ts_make_texture(const float *rgba, int w, int h, oiio_ts_format format,
 oiio_ts *oiio_ts_create(double cache_mb);
 void oiio_ts_destroy(oiio_ts *ts); /* accepts NULL */
 
+/* The ImageCache's counts so far (OIIO 2.4's imagecache.h, "stat:"
+ * attributes): tiles read from files (stat:tiles_created), their
+ * uncompressed bytes (stat:bytes_read), the cache's memory now
+ * (stat:cache_memory_used) and its most tiles at once (stat:tiles_peak).
+ * Every field is −1 where OIIO does not answer. */
+typedef struct oiio_ts_stats {
+    long long tiles_read, bytes_read, memory, peak_tiles;
+} oiio_ts_stats;
+void oiio_ts_stats_get(oiio_ts *ts, oiio_ts_stats *out);
+
 /* Open a texture file; the handle lives as long as ts. Reports into err and
  * returns NULL if the file cannot be read. */
 oiio_ts_tex *oiio_ts_open(oiio_ts *ts, const char *path, char *err, size_t errlen);

@@ -28,6 +28,9 @@ static const char render_help[] =
     "  --shade full|texture  Blinn-Newell shading, or the filtered texture only\n"
     "  --corners          pass the exact footprint corners (Blinn-Newell mode)\n"
     "  --progress         show progress even when stderr is not a terminal\n"
+    "  --cache-mb N       image textures open through one texture system whose\n"
+    "                     tile cache holds N MiB (default 1024, OpenImageIO's);\n"
+    "                     0 reads each image file whole (doc/renderer.md)\n"
     "\n"
     "Sampler flags (override the scene's sampler when given):\n";
 
@@ -45,10 +48,12 @@ int cmd_render(int argc, char **argv)
     int width = 0, height = 0, i, rc = EXIT_OK, sampler_given = 0;
     long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
     render_options o;
+    render_parse_options po;
     render_scene *sc = NULL;
     render_image img;
     char err[1024];
     render_options_init(&o);
+    render_parse_options_init(&po);
     o.threads = ncpu > 0 && ncpu < 1024 ? (int)ncpu : 1;
     o.progress = cli_progress;
     for (i = 1; i < argc; ++i) {
@@ -83,6 +88,11 @@ int cmd_render(int argc, char **argv)
             if (val && strcmp(val, "full") == 0) o.shade = RENDER_SHADE_FULL;
             else if (val && strcmp(val, "texture") == 0) o.shade = RENDER_SHADE_TEXTURE;
             else return cli_usage_error("render", "--shade is full or texture");
+        } else if (cli_opt(argc, argv, &i, "--cache-mb", &val)) {
+            float mb;
+            if (!val || !cli_parse_float(val, &mb) || !(mb >= 0.0f) || mb > 1048576.0f)
+                return cli_usage_error("render", "--cache-mb needs a size in MiB in [0, 1048576]");
+            po.cache_mb = mb;
         } else if (strcmp(argv[i], "--corners") == 0) {
             o.corners = 1;
         } else if (strcmp(argv[i], "--progress") == 0) {
@@ -101,8 +111,8 @@ int cmd_render(int argc, char **argv)
                              RENDER_BUF_TEXELS | RENDER_BUF_DEPTH | RENDER_BUF_NORMAL | RENDER_BUF_ID;
     /* A built-in name, else a file (whatever its name: /dev/zero or a FIFO
      * is refused by the loader as not a regular file). */
-    if ((is_builtin(scene) ? render_scene_builtin(scene, width, height, &sc, err, sizeof err)
-                           : render_scene_load(scene, width, height, &sc, err, sizeof err)) != 0)
+    if ((is_builtin(scene) ? render_scene_builtin_ex(scene, width, height, &po, &sc, err, sizeof err)
+                           : render_scene_load_ex(scene, width, height, &po, &sc, err, sizeof err)) != 0)
         return cli_runtime_error("render", "%s", err);
     if (render_image_run(sc, &o, &img, err, sizeof err) != 0) {
         render_scene_destroy(sc);

@@ -160,8 +160,9 @@ int env_build_sky(rn_env *e, rn_env_kind kind, int w, char *err, size_t errlen)
 
 void env_release(rn_env *e)
 {
-    sample_texture_destroy(e->tex);
+    if (!e->cached) sample_texture_destroy(e->tex);
     e->tex = NULL;
+    e->cached = 0;
 }
 
 /* Derivative of the unit vector D/|D| given dD. */

@@ -14,6 +14,7 @@
 
 #ifdef TEXSAMPLE_HAVE_IO
 #include "sample/sample_io.h"
+#include "sample/texsys.h"
 
 /* base_dir/file, or file alone when it is absolute or there is no base. */
 static int resolve(const char *base_dir, const char *file, char *out, size_t outlen)
@@ -70,8 +71,10 @@ static int broadcast_grey(rn_texture *t, char *err, size_t errlen)
         if (ok == 0) rn_seterr(err, errlen, "image texture '%s': out of memory", t->path);
         return 0;
     }
-    sample_texture_destroy(t->tex);
+    /* A cached texture stays its system's; the copy is the scene's. */
+    if (!t->cached) sample_texture_destroy(t->tex);
     t->tex = out;
+    t->cached = 0;
     return 1;
 }
 
@@ -99,8 +102,53 @@ static int read_options(const rn_texture *t, const char *path, const char *what,
     return 1;
 }
 
-int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
-               size_t errlen)
+/* The file through the scene's texture system: header now, tiles as
+ * filters touch them. The texel budget is applied as sample_io applies
+ * max_bytes (every level's texels as float RGBA), so that a scene refused
+ * whole is refused cached too. */
+static int open_cached(rn_texture *t, render_scene *sc, const char *path, const sample_io_options *o,
+                       const char *what, char *err, size_t errlen)
+{
+    sample_texsys_options so;
+    sample_texsys *sys = sc->texsys;
+    const sample_texture *tex;
+    sample_texture_info info;
+    sample_error e;
+    double bytes = 0.0;
+    int k;
+    if (!sys) {
+        sample_texsys_options_init(&so);
+        so.max_memory_mb = sc->cache_mb;
+        if (sample_texsys_create(&so, &sys, &e) != SAMPLE_OK) {
+            rn_seterr(err, errlen, "%s '%s': %s", what, t->path, e.message);
+            return 0;
+        }
+        sc->texsys = sys;
+    }
+    if (sample_texsys_open_colorspace(sys, path, o->colorspace, &tex, &e) != SAMPLE_OK) {
+        rn_seterr(err, errlen, "%s '%s': %s", what, t->path, e.message);
+        return 0;
+    }
+    sample_texture_info_get(tex, &info);
+    for (k = 0; k < info.levels; ++k) {
+        int w, h;
+        sample_texture_level_size(tex, k, &w, &h);
+        bytes += 16.0 * (double)w * (double)h;
+    }
+    if (bytes > (double)o->max_bytes) {
+        rn_seterr(err, errlen, "%s '%s': %d x %d with its levels is more than the scene's texel budget", what,
+                  t->path, info.width, info.height);
+        return 0;
+    }
+    t->tex = (sample_texture *)(uintptr_t)tex;
+    t->cached = 1;
+    return 1;
+}
+
+void image_texsys_destroy(void *texsys) { sample_texsys_destroy((sample_texsys *)texsys); }
+
+int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max_texels, double *texels,
+               char *err, size_t errlen)
 {
     char path[4096], what[600];
     sample_io_options o;
@@ -116,7 +164,13 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
     sample_mip_params_init(&mip);
     mip.wrap_s = t->wrap_s;
     mip.wrap_t = t->wrap_t;
-    if (sample_io_read_texture(path, &o, &mip, &t->tex, &e) != SAMPLE_OK) {
+    if (sc->cache_mb > 0.0) {
+        /* The box pyramid a texture system builds for a file without
+         * levels reads only in-range texels (libsample/src/mip.c,
+         * fill_box), so the scene's wrap modes and the file's give the
+         * same levels: the cached texture is the whole one, bit for bit. */
+        if (!open_cached(t, sc, path, &o, "image texture", err, errlen)) return 0;
+    } else if (sample_io_read_texture(path, &o, &mip, &t->tex, &e) != SAMPLE_OK) {
         t->tex = NULL;
         rn_seterr(err, errlen, "image texture '%s': %s", t->path, e.message);
         return 0;
@@ -127,8 +181,8 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
     return 1;
 }
 
-int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
-                   char *err, size_t errlen)
+int env_image_load(const rn_texture *t, rn_env *e, render_scene *sc, const char *base_dir, double max_texels,
+                   double *texels, char *err, size_t errlen)
 {
     char path[4096], what[600];
     sample_io_options o;
@@ -143,7 +197,22 @@ int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double 
     snprintf(what, sizeof what, "environment file '%s' at", t->path);
     if (!read_options(t, path, what, max_texels, &o, err, errlen)) return 0;
     sample_mip_params_init(&mip);
-    if (sample_io_read_env(path, &o, &mip, &e->tex, &er) != SAMPLE_OK) {
+    if (sc->cache_mb > 0.0 && e->file_kind == RN_ENV_NONE && !e->file_size) {
+        /* Through the texture system where it gives what
+         * sample_io_read_env gives: a cube map (N x 6N), or a 2:1 lat-long
+         * map as a 2D texture of the file's levels (a box pyramid, which
+         * reads no texel past an edge, where it has none). Another shape
+         * goes to sample_io_read_env, which applies the rest of its rule;
+         * a map resampled into another layout or size is read whole. */
+        rn_texture c = *t;
+        if (!open_cached(&c, sc, path, &o, "file", err, errlen)) return 0;
+        sample_texture_info_get(c.tex, &info);
+        if (info.kind == SAMPLE_TEXTURE_CUBE || (info.kind == SAMPLE_TEXTURE_2D && info.width == 2 * info.height)) {
+            e->tex = c.tex;
+            e->cached = 1;
+        }
+    }
+    if (!e->tex && sample_io_read_env(path, &o, &mip, &e->tex, &er) != SAMPLE_OK) {
         e->tex = NULL;
         rn_seterr(err, errlen, "file '%s': %s", t->path, er.message);
         return 0;
@@ -159,12 +228,14 @@ int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double 
             return 0;
         }
         g.tex = e->tex;
+        g.cached = e->cached;
         e->tex = NULL;
         if (!broadcast_grey(&g, err, errlen)) {
-            sample_texture_destroy(g.tex);
+            if (!g.cached) sample_texture_destroy(g.tex);
             return 0;
         }
         e->tex = g.tex;
+        e->cached = g.cached;
     }
     if ((e->file_kind != RN_ENV_NONE && e->file_kind != e->kind) || e->file_size) {
         rn_env_kind want = e->file_kind != RN_ENV_NONE ? e->file_kind : e->kind;
@@ -184,9 +255,12 @@ int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double 
 
 #else
 
-int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
-               size_t errlen)
+void image_texsys_destroy(void *texsys) { (void)texsys; }
+
+int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max_texels, double *texels,
+               char *err, size_t errlen)
 {
+    (void)sc;
     (void)base_dir;
     (void)max_texels;
     *texels = 0;
@@ -195,10 +269,11 @@ int image_load(rn_texture *t, const char *base_dir, double max_texels, double *t
     return 0;
 }
 
-int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
-                   char *err, size_t errlen)
+int env_image_load(const rn_texture *t, rn_env *e, render_scene *sc, const char *base_dir, double max_texels,
+                   double *texels, char *err, size_t errlen)
 {
     (void)e;
+    (void)sc;
     (void)base_dir;
     (void)max_texels;
     *texels = 0;

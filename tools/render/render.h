@@ -85,6 +85,11 @@ typedef struct render_parse_options {
     /* JSON values (numbers, strings, arrays, ...) in the text, 16 bytes
      * each while parsing. Default and maximum RENDER_MAX_JSON_VALUES. */
     unsigned max_values;
+    /* Image textures open through one texture system (sample/texsys.h)
+     * per scene whose tile cache holds this many MiB; 0: each file is
+     * read whole into memory (doc/renderer.md, "Image textures").
+     * Default RENDER_CACHE_MB. */
+    double cache_mb;
 } render_parse_options;
 
 #define RENDER_MAX_BAKE_WORK 268435456.0 /* 2^28: 16 × a 4096² bake at 1 sample */
@@ -92,12 +97,19 @@ typedef struct render_parse_options {
 /* 2^22 values (64 MiB of parse nodes): a 65536-quad polygon object is ~2^21. */
 #define RENDER_MAX_JSON_VALUES 4194304u
 #define RENDER_MAX_SCENE_BYTES ((size_t)64 << 20) /* scene files: 64 MiB */
+#define RENDER_CACHE_MB 1024.0 /* OpenImageIO's max_memory_MB default */
 
 void render_parse_options_init(render_parse_options *po);
 /* render_scene_parse with options (po NULL: defaults). */
 int render_scene_parse_ex(const char *json, size_t len, int width, int height,
                           const render_parse_options *po, render_scene **out, char *err,
                           size_t errlen);
+/* render_scene_builtin and render_scene_load with options (po NULL:
+ * defaults); po->base_dir is replaced by the images' folder. */
+int render_scene_builtin_ex(const char *name, int width, int height, const render_parse_options *po,
+                            render_scene **out, char *err, size_t errlen);
+int render_scene_load_ex(const char *path, int width, int height, const render_parse_options *po,
+                         render_scene **out, char *err, size_t errlen);
 void render_scene_destroy(render_scene *sc); /* accepts NULL */
 
 void render_scene_size(const render_scene *sc, int *width, int *height);

@@ -222,7 +222,8 @@ typedef struct rn_texture {
     double famp[RN_FOURIER_MAX], fphase[RN_FOURIER_MAX];
     int bake_size, bake_samples;
     sample_wrap wrap_s, wrap_t;
-    sample_texture *tex; /* baked or loaded; owned */
+    sample_texture *tex; /* baked or loaded; owned unless `cached` */
+    int cached;          /* 1: tex belongs to the scene's texture system */
     char path[512];      /* image textures: "file" as written in the scene */
     char colorspace[64]; /* image textures: OCIO name, "" = by file and rule */
     unsigned use;        /* RN_USE_*: what the materials use it for */
@@ -254,8 +255,13 @@ int solid_sample(const rn_texture *t, const sample_sampler *smp, const sample_qu
  * (base level); *texels gets its base-level texel count. By t->use: data
  * only is read raw unless t->colorspace names a space; colour gets one or
  * two channels (grey, grey + alpha) as (Y, Y, Y, 1) and (Y, Y, Y, A). */
-int image_load(rn_texture *t, const char *base_dir, double max_texels, double *texels, char *err,
-               size_t errlen);
+/* With sc->cache_mb > 0 the file opens through the scene's texture system
+ * (sc->texsys, made on first use; t->cached set) and its tiles load as
+ * filters touch them; else it is read whole. */
+int image_load(rn_texture *t, render_scene *sc, const char *base_dir, double max_texels, double *texels,
+               char *err, size_t errlen);
+/* The scene's texture system (a sample_texsys, NULL: none). */
+void image_texsys_destroy(void *texsys);
 
 /* ---- Environment maps (envmap.c) ---------------------------------------- */
 
@@ -264,8 +270,9 @@ typedef enum rn_env_kind { RN_ENV_NONE = 0, RN_ENV_LATLONG = 1, RN_ENV_CUBE = 2 
 typedef struct rn_env {
     rn_env_kind kind;
     /* A cube map (SAMPLE_TEXTURE_CUBE) or a lat-long 2D texture, in the
-     * maps' y-up frame (env_to_map); owned. */
+     * maps' y-up frame (env_to_map); owned unless `cached`. */
     sample_texture *tex;
+    int cached; /* 1: tex belongs to the scene's texture system */
     double radius;            /* > 0: the paper's position correction, the
                                  environment painted on a sphere this big
                                  around `centre`; 0: infinitely far */
@@ -302,9 +309,11 @@ void env_lookup(const rn_env *e, const sample_sampler *smp, const render_hit *h,
 void env_release(rn_env *e);
 /* An environment file (t->path, t->colorspace) into e->tex: its own layout
  * (sample_io_read_env), resampled into e->file_kind at e->file_size where
- * that is set; *texels as image_load (imagetex.c). */
-int env_image_load(const rn_texture *t, rn_env *e, const char *base_dir, double max_texels, double *texels,
-                   char *err, size_t errlen);
+ * that is set; *texels as image_load (imagetex.c). Unresampled, a cube or
+ * 2:1 lat-long map opens through the scene's texture system (as
+ * image_load) where sc->cache_mb > 0. */
+int env_image_load(const rn_texture *t, rn_env *e, render_scene *sc, const char *base_dir, double max_texels,
+                   double *texels, char *err, size_t errlen);
 
 /* ---- Scene (scene.c) ---------------------------------------------------- */
 
@@ -349,6 +358,8 @@ struct render_scene {
     rn_texture env_image; /* an environment "file" until read into env.tex */
     float background[4];
     sample_sampler sampler;
+    double cache_mb; /* render_parse_options.cache_mb */
+    void *texsys;    /* image textures' sample_texsys (imagetex.c); NULL: none */
 };
 
 /* The unit view vector at a hit (surface → eye) and its screen
@@ -365,8 +376,9 @@ void object_defaults(rn_object *o, rn_kind kind);
 /* The Newell teapot as an object (patches prepared), scaled and moved. */
 int scene_teapot_object(rn_object *o, double scale, const double offset[3]);
 /* Finish: bake procedural textures, read image textures (relative to
- * base_dir, at most texels_left base-level texels together). */
-int scene_finish(render_scene *sc, const char *base_dir, double texels_left, char *err,
+ * po->base_dir, at most texels_left base-level texels together, through a
+ * texture system of po->cache_mb MiB). */
+int scene_finish(render_scene *sc, const render_parse_options *po, double texels_left, char *err,
                  size_t errlen);
 
 /* Fill a hit from (object, prim, u, v) (hit.c). Returns h->converged. */

@@ -131,10 +131,17 @@ _Static_assert(sizeof builtin_json / sizeof builtin_json[0] ==
 int render_scene_builtin(const char *name, int width, int height, render_scene **out, char *err,
                          size_t errlen)
 {
+    return render_scene_builtin_ex(name, width, height, NULL, out, err, errlen);
+}
+
+int render_scene_builtin_ex(const char *name, int width, int height, const render_parse_options *pin,
+                            render_scene **out, char *err, size_t errlen)
+{
     render_parse_options po;
     int k;
     *out = NULL;
-    render_parse_options_init(&po);
+    if (pin) po = *pin;
+    else render_parse_options_init(&po);
     po.base_dir = RN_BUILTIN_IMAGES;
     for (k = 0; render_builtin_names[k]; ++k)
         if (strcmp(name, render_builtin_names[k]) == 0) {
@@ -217,10 +224,12 @@ int scene_teapot_object(rn_object *o, double scale, const double offset[3])
     return 1;
 }
 
-int scene_finish(render_scene *sc, const char *base_dir, double texels_left, char *err,
+int scene_finish(render_scene *sc, const render_parse_options *po, double texels_left, char *err,
                  size_t errlen)
 {
+    const char *base_dir = po->base_dir;
     int k;
+    sc->cache_mb = po->cache_mb;
     for (k = 0; k < sc->ntex; ++k) {
         rn_texture *t = &sc->tex[k];
         double n = 0.0;
@@ -228,13 +237,13 @@ int scene_finish(render_scene *sc, const char *base_dir, double texels_left, cha
             if (!proc_bake(t, err, errlen)) return 0;
             continue;
         }
-        if (!image_load(t, base_dir, texels_left, &n, err, errlen)) return 0;
+        if (!image_load(t, sc, base_dir, texels_left, &n, err, errlen)) return 0;
         texels_left -= n;
     }
     if (sc->env_image.path[0]) {
         double n = 0.0;
         char inner[400];
-        if (!env_image_load(&sc->env_image, &sc->env, base_dir, texels_left, &n, err, errlen)) {
+        if (!env_image_load(&sc->env_image, &sc->env, sc, base_dir, texels_left, &n, err, errlen)) {
             snprintf(inner, sizeof inner, "%s", err ? err : "");
             rn_seterr(err, errlen, "environment: %s", inner);
             return 0;
@@ -255,9 +264,11 @@ void render_scene_destroy(render_scene *sc)
         free(sc->obj[k].patches);
         free(sc->obj[k].polys);
     }
-    for (k = 0; k < sc->ntex; ++k) sample_texture_destroy(sc->tex[k].tex);
+    for (k = 0; k < sc->ntex; ++k)
+        if (!sc->tex[k].cached) sample_texture_destroy(sc->tex[k].tex);
     sample_texture_destroy(sc->env_image.tex);
     env_release(&sc->env);
+    image_texsys_destroy(sc->texsys);
     free(sc->obj);
     free(sc->mat);
     free(sc->tex);
@@ -266,6 +277,12 @@ void render_scene_destroy(render_scene *sc)
 
 int render_scene_load(const char *path, int width, int height, render_scene **out, char *err,
                       size_t errlen)
+{
+    return render_scene_load_ex(path, width, height, NULL, out, err, errlen);
+}
+
+int render_scene_load_ex(const char *path, int width, int height, const render_parse_options *pin,
+                         render_scene **out, char *err, size_t errlen)
 {
     const char *slash = strrchr(path, '/');
     char dir[4096], inner[512];
@@ -295,7 +312,9 @@ int render_scene_load(const char *path, int width, int height, render_scene **ou
     }
     /* Image files are relative to the scene file's folder (as a scene
      * written next to its textures expects), not to the working directory. */
-    render_parse_options_init(&po);
+    if (pin) po = *pin;
+    else render_parse_options_init(&po);
+    po.base_dir = NULL;
     if (slash && (size_t)(slash - path) < sizeof dir) {
         size_t len = slash == path ? 1 : (size_t)(slash - path);
         memcpy(dir, path, len);

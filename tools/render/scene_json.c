@@ -728,6 +728,7 @@ void render_parse_options_init(render_parse_options *po)
     po->max_bake_work = RENDER_MAX_BAKE_WORK;
     po->max_texels = RENDER_MAX_TEXELS;
     po->max_values = RENDER_MAX_JSON_VALUES;
+    po->cache_mb = RENDER_CACHE_MB;
 }
 
 int render_scene_parse_ex(const char *json, size_t len, int width, int height,
@@ -776,7 +777,7 @@ int render_scene_parse_ex(const char *json, size_t len, int width, int height,
     }
     rn_json_free(&j);
     if (ok)
-        ok = scene_finish(c.sc, c.po.base_dir, c.po.max_texels - c.texels, err, errlen);
+        ok = scene_finish(c.sc, &c.po, c.po.max_texels - c.texels, err, errlen);
     if (!ok) {
         render_scene_destroy(c.sc);
         return -1;

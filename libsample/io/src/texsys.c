@@ -69,6 +69,7 @@ void sample_texsys_destroy(sample_texsys *sys)
     ts_file *f, *next;
     if (!sys) return;
     io_ts_udim_free_all(sys);
+    io_ts_whole_free_all(sys);
     for (f = sys->files; f; f = next) {
         next = f->next;
         io_ts_file_free(f);
@@ -129,7 +130,7 @@ static sample_status describe(ts_file *f, io_reader *r, sample_error *err)
         return sample_error_set(err, SAMPLE_E_TOO_LARGE, "'%s' is %d x %d; the largest texture side is %d", f->path,
                                 inf->width, inf->height, SAMPLE_MAX_SIZE);
     sample_io_options_init(&o);
-    o.colorspace = f->h.sys->colorspace;
+    o.colorspace = f->colorspace;
     if ((st = io_read_plan(f->h.sys->col, inf, &o, &f->plan, err)) != SAMPLE_OK) return st;
     if ((st = file_levels(r, inf, &count, err)) != SAMPLE_OK) return st;
     f->file_tiled = count > 1 && is_tile_side(inf->tile_w, inf->tile_h, &f->log2);
@@ -161,7 +162,8 @@ static sample_status describe(ts_file *f, io_reader *r, sample_error *err)
 
 /* A new file entry for path: header read, reader closed again (tiles
  * reopen it under the open-file limit). */
-static sample_status open_new(sample_texsys *sys, const char *path, ts_file **out, sample_error *err)
+static sample_status open_new(sample_texsys *sys, const char *path, const char *cs, ts_file **out,
+                              sample_error *err)
 {
     ts_file *f = (ts_file *)calloc(1, sizeof *f);
     io_reader *r = NULL;
@@ -171,6 +173,12 @@ static sample_status open_new(sample_texsys *sys, const char *path, ts_file **ou
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture entry");
     }
     f->h.sys = sys;
+    if (cs) {
+        snprintf(f->colorspace_own, sizeof f->colorspace_own, "%s", cs);
+        f->colorspace = f->colorspace_own;
+    } else {
+        f->colorspace = sys->colorspace;
+    }
     io_ts_lock_init(&f->io_lock);
     st = sample_io_check_regular_file(path, "texture", err);
     if (st == SAMPLE_OK) st = io_preflight(path, NULL, 0, err);
@@ -195,36 +203,60 @@ static sample_status open_new(sample_texsys *sys, const char *path, ts_file **ou
     return SAMPLE_OK;
 }
 
-/* open_lock held. */
-sample_status io_ts_open_file(sample_texsys *sys, const char *path, ts_file **out, sample_error *err)
+int io_ts_same_colorspace(const char *a, const char *b)
+{
+    return a == b || (a && b && !strcmp(a, b));
+}
+
+/* The file open as path in colour space cs (NULL: the system's), or NULL.
+ * open_lock held. */
+static ts_file *find_file(sample_texsys *sys, const char *path, const char *cs)
 {
     ts_file *f;
+    if (!cs) cs = sys->colorspace;
     for (f = sys->files; f; f = f->next)
-        if (!strcmp(f->path, path)) {
-            *out = f;
-            return SAMPLE_OK;
-        }
-    return open_new(sys, path, out, err);
+        if (!strcmp(f->path, path) && io_ts_same_colorspace(f->colorspace, cs)) return f;
+    return NULL;
+}
+
+/* open_lock held. */
+sample_status io_ts_open_file(sample_texsys *sys, const char *path, const char *cs, ts_file **out,
+                              sample_error *err)
+{
+    if ((*out = find_file(sys, path, cs)) != NULL) return SAMPLE_OK;
+    return open_new(sys, path, cs ? cs : sys->colorspace, out, err);
+}
+
+sample_status sample_texsys_open_colorspace(sample_texsys *sys, const char *filename, const char *colorspace,
+                                            const sample_texture **tex, sample_error *err)
+{
+    ts_file *f = NULL;
+    sample_status st = SAMPLE_OK;
+    if (!tex) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_open: tex is NULL");
+    *tex = NULL;
+    if (!sys || !filename || !*filename)
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_open: no system or no name");
+    if (colorspace && strlen(colorspace) >= TS_COLORSPACE_MAX)
+        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "colour space name '%.40s...' is too long",
+                                colorspace);
+    pthread_mutex_lock(&sys->open_lock);
+    if (colorspace) st = io_colour_require(sys->col, colorspace, err);
+    if (st == SAMPLE_OK && io_ts_udim_pattern(filename)) {
+        st = io_ts_udim_open(sys, filename, colorspace, tex, err);
+    } else if (st == SAMPLE_OK) {
+        /* A cube map or a volume (texsys_kinds.c), else a 2D texture. */
+        if (!(f = find_file(sys, filename, colorspace))) st = io_ts_whole_open(sys, filename, colorspace, tex, err);
+        if (st == SAMPLE_OK && !*tex) st = io_ts_open_file(sys, filename, colorspace, &f, err);
+        if (st == SAMPLE_OK && f) *tex = f->tex;
+    }
+    pthread_mutex_unlock(&sys->open_lock);
+    return st;
 }
 
 sample_status sample_texsys_open(sample_texsys *sys, const char *filename, const sample_texture **tex,
                                  sample_error *err)
 {
-    ts_file *f = NULL;
-    sample_status st;
-    if (!tex) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_open: tex is NULL");
-    *tex = NULL;
-    if (!sys || !filename || !*filename)
-        return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_open: no system or no name");
-    pthread_mutex_lock(&sys->open_lock);
-    if (io_ts_udim_pattern(filename)) {
-        st = io_ts_udim_open(sys, filename, tex, err);
-    } else {
-        st = io_ts_open_file(sys, filename, &f, err);
-        if (st == SAMPLE_OK) *tex = f->tex;
-    }
-    pthread_mutex_unlock(&sys->open_lock);
-    return st;
+    return sample_texsys_open_colorspace(sys, filename, NULL, tex, err);
 }
 
 /* The file `tex` is, or NULL (a UDIM set, or not this system's). */
@@ -241,10 +273,15 @@ sample_status sample_texsys_texture_info(sample_texsys *sys, const sample_textur
 {
     ts_file *f = file_of(sys, tex);
     ts_udim *u = f ? NULL : io_ts_udim_of(sys, tex);
+    ts_whole *w = f || u ? NULL : io_ts_whole_of(sys, tex);
     if (!info) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "sample_texsys_texture_info: info is NULL");
     memset(info, 0, sizeof *info);
-    if (!f && !u) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "not a texture of this texture system");
+    if (!f && !u && !w) return sample_error_set(err, SAMPLE_E_INVALID_ARGUMENT, "not a texture of this texture system");
     sample_texture_info_get(tex, &info->texture);
+    if (w) {
+        io_ts_whole_info(w, info);
+        return SAMPLE_OK;
+    }
     if (u) {
         io_ts_udim_info(u, info);
         return SAMPLE_OK;
@@ -300,6 +337,7 @@ sample_status sample_texsys_batch(sample_texsys *sys, const sample_texture *tex,
 {
     ts_udim *u;
     if (file_of(sys, tex)) return io_ts_batch_chunks(tex, s, args, NULL, NULL);
+    if (io_ts_whole_of(sys, tex)) return sample_batch(tex, s, args);
     if ((u = io_ts_udim_of(sys, tex)) != NULL) return io_ts_udim_batch(u, s, args);
     return SAMPLE_E_INVALID_ARGUMENT;
 }

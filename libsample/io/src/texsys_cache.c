@@ -300,7 +300,7 @@ static ts_tile *load_whole(ts_file *f, int lv, int tx, int ty, sample_error *err
     ts_tile *want = NULL;
     int k, x, y;
     sample_io_options_init(&o);
-    o.colorspace = sys->colorspace;
+    o.colorspace = f->colorspace;
     o.mip_wrap_from_file = 1;
     sample_mip_params_init(&mip);
     if (io_read_texture_col(f->path, sys->col, &o, &mip, &tex, err) != SAMPLE_OK) return NULL;

@@ -35,6 +35,9 @@
 
 typedef struct ts_file ts_file;
 
+/* The longest colour space name an open may give, terminator included. */
+#define TS_COLORSPACE_MAX 128
+
 /* A first-come, first-served lock (a ticket lock over a mutex and a
  * condition): a thread that misses waits behind at most one load per
  * other thread. With an unfair mutex one thread can load tile after tile
@@ -77,6 +80,10 @@ struct ts_file {
     _Atomic(ts_tile *) *slots[SAMPLE_MAX_LEVELS]; /* NULL: absent */
     io_reader_info inf;
     io_plan plan;
+    /* The colour space texels are decoded from: the open's, else the
+     * system's option; NULL: the file's own (sample_io.h section 2). */
+    const char *colorspace;
+    char colorspace_own[TS_COLORSPACE_MAX];
     int has_wrap;
     sample_wrap wrap_s, wrap_t;
     ts_lock io_lock;
@@ -106,6 +113,7 @@ struct sample_texsys {
     int fail_allocs; /* tests: the next n tile allocations fail */
     ts_file *files;
     struct ts_udim *udims;
+    struct ts_whole *wholes;
 };
 
 /* texsys_cache.c */
@@ -127,14 +135,19 @@ void io_ts_cache_drain(sample_texsys *sys);
 #define TS_CHUNK 16
 sample_status io_ts_batch_chunks(const sample_texture *tex, const sample_sampler *s, const sample_batch_args *a,
                               void (*map)(void *ctx, sample_batch_args *b, size_t i0), void *ctx);
-/* texsys.c: open a plain file (no UDIM pattern), or return it if open. */
-sample_status io_ts_open_file(sample_texsys *sys, const char *path, ts_file **out, sample_error *err);
+/* texsys.c: open a plain file (no UDIM pattern) decoded from colour space
+ * cs (NULL: the system's option, else the file's), or return it if open. */
+sample_status io_ts_open_file(sample_texsys *sys, const char *path, const char *cs, ts_file **out,
+                              sample_error *err);
+/* texsys.c: 1 if colour space names a and b (either NULL) are the same. */
+int io_ts_same_colorspace(const char *a, const char *b);
 
 /* texsys_udim.c */
 typedef struct ts_udim ts_udim;
 /* 1 if `name` holds a UDIM pattern. */
 int io_ts_udim_pattern(const char *name);
-sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const sample_texture **out, sample_error *err);
+sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const char *cs, const sample_texture **out,
+                              sample_error *err);
 /* The set `tex` is, or NULL. */
 ts_udim *io_ts_udim_of(const sample_texsys *sys, const sample_texture *tex);
 void io_ts_udim_info(const ts_udim *u, sample_texsys_info *info);
@@ -142,6 +155,21 @@ sample_status io_ts_udim_batch(ts_udim *u, const sample_sampler *s, const sample
 /* Failures of the set's files (sys->lock held), the first into *first. */
 unsigned long io_ts_udim_errors(const ts_udim *u, sample_error *first);
 void io_ts_udim_free_all(sample_texsys *sys);
+
+/* texsys_kinds.c: cube maps and volumes, read whole (doc/texture-system.md,
+ * "Cube maps and volumes"). io_ts_whole_open opens `path` as one if it is
+ * one (*out set), leaves *out NULL if it is not (a 2D texture, or no image
+ * at all: the 2D path says why), or fails reading it. open_lock held. */
+typedef struct ts_whole ts_whole;
+sample_status io_ts_whole_open(sample_texsys *sys, const char *path, const char *cs, const sample_texture **out,
+                               sample_error *err);
+/* The cube or volume `tex` is, or NULL. */
+ts_whole *io_ts_whole_of(const sample_texsys *sys, const sample_texture *tex);
+void io_ts_whole_info(const ts_whole *w, sample_texsys_info *info);
+void io_ts_whole_free_all(sample_texsys *sys);
+/* texsys_probe.cpp: 1 if OpenImageIO reads path as a volume
+ * (sample_io_read_volume's rule: depth > 1, or subimages of one size). */
+int io_ts_probe_volume(const char *path);
 
 /* Tests (texsys_cache.c): the next n tile allocations of sys fail. */
 void io_texsys_fail_allocs(sample_texsys *sys, int n);

@@ -20,6 +20,7 @@ struct ts_udim {
     ts_head h; /* first */
     sample_texture *tex;
     char *name;
+    const char *colorspace; /* its tiles' (ts_file.colorspace) */
     int cols, rows;      /* the virtual texture's, powers of two */
     int used_cols, used_rows;
     ts_file *tile[UDIM_MAX * UDIM_MAX]; /* [v · cols + u]; NULL: missing */
@@ -138,14 +139,16 @@ static sample_status build(sample_texsys *sys, ts_udim *u, sample_error *err)
     return SAMPLE_OK;
 }
 
-sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const sample_texture **out, sample_error *err)
+sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const char *cs, const sample_texture **out,
+                              sample_error *err)
 {
     ts_udim *u;
     sample_status st = SAMPLE_OK;
     char path[4096];
     int x, y, maxu = -1, maxv = -1;
+    if (!cs) cs = sys->colorspace;
     for (u = sys->udims; u; u = u->next)
-        if (!strcmp(u->name, name)) {
+        if (!strcmp(u->name, name) && io_ts_same_colorspace(u->colorspace, cs)) {
             *out = u->tex;
             return SAMPLE_OK;
         }
@@ -167,7 +170,8 @@ sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const sample
             }
             if (!(probe = fopen(path, "rb"))) continue; /* a tile the set lacks */
             fclose(probe);
-            st = io_ts_open_file(sys, path, &u->tile[y * UDIM_MAX + x], err);
+            st = io_ts_open_file(sys, path, cs, &u->tile[y * UDIM_MAX + x], err);
+            if (st == SAMPLE_OK) u->colorspace = u->tile[y * UDIM_MAX + x]->colorspace;
             if (x > maxu) maxu = x;
             if (y > maxv) maxv = y;
         }

@@ -34,6 +34,14 @@
  *   again. Texels are stored as sample_io_read_texture stores them:
  *   the same format, colour conversion and premultiplication.
  *
+ *   A cube map (a file that says so, textureformat "CubeFace Environment",
+ *   in OpenEXR's N × 6N layout, as sample_io_read_env reads it) opens as
+ *   a SAMPLE_TEXTURE_CUBE texture and a volume (as sample_io_read_volume
+ *   reads one) as a SAMPLE_TEXTURE_3D texture: read whole by that reader
+ *   when opened, with the default pyramid, and held until the system is
+ *   destroyed, outside the memory limit (doc/texture-system.md, "Cube maps
+ *   and volumes"). A lat-long map is a 2D texture, read tile by tile.
+ *
  * 3. UDIM
  *
  *   A name holding <UDIM>, <u>, <v>, <U>, <V> or <uvtile> names a set of
@@ -110,6 +118,16 @@ SAMPLE_IO_API void sample_texsys_destroy(sample_texsys *sys);
 SAMPLE_IO_API sample_status sample_texsys_open(sample_texsys *sys, const char *filename, const sample_texture **tex,
                                                sample_error *err);
 
+/* sample_texsys_open with the colour space the file's texels are decoded
+ * from (an OCIO name or role, e.g. "data" for a bump or normal map: as
+ * sample_io_options.colorspace). It overrides the system's `colorspace`
+ * option for this texture; NULL opens as sample_texsys_open does. The same
+ * file opened with two colour spaces is two textures, each with its own
+ * tiles. SAMPLE_E_COLOR for a name the OCIO config lacks. */
+SAMPLE_IO_API sample_status sample_texsys_open_colorspace(sample_texsys *sys, const char *filename,
+                                                          const char *colorspace, const sample_texture **tex,
+                                                          sample_error *err);
+
 typedef struct sample_texsys_info {
     /* Size, levels, channels, format, kind (sample_texture_info_get); of
      * a UDIM set, the virtual texture's (section 3). */
@@ -152,6 +170,9 @@ typedef struct sample_texsys_stats {
     size_t memory;          /* bytes of tiles held now */
     size_t peak_memory;     /* most bytes of tiles ever held at once */
     int open_files, peak_open_files;
+    /* Bytes of the cube maps and volumes held whole (section 2), outside
+     * max_memory_mb and not in `memory`. */
+    size_t held_memory;
 } sample_texsys_stats;
 
 SAMPLE_IO_API void sample_texsys_stats_get(sample_texsys *sys, sample_texsys_stats *stats);
