@@ -67,7 +67,7 @@ static void sweep(const char *dir)
     memset(&v, 0, sizeof v);
     CHECK(s != NULL, "%s", err_hint);
     if (!s) return;
-    CHECK(cmp_scene_open("plane", 16, &sc, label, sizeof label, err, sizeof err) == 0, "%s", err);
+    CHECK(cmp_scene_open("plane", 16, RENDER_CACHE_MB, &sc, label, sizeof label, err, sizeof err) == 0, "%s", err);
     CHECK(cmp_view_build(sc, 2, &v, err, sizeof err) == 0, "%s", err);
     CHECK(cmp_truth_build(&v, 4, 2, &t, err, sizeof err) == 0, "%s", err);
     CHECK(tool_backend_libsample(&lib, NULL) == 0, "%s", err_hint);
