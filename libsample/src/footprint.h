@@ -380,7 +380,8 @@ SAMPLE_FORCE_INLINE double fp_row_span(const fp_level_rows *lr, int r, double j,
  * ctx_texel reads them (linear rule): a float RGBA span inside the level
  * (at, fp_span_at) in place (nothing to decode), another span inside the
  * level decoded in one go by the format's reader (tex_readers) into buf, anything else texel by texel
- * through ctx_texel into buf (pitch 16). Load with memcpy. */
+ * through ctx_texel into buf (pitch 16; a cube map's texels past an edge
+ * by the footprint rule, LS_ENV_READ_FOOTPRINT). Load with memcpy. */
 SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr, double j, double ilo, int n,
                                                         const unsigned char *at, float (*buf)[4], size_t *pitch)
 {
@@ -394,9 +395,9 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
         }
         tex_readers_in(lr->k, c->tex)->row(c->tex->format, c->tex->channels, at, lr->pitch, n, buf);
     } else if (!lr->tr) {
-        for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
+        for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, LS_ENV_READ_FOOTPRINT, buf[k]);
     } else {
-        for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, j, ilo + k, 1, buf[k]);
+        for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, j, ilo + k, LS_ENV_READ_FOOTPRINT, buf[k]);
     }
     return (const unsigned char *)buf;
 }
