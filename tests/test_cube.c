@@ -700,9 +700,10 @@ static double path_jump(const sample_texture *tex, const sample_sampler *smp, co
 }
 
 /* Random texels in [0, 1] (so that a seam, which would pair unrelated
- * texels, jumps by about ⅓ on average): along paths across the middle of
- * each of the 12 edges, 3 texels of path in 200 steps (0.015 texel a
- * step), every filter changes by at most CONT_BOUND (env_test.h) a step.
+ * texels, jumps by about ⅓ on average): along paths across each of the 12
+ * edges, at its middle and 0.6 of the way to a corner, 3 texels of path
+ * in 200 steps (0.015 texel a step), every filter changes by at most
+ * CONT_BOUND (env_test.h) a step.
  * Through each of the 8 corners (along the diagonal,
  * the worst way through) each filter stays within its corner_bound. Both
  * with a 2 × ½-texel and a 0.3-texel footprint. */
@@ -725,14 +726,17 @@ static void test_continuity(void)
         sample_sampler s;
         cont_sampler(fi, &s);
         /* The 12 edges: between axes x, y, z with signs; the path crosses
-         * the edge's midpoint (1.5 texels of the face each side). */
-        for (e = 0; e < 12; ++e) {
-            int ax = e / 4, sg1 = (e & 1) ? -1 : 1, sg2 = (e & 2) ? -1 : 1, ay = (ax + 1) % 3;
+         * the edge at its midpoint and at 0.6 of the way to a corner,
+         * where the unfolded neighbour is sheared against its own
+         * coordinates (1.5 texels of the face each side). */
+        for (e = 0; e < 24; ++e) {
+            int ax = (e % 12) / 4, sg1 = (e & 1) ? -1 : 1, sg2 = (e & 2) ? -1 : 1, ay = (ax + 1) % 3;
             double a[3] = {0, 0, 0}, b[3] = {0, 0, 0}, off = 1.5 * 2.0 / n;
             a[ax] = sg1;
             a[ay] = sg2 * (1.0 - off);
             b[ax] = sg1 * (1.0 - off);
             b[ay] = sg2;
+            a[(ax + 2) % 3] = b[(ax + 2) % 3] = e < 12 ? 0.0 : 0.6 * sg1;
             /* 1.5 texels either side: from (1, 1 − off) to (1 − off, 1). */
             worst[fi] = fmax(worst[fi], path_jump(tex, &s, a, b, 200, n, 2.0, 0.5));
             worst[fi] = fmax(worst[fi], path_jump(tex, &s, a, b, 200, n, 0.3, 0.3));

@@ -99,73 +99,6 @@ static void cube_texel(const sample_texture *tex, int lv, int f, double i, doubl
     }
 }
 
-/* The bilinear value, on the face it selects, of the direction that face
- * f's point under texel (i, j) represents: axis + sc·U + tc·V, also past
- * the face's edges (the face's plane extended: the gnomonic projection
- * about the face's axis). Its 2 × 2 block is read as LINEAR reads it
- * (§8.13.1). Bilinear rather than the nearest texel: the point moves over
- * the other face's grid as the footprint does, and a nearest texel would
- * jump with it. */
-static void direction_bilinear(const sample_texture *tex, int lv, int f, double i, double j, float out[4])
-{
-    const int n = tex->level[lv].w;
-    double r[3], s, t, u, v, a, b, i0, j0;
-    float T[4][4];
-    int g, k;
-    cube_direction(f, (2.0 * i + 1.0) / n - 1.0, (2.0 * j + 1.0) / n - 1.0, r);
-    g = cube_face_of(r);
-    cube_face_st(g, r, &s, &t);
-    u = s * n - 0.5;
-    v = t * n - 0.5;
-    i0 = floor(u);
-    j0 = floor(v);
-    a = u - i0;
-    b = v - j0;
-    cube_texel(tex, lv, g, i0, j0, T[0]);
-    cube_texel(tex, lv, g, i0 + 1.0, j0, T[1]);
-    cube_texel(tex, lv, g, i0, j0 + 1.0, T[2]);
-    cube_texel(tex, lv, g, i0 + 1.0, j0 + 1.0, T[3]);
-    for (k = 0; k < 4; ++k)
-        out[k] = (float)((1.0 - b) * ((1.0 - a) * T[0][k] + a * T[1][k]) + b * ((1.0 - a) * T[2][k] + a * T[3][k]));
-}
-
-/* Texel (i, j) of face f as the footprint filters (Blinn–Newell, EWA) read
- * it. They walk their footprint in face f's coordinates, with the Jacobian
- * of those coordinates (doc/environment-maps.md, "Footprint filters").
- * Past one edge the unfolding (seamless_face) puts the neighbour's texels
- * on f's grid, texel for texel; across the middle of an edge it agrees
- * with the neighbour's own coordinates (the map between the two faces'
- * coordinates is a reflection there), so the footprint reads the same
- * texels with the same weights whichever face its centre is on. Towards a
- * corner that map shears — at along-edge position a (|tc| ∈ [0, 1]) by a
- * texel's distance past the edge times a — and past both edges, where
- * three faces leave 270° around the corner, no face is there. There the
- * texel is the direction that f's plane represents (direction_bilinear):
- * the same directions, to first order, whichever face the centre is on.
- * Between the two, a texel past one edge blends them, (1 − a²)·unfolded +
- * a²·by direction: the unfolded texel across the middle of an edge, by
- * direction at the corner. Measured on random texels (test_cube, "through
- * corners"): steps of 0.040 (Blinn–Newell) and 0.050 (EWA) where the
- * mean-of-neighbours corner gave 0.097 and 0.124, weight 0 past the corner
- * 0.156 and 0.168, and the direction rule everywhere 0.047 and 0.058 with
- * 0.04 across edges instead of the unfolding's 0.009. */
-static void footprint_texel(const sample_texture *tex, int lv, int f, double i, double j, float out[4])
-{
-    const int n = tex->level[lv].w;
-    double pi = past(i, n), pj = past(j, n), a;
-    float u[4], v[4];
-    int k;
-    if (pi != 0.0 && pj != 0.0) {
-        direction_bilinear(tex, lv, f, i, j, out);
-        return;
-    }
-    a = fabs((2.0 * (pi == 0.0 ? i : j) + 1.0) / n - 1.0);
-    a *= a;
-    seamless_face(tex, lv, f, i, j, u);
-    direction_bilinear(tex, lv, f, i, j, v);
-    for (k = 0; k < 4; ++k) out[k] = (float)((1.0 - a) * u[k] + a * v[k]);
-}
-
 /* Texel (i, j) of a lat-long level, w × h: REPEAT in s; a row past t = 0
  * or t = 1 is the row mirrored about that pole, on the other half of the
  * map (s + ½: i + w/2, rounded down for odd w), because the great circle
@@ -195,8 +128,5 @@ void ls_env_texel(const sample_texture *tex, int lv, int face, ls_env_mode mode,
                        ls_wrap_index(SAMPLE_WRAP_CLAMP_TO_EDGE, j, L->h, 0), face, out);
         return;
     }
-    if (linear == LS_ENV_READ_FOOTPRINT && (i < 0.0 || i >= (double)L->w || j < 0.0 || j >= (double)L->h))
-        footprint_texel(tex, lv, face, i, j, out);
-    else
-        cube_texel(tex, lv, face, i, j, out);
+    cube_texel(tex, lv, face, i, j, out);
 }

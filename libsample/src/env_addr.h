@@ -17,19 +17,29 @@ typedef enum ls_env_mode {
     LS_ENV_LATLONG = 2, /* REPEAT in s, over the poles in t */
 } ls_env_mode;
 
-/* ctx_texel's `linear` for the reads of Blinn–Newell and EWA
- * (footprint.h, fp_span_texels): every wrap mode takes it as LINEAR's; a
- * cube map reads texels past an edge by the footprint rule (env_addr.c,
- * footprint_texel), not §8.13.1's. */
-#define LS_ENV_READ_FOOTPRINT 2
-
 /* Texel (i, j) (integral, finite; inside or outside the level) of face
  * `face` (cube) of level lv, decoded, as mode addresses it. `linear` is
  * ctx_texel's: for a cube map NEAREST (0) clamps to the face (its wrap is
- * CLAMP_TO_EDGE, §8.13.1), LINEAR and cubic (1) read the neighbouring
- * faces as §8.13.1 does, and the footprint filters
- * (LS_ENV_READ_FOOTPRINT) by the footprint rule. */
+ * CLAMP_TO_EDGE, §8.13.1) and LINEAR, cubic and the footprint filters
+ * read the neighbouring faces. */
 void ls_env_texel(const sample_texture *tex, int lv, int face, ls_env_mode mode, double i, double j, int linear,
                   float out[4]);
+
+/* The part inside an n × n cube face of texels ilo … ilo + ncol − 1 of a
+ * footprint filter's walk row j (a row of the face, or a column when the
+ * walk is by columns): none if the row is outside the face, else the span
+ * cut to [0, n). Returns the texels kept and moves *ilo to the first.
+ * Blinn–Newell and EWA read a cube map face by face, each face's texels
+ * with that face's own footprint (footprint_common.c, ls_fp_cube_read),
+ * so a walk reads only its own face. */
+static inline double ls_env_face_clip(double n, double j, double *ilo, double ncol)
+{
+    double lo = *ilo, hi = *ilo + ncol - 1.0;
+    if (!(j >= 0.0 && j < n)) return 0.0;
+    if (lo < 0.0) lo = 0.0;
+    if (hi > n - 1.0) hi = n - 1.0;
+    *ilo = lo;
+    return hi >= lo ? hi - lo + 1.0 : 0.0;
+}
 
 #endif /* SAMPLE_ENV_ADDR_H */
