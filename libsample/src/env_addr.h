@@ -20,8 +20,9 @@ typedef enum ls_env_mode {
 /* Texel (i, j) (integral, finite; inside or outside the level) of face
  * `face` (cube) of level lv, decoded, as mode addresses it. `linear` is
  * ctx_texel's: for a cube map NEAREST (0) clamps to the face (its wrap is
- * CLAMP_TO_EDGE, §8.13.1) and LINEAR, cubic and the footprint filters
- * read the neighbouring faces. */
+ * CLAMP_TO_EDGE, §8.13.1) and LINEAR and cubic read the neighbouring
+ * faces (the footprint filters read each face on its own:
+ * ls_env_face_clip). */
 void ls_env_texel(const sample_texture *tex, int lv, int face, ls_env_mode mode, double i, double j, int linear,
                   float out[4]);
 
