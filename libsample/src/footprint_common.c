@@ -310,17 +310,20 @@ static double cube_faces_level(const sample_ctx *c, const void *gp, int lv, fp_a
 }
 
 /* Whether the footprint of a query centred at face coordinate x ∈ [0, 1]
- * may reach the face's edge at `edge` (0 or 1): within four times the
- * Jacobian's Frobenius norm (≥ its largest singular value, the footprint's
- * semi-major axis in face units) plus four texels of level lv — more than
- * either filter's support, widening included (Blinn–Newell's parallelogram
- * reaches at most the sum of its two widened columns, EWA's ellipse its
- * widened semi-major axis). */
+ * may reach the face's edge at `edge` (0 or 1) on level lv or the next:
+ * within 4·‖J‖ (the Frobenius norm, ≥ the largest singular value: the
+ * footprint's semi-major axis in face units) plus 12 texels of level lv.
+ * Either filter reaches less: EWA's ellipse, widened, to a·√(σ² + rc)
+ * texels of the level it walks, a the radial kernel's support (at most 3
+ * pixels) and rc ≤ 2 (footprint_kernels.c), that is at most
+ * 3·(σ + 1.5 texels), and a texel of level lv + 1 is two of lv;
+ * Blinn–Newell's parallelogram, widened by one texel, to the sum of its
+ * two columns. */
 static int cube_reaches(const sample_ctx *c, const sample_query *q, int lv, double x, double edge)
 {
     double norm = sqrt((double)q->dsdx * q->dsdx + (double)q->dsdy * q->dsdy + (double)q->dtdx * q->dtdx +
                        (double)q->dtdy * q->dtdy);
-    return fabs(edge - x) < 4.0 * norm + 4.0 / c->tex->level[lv].w;
+    return fabs(edge - x) < 4.0 * norm + 12.0 / c->tex->level[lv].w;
 }
 
 uint32_t ls_fp_cube_read(const sample_ctx *c, float call_bias, const fp_plan *pl0, float out[4], float dds[4],
