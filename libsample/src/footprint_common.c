@@ -290,9 +290,9 @@ typedef struct fp_cube_faces {
 
 /* One level of a cube-map footprint (an fp_level_fn): every face's walk,
  * each reading only its own face (ls_env_face_clip), into one sum. The
- * centre's face was counted by its plan on these levels; a neighbour's
- * counting pass runs here (it finds the rows that the walk reads), and a
- * neighbour whose footprint would exceed the cap on this level adds
+ * centre's face was counted by its plan on these levels; a neighbour is
+ * counted here (count_only: the count finds the rows that its walk then
+ * reads), and one whose footprint would exceed the cap on this level adds
  * nothing. */
 static double cube_faces_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
 {
