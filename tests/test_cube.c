@@ -235,6 +235,58 @@ static void test_constant(void)
         }
 }
 
+/* A constant cube under the footprint filters where their footprints
+ * reach past a corner (read there by direction, blended with the unfolded
+ * texels past an edge: env_addr.c, footprint_texel; anisotropic probes by
+ * direction) gives the constant exactly: directions on the diagonal near
+ * each of the 8 corners, footprints of 2 × ½, 3 × 3 and 6 × 1 texels. */
+static void test_corner_constant(void)
+{
+    const int n = 8;
+    static float d[6 * 8 * 8 * 4];
+    const float v[4] = {0.25f, 0.5f, 0.75f, 1.0f};
+    static const double size[3][2] = {{2.0, 0.5}, {3.0, 3.0}, {6.0, 1.0}};
+    sample_image faces[6];
+    sample_mip_params mp;
+    sample_texture *tex = NULL;
+    int f, i, k, fi;
+    for (i = 0; i < 6 * n * n; ++i) memcpy(d + 4 * i, v, sizeof v);
+    for (f = 0; f < 6; ++f) faces[f] = (sample_image){n, n, 4, SAMPLE_FORMAT_F32, d + (size_t)f * n * n * 4, 0};
+    sample_mip_params_init(&mp);
+    CHECK(sample_texture_create_cube(faces, &mp, &tex, NULL) == SAMPLE_OK, "create");
+    for (fi = 0; fi < CONT_FILTERS; ++fi) {
+        sample_sampler s;
+        sample_query3 q[8 * 3 * 3];
+        float out[8 * 3 * 3][4];
+        sample_batch3_args a;
+        int m = 0, e, z, w;
+        if (cont_filters[fi].fp == SAMPLE_FOOTPRINT_NONE) continue;
+        cont_sampler(fi, &s);
+        for (e = 0; e < 8; ++e)
+            for (z = 0; z < 3; ++z)
+                for (w = 0; w < 3; ++w, ++m) {
+                    /* Near corner e: (1, 1 − ε, 1 − ε)·signs, ε = 0, ¼, ½ texel. */
+                    double c[3] = {(e & 1) ? -1 : 1, (e & 2) ? -1 : 1, (e & 4) ? -1 : 1}, eps = z * 0.25 * 2.0 / n;
+                    for (k = 0; k < 3; ++k) {
+                        q[m].p[k] = (float)(c[k] * (k == 0 ? 1.0 : 1.0 - eps));
+                        /* dR/dx along (−2, 1, 1)·signs (across the corner), dR/dy along (0, 1, −1)·signs. */
+                        q[m].dpdx[k] = (float)(c[k] * (k == 0 ? -2.0 : 1.0) / 2.449 * 2.0 * size[w][0] / n);
+                        q[m].dpdy[k] = (float)(c[k] * (k == 0 ? 0.0 : (k == 1 ? 1.0 : -1.0)) / 1.414 * 2.0 * size[w][1] / n);
+                    }
+                }
+        memset(&a, 0, sizeof a);
+        a.count = (size_t)m;
+        a.queries = q;
+        a.rgba = &out[0][0];
+        CHECK(sample_batch_cube(tex, &s, &a) == SAMPLE_OK, "batch");
+        for (i = 0; i < m; ++i)
+            for (k = 0; k < 4; ++k)
+                CHECK(out[i][k] == v[k], "%s: query %d channel %d gives %.9g, not %g", cont_filters[fi].name, i, k,
+                      out[i][k], v[k]);
+    }
+    sample_texture_destroy(tex);
+}
+
 /* λ for axis-aligned derivatives at a face centre (|ma| = 1): dR/dx =
  * (d, 0, 0) on +Z is ∂s/∂x = d/2, ρ = N·d/2; the switch from
  * magnification to level 1 at ρ = 1 and 2, and the ma term: along the
@@ -648,9 +700,10 @@ static double path_jump(const sample_texture *tex, const sample_sampler *smp, co
 }
 
 /* Random texels in [0, 1] (so that a seam, which would pair unrelated
- * texels, jumps by about ⅓ on average): along paths across the middle of
- * each of the 12 edges, 3 texels of path in 200 steps (0.015 texel a
- * step), every filter changes by at most CONT_BOUND (env_test.h) a step.
+ * texels, jumps by about ⅓ on average): along paths across each of the 12
+ * edges, at its middle and 0.6 of the way to a corner, 3 texels of path
+ * in 200 steps (0.015 texel a step), every filter changes by at most
+ * CONT_BOUND (env_test.h) a step.
  * Through each of the 8 corners (along the diagonal,
  * the worst way through) each filter stays within its corner_bound. Both
  * with a 2 × ½-texel and a 0.3-texel footprint. */
@@ -673,17 +726,22 @@ static void test_continuity(void)
         sample_sampler s;
         cont_sampler(fi, &s);
         /* The 12 edges: between axes x, y, z with signs; the path crosses
-         * the edge's midpoint (1.5 texels of the face each side). */
-        for (e = 0; e < 12; ++e) {
-            int ax = e / 4, sg1 = (e & 1) ? -1 : 1, sg2 = (e & 2) ? -1 : 1, ay = (ax + 1) % 3;
+         * the edge at its midpoint and at 0.6 of the way to a corner,
+         * where the unfolded neighbour is sheared against its own
+         * coordinates (1.5 texels of the face each side). */
+        for (e = 0; e < 24; ++e) {
+            int ax = (e % 12) / 4, sg1 = (e & 1) ? -1 : 1, sg2 = (e & 2) ? -1 : 1, ay = (ax + 1) % 3;
             double a[3] = {0, 0, 0}, b[3] = {0, 0, 0}, off = 1.5 * 2.0 / n;
             a[ax] = sg1;
             a[ay] = sg2 * (1.0 - off);
             b[ax] = sg1 * (1.0 - off);
             b[ay] = sg2;
+            a[(ax + 2) % 3] = b[(ax + 2) % 3] = e < 12 ? 0.0 : 0.6 * sg1;
             /* 1.5 texels either side: from (1, 1 − off) to (1 − off, 1). */
             worst[fi] = fmax(worst[fi], path_jump(tex, &s, a, b, 200, n, 2.0, 0.5));
-            worst[fi] = fmax(worst[fi], path_jump(tex, &s, a, b, 200, n, 0.3, 0.3));
+            /* The 0.3-texel footprint magnifies (every filter reads
+             * LINEAR's 2 × 2 block): crossed at the middle only. */
+            if (e < 12) worst[fi] = fmax(worst[fi], path_jump(tex, &s, a, b, 200, n, 0.3, 0.3));
         }
         /* The 8 corners: from inside face x across the corner into the
          * region between the other two faces. */
@@ -714,6 +772,7 @@ int main(void)
     RUN(test_edges_and_corners);
     RUN(test_all_corners);
     RUN(test_constant);
+    RUN(test_corner_constant);
     RUN(test_lod);
     RUN(test_bad_input);
     RUN(test_extreme_directions);

@@ -18,4 +18,5 @@ void ls_ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler 
     c->isa = k;
     c->env = LS_ENV_NONE;
     c->face = 0;
+    c->q3 = NULL;
 }

@@ -26,6 +26,10 @@ typedef struct sample_ctx {
      * layer every read of the query is on; 0 for other kinds). */
     ls_env_mode env;
     int face;
+    /* A cube-map query's own direction and derivatives (NULL for other
+     * kinds): the anisotropic filter places probes that leave the face
+     * by direction (footprint_aniso.c). */
+    const sample_query3 *q3;
 } sample_ctx;
 
 /* The context of a batch: level_base and q (GL 4.6 §8.14.3) from the

@@ -19,14 +19,12 @@ static float finite_float(double v)
     return (float)v;
 }
 
-int ls_cube_query(const sample_query3 *q, sample_query *out)
+int ls_cube_query_on(const sample_query3 *q, int f, sample_query *out)
 {
     double r[3] = {q->p[0], q->p[1], q->p[2]}, dx[3] = {q->dpdx[0], q->dpdx[1], q->dpdx[2]},
            dy[3] = {q->dpdy[0], q->dpdy[1], q->dpdy[2]}, s, t, a, b;
-    int f;
-    if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0) return -1;
-    f = cube_face_of(r);
     cube_face_st(f, r, &s, &t);
+    if (!(fabs(s) <= FLT_MAX && fabs(t) <= FLT_MAX)) return 0;
     out->s = (float)s;
     out->t = (float)t;
     cube_face_dst(f, r, dx, &a, &b);
@@ -35,6 +33,16 @@ int ls_cube_query(const sample_query3 *q, sample_query *out)
     cube_face_dst(f, r, dy, &a, &b);
     out->dsdy = finite_float(a);
     out->dtdy = finite_float(b);
+    return 1;
+}
+
+int ls_cube_query(const sample_query3 *q, sample_query *out)
+{
+    double r[3] = {q->p[0], q->p[1], q->p[2]};
+    int f;
+    if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0) return -1;
+    f = cube_face_of(r);
+    ls_cube_query_on(q, f, out);
     return f;
 }
 

@@ -68,5 +68,10 @@ static inline void cube_direction(int f, double sc, double tc, double r[3])
  * ±FLT_MAX (λ then clamps to the last level). Returns the face, or −1 for
  * the zero direction. The query must be finite. */
 int ls_cube_query(const sample_query3 *q, sample_query *out);
+/* The same on face f, which need not be the one q selects (q->p·axis of f
+ * must be > 0: f's plane then holds the direction, past f's edges where
+ * another face is selected). Returns 0 where (s, t) is past float's range
+ * (a direction nearly parallel to f's plane), else 1. */
+int ls_cube_query_on(const sample_query3 *q, int f, sample_query *out);
 
 #endif /* SAMPLE_CUBE_H */

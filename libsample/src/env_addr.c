@@ -40,11 +40,11 @@ static int face_index(double s, int n)
  * seamless_corner). Past one edge the texel is on the adjacent face: the
  * face's plane is unfolded about the edge, so that the k-th texel past the
  * edge is the neighbour's k-th texel in from it — for k = 1 the texel that
- * §8.13.1 asks for, and beyond (bicubic's taps, the footprint filters) the
+ * §8.13.1 asks for, and beyond (bicubic's taps, the pyramid's kernels) the
  * texel at the same distance over the edge. The unfolded point of
  * (sc, tc), |sc| > 1 ≥ |tc|, is the direction (2 − |sc|)·axis +
- * sign(sc)·U + tc·V. Past both edges by different amounts (only filters
- * wider than 2 × 2 reach there), the point's own direction is projected
+ * sign(sc)·U + tc·V. Past both edges by different amounts (only bicubic
+ * and the pyramid's wider kernels reach there), the point's own direction is projected
  * onto the face it selects: the nearest texel in direction. */
 static void seamless_face(const sample_texture *tex, int lv, int f, double i, double j, float out[4])
 {
@@ -72,7 +72,7 @@ static void seamless_face(const sample_texture *tex, int lv, int f, double i, do
  * mean of the three texels of its 2 × 2 block that lie towards the face
  * (GL 4.6 §8.13.1: for k = 1 the three real texels of a LINEAR block; the
  * rule ARB_seamless_cube_map recommends). For k > 1, which only bicubic
- * and the footprint filters reach, the block's inner texel is a corner
+ * and the pyramid's wider kernels reach, the block's inner texel is a corner
  * again; its two edge neighbours alone are averaged, which keeps the read
  * bounded. */
 static void cube_texel(const sample_texture *tex, int lv, int f, double i, double j, float out[4])

@@ -49,6 +49,7 @@ static sample_status env_batch(const sample_texture *tex, const sample_sampler *
             continue;
         }
         fc.face = layer;
+        if (mode == LS_ENV_CUBE) fc.q3 = q;
         memset(&one, 0, sizeof one);
         one.count = 1;
         one.queries = &q2;

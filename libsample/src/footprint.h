@@ -418,6 +418,10 @@ SAMPLE_FORCE_INLINE void fp_level_walk(const fp_level_rows *lr, float (*buf)[4],
         size_t pitch;
         ncol = fp_row_span(lr, r, j, dv, cap, &ilo, &at);
         if (ncol > cap) break; /* unreachable after a successful count */
+        /* A cube map's walk reads its own face only (ls_env_face_clip);
+         * tested only for spans not inside the level, so 2D bits and the
+         * in-level rows are untouched. */
+        if (!at && lr->c->env == LS_ENV_CUBE) ncol = ls_env_face_clip(lr->wlim, j, &ilo, ncol);
         if (!(ncol > 0.0)) continue;
         p = fp_span_texels(lr, j, ilo, (int)ncol, at, buf, &pitch);
         row(ctx, p, pitch, (int)ncol, ilo, dv);
@@ -559,6 +563,15 @@ void ls_fp_footprint_plan(const sample_ctx *c, const sample_query *q, const samp
                        fp_plan *pl);
 uint32_t ls_fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4], float dds[4], float ddt[4],
                           sample_stats *st);
+/* A Blinn–Newell or EWA query on a cube map (c->env == LS_ENV_CUBE, c->q3
+ * its direction query), planned on the face its centre selects (pl0): the
+ * texels of that face weighted by its footprint, and those of each
+ * neighbouring face the footprint reaches by that face's own footprint
+ * (the same query's (s, t) and Jacobian on its plane), one weighted sum
+ * over all, on pl0's levels (footprint_common.c;
+ * doc/environment-maps.md, "Footprint filters"). */
+uint32_t ls_fp_cube_read(const sample_ctx *c, float call_bias, const fp_plan *pl0, float out[4], float dds[4],
+                         float ddt[4], sample_stats *st);
 void ls_fp_blinn_newell_plan(const sample_ctx *c, const sample_query *q, const sample_quad *corners, float call_bias,
                           fp_plan *pl);
 void ls_fp_ewa_plan(const sample_ctx *c, const sample_query *q, float call_bias, fp_plan *pl);

@@ -11,6 +11,7 @@
  * (offsets from −½ + 1/(N + 1) to ½ − 1/(N + 1)), not over the 2 × 2 region.
  */
 #include "aniso.h"
+#include "cube.h"
 #include "kernels.h"
 
 /* At most this many probes: 8 texels each (two bilinear levels) stay within
@@ -122,6 +123,69 @@ void ls_fp_aniso_prefetch(const sample_ctx *c, const sample_query *q, const fp_a
     if (a->l1 != a->l0) prefetch_probes(c, a->l1, s0, t0, s1, t1, a->n / 2 + 1);
 }
 
+/* Whether some probe of a cube-map query leaves its face: the probes lie
+ * on a segment, so whether one of its ends does. */
+static int probes_leave_face(const sample_query *q, const fp_aniso_setup *a)
+{
+    float s0, t0, s1, t1;
+    fp_aniso_probe(q, a, 1, &s0, &t0);
+    fp_aniso_probe(q, a, a->n, &s1, &t1);
+    return !(s0 >= 0.0f && s0 <= 1.0f && t0 >= 0.0f && t0 <= 1.0f && s1 >= 0.0f && s1 <= 1.0f && t1 >= 0.0f &&
+             t1 <= 1.0f);
+}
+
+/* A probe of a cube-map query placed by direction (by_direction): c->q3
+ * holds the query's direction R and the probes' axis dR (in dpdx), and s
+ * the probe's offset along it; the probe is the bilinear value of the face
+ * that R + s·dR selects, at its (s, t) there — the seamless LINEAR of that
+ * direction (GL 4.6 §8.13.1). */
+static uint32_t probe_at_direction(const sample_ctx *c, int lv, float s, float t, float out[4], float dds[4],
+                                   float ddt[4])
+{
+    const sample_query3 *a = c->q3;
+    sample_ctx d = *c;
+    double r[3], ps, pt;
+    int k;
+    (void)t;
+    for (k = 0; k < 3; ++k) r[k] = (double)a->p[k] + (double)s * a->dpdx[k];
+    d.face = cube_face_of(r);
+    /* R + s·dR = 0 (dR = −R/s: no direction) reads the centre's. */
+    if (!(cube_dot(d.face, 0, r) > 0.0)) {
+        for (k = 0; k < 3; ++k) r[k] = a->p[k];
+        d.face = cube_face_of(r);
+    }
+    cube_face_st(d.face, r, &ps, &pt);
+    return ctx_readers(c)->bilinear(&d, lv, (float)ps, (float)pt, out, dds, ddt);
+}
+
+/* The probes of a cube-map query whose probes leave its face, placed by
+ * direction: probe i at R + oᵢ·dR (oᵢ = i/(N + 1) − ½, dR the major
+ * derivative of the query's own direction), not at the face-plane point
+ * s + oᵢ·∂s. Those are the same directions to first order; but the
+ * face-plane points past an edge are mapped onto the neighbour by the
+ * unfolding, which near a corner is sheared against the neighbour's own
+ * coordinates and leaves the quadrant past the corner without a face. The
+ * probes' directions depend on the query alone, not on the face its
+ * centre selects, so the result does not jump where the centre changes
+ * face (doc/environment-maps.md, "Footprint filters"). The offsets reach
+ * probe_at_direction as its s (a query at s = 0 with the axis (1, 0)). */
+static uint32_t by_direction(const sample_ctx *c, const fp_aniso_setup *a, int xmajor, float out[4], float dds[4],
+                             float ddt[4])
+{
+    sample_query3 axis;
+    sample_query q0;
+    fp_aniso_setup b = *a;
+    sample_ctx d = *c;
+    memset(&axis, 0, sizeof axis);
+    memset(&q0, 0, sizeof q0);
+    memcpy(axis.p, c->q3->p, sizeof axis.p);
+    memcpy(axis.dpdx, xmajor ? c->q3->dpdx : c->q3->dpdy, sizeof axis.dpdx);
+    d.q3 = &axis;
+    b.ms = 1.0;
+    b.mt = 0.0;
+    return fp_aniso_probes(&d, &q0, &b, probe_at_direction, out, dds, ddt);
+}
+
 uint32_t ls_fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
                         float out[4], float dds[4], float ddt[4], sample_stats *st)
 {
@@ -131,7 +195,10 @@ uint32_t ls_fp_anisotropic(const sample_ctx *c, const sample_query *q, float cal
     ls_fp_aniso_setup_of(c, q, rho2, lr, call_bias, &a);
     /* ls_recon_level's bilinear, as the batch's kernels read it (the same
      * bits in every table). */
-    texels = fp_aniso_probes(c, q, &a, ctx_readers(c)->bilinear, out, dds, ddt);
+    if (c->q3 && probes_leave_face(q, &a))
+        texels = by_direction(c, &a, rho2[0] >= rho2[1], out, dds, ddt);
+    else
+        texels = fp_aniso_probes(c, q, &a, ctx_readers(c)->bilinear, out, dds, ddt);
     if (st) fp_aniso_stats(&a, st);
     return texels;
 }

@@ -527,5 +527,6 @@ uint32_t ls_fp_blinn_newell(const sample_ctx *c, const sample_query *q, const sa
 {
     fp_plan pl;
     ls_fp_blinn_newell_plan(c, q, corners, call_bias, &pl);
+    if (c->env == LS_ENV_CUBE && c->q3) return ls_fp_cube_read(c, call_bias, &pl, out, dds, ddt, st);
     return ls_fp_run_read(c, &pl.rs, out, dds, ddt, st);
 }

@@ -4,6 +4,8 @@
  */
 #include "footprint.h"
 
+#include "cube.h"
+
 #include <float.h>
 
 void ls_fp_shape_of(double J[2][2], fp_shape *o)
@@ -273,4 +275,92 @@ uint32_t ls_fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4
                           sample_stats *st)
 {
     return ls_fp_run_read(c, &pl->rs, out, dds, ddt, st);
+}
+
+/* ---- Cube maps: a footprint over several faces -------------------------- */
+
+/* The faces a cube-map query's footprint is read on (ls_fp_cube_read): the
+ * face of its centre first, then up to two neighbours, each with its
+ * context (the face) and its plan's geometry and level function. */
+typedef struct fp_cube_faces {
+    int n;
+    sample_ctx c[3];
+    const fp_run_state *rs[3];
+} fp_cube_faces;
+
+/* One level of a cube-map footprint (an fp_level_fn): every face's walk,
+ * each reading only its own face (ls_env_face_clip), into one sum. The
+ * centre's face was counted by its plan on these levels; a neighbour is
+ * counted here (count_only: the count finds the rows that its walk then
+ * reads), and one whose footprint would exceed the cap on this level adds
+ * nothing. */
+static double cube_faces_level(const sample_ctx *c, const void *gp, int lv, fp_accum *acc, int count_only)
+{
+    const fp_cube_faces *g = (const fp_cube_faces *)gp;
+    double total = g->rs[0]->level(&g->c[0], g->rs[0]->geom, lv, acc, count_only);
+    int k;
+    (void)c;
+    for (k = 1; k < g->n; ++k) {
+        const fp_run_state *r = g->rs[k];
+        double n = r->level(&g->c[k], r->geom, lv, NULL, 1);
+        if (!(n <= (double)SAMPLE_MAX_FOOTPRINT_TEXELS)) continue;
+        total += count_only ? n : r->level(&g->c[k], r->geom, lv, acc, 0);
+    }
+    return total;
+}
+
+/* Whether the footprint of a query centred at face coordinate x ∈ [0, 1]
+ * may reach the face's edge at `edge` (0 or 1) on level lv or the next:
+ * within 4·‖J‖ (the Frobenius norm, ≥ the largest singular value: the
+ * footprint's semi-major axis in face units) plus 12 texels of level lv.
+ * Either filter reaches less: EWA's ellipse, widened, to a·√(σ² + rc)
+ * texels of the level it walks, a the radial kernel's support (at most 3
+ * pixels) and rc ≤ 2 (footprint_kernels.c), that is at most
+ * 3·(σ + 1.5 texels), and a texel of level lv + 1 is two of lv;
+ * Blinn–Newell's parallelogram, widened by one texel, to the sum of its
+ * two columns. */
+static int cube_reaches(const sample_ctx *c, const sample_query *q, int lv, double x, double edge)
+{
+    double norm = sqrt((double)q->dsdx * q->dsdx + (double)q->dsdy * q->dsdy + (double)q->dtdx * q->dtdx +
+                       (double)q->dtdy * q->dtdy);
+    return fabs(edge - x) < 4.0 * norm + 12.0 / c->tex->level[lv].w;
+}
+
+uint32_t ls_fp_cube_read(const sample_ctx *c, float call_bias, const fp_plan *pl0, float out[4], float dds[4],
+                         float ddt[4], sample_stats *st)
+{
+    const sample_query3 *q3 = c->q3;
+    const double r[3] = {q3->p[0], q3->p[1], q3->p[2]};
+    fp_plan pl[2];
+    fp_cube_faces g;
+    fp_run_state rs = pl0->rs;
+    sample_query q0;
+    int f;
+    g.n = 1;
+    g.c[0] = *c;
+    g.rs[0] = &pl0->rs;
+    ls_cube_query_on(q3, c->face, &q0);
+    /* The neighbours sharing an edge with the centre's face (not it, not
+     * its opposite) on whose side the direction lies (r·axis > 0: their
+     * plane holds it), where the footprint may reach that edge: U or V of
+     * the centre's face is the neighbour's axis, ±1 in sc or tc its edge. */
+    for (f = 0; f < 6 && rs.ok; ++f) {
+        const double a[3] = {ls_cube_frame[f][0][0], ls_cube_frame[f][0][1], ls_cube_frame[f][0][2]};
+        double du, dv, x, edge;
+        sample_query qf;
+        if ((f >> 1) == (c->face >> 1) || !(cube_dot(f, 0, r) > 0.0)) continue;
+        du = cube_dot(c->face, 1, a); /* ±1 or 0: the edge at s = 1 or 0 */
+        dv = cube_dot(c->face, 2, a); /* likewise t */
+        x = du != 0.0 ? q0.s : q0.t;
+        edge = du + dv > 0.0 ? 1.0 : 0.0;
+        if (!cube_reaches(c, &q0, rs.l0, x, edge) || !ls_cube_query_on(q3, f, &qf)) continue;
+        g.c[g.n] = *c;
+        g.c[g.n].face = f;
+        ls_fp_footprint_plan(&g.c[g.n], &qf, NULL, call_bias, &pl[g.n - 1]);
+        g.rs[g.n] = &pl[g.n - 1].rs;
+        ++g.n;
+    }
+    rs.geom = &g;
+    rs.level = cube_faces_level;
+    return ls_fp_run_read(c, &rs, out, dds, ddt, st);
 }

@@ -305,5 +305,6 @@ uint32_t ls_fp_ewa(const sample_ctx *c, const sample_query *q, float call_bias, 
 {
     fp_plan pl;
     ls_fp_ewa_plan(c, q, call_bias, &pl);
+    if (c->env == LS_ENV_CUBE && c->q3) return ls_fp_cube_read(c, call_bias, &pl, out, dds, ddt, st);
     return ls_fp_run_read(c, &pl.rs, out, dds, ddt, st);
 }
