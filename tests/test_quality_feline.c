@@ -113,9 +113,9 @@ static void probes_and_cap(void)
     CHECK(texels == 15 * 8, "8:1 read %u texels, want 120", texels);
     q = footprint(0.5f, 0.5f, 3000.0, 3.0, 0.3, 0.0, 256, 128);
     texels = ls_fp_feline(&c, &q, 0.0f, NULL, o, NULL, NULL, NULL);
-    CHECK(texels == FP_FELINE_MAX_PROBES * 8, "1000:1 read %u texels", texels);
+    CHECK(texels == FP_PROBES_MAX * 8, "1000:1 read %u texels", texels);
     extreme_queries(qs, 256, 128);
-    extreme_batch(t, &s, qs, FP_FELINE_MAX_PROBES * 8, "feline");
+    extreme_batch(t, &s, qs, FP_PROBES_MAX * 8, "feline");
     CHECK(sample_footprint_parse("feline") == SAMPLE_FOOTPRINT_FELINE, "name");
     sample_texture_destroy(t);
 }

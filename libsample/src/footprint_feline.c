@@ -1,33 +1,45 @@
 /*
- * Feline (footprint_feline.h): EWA quality at the cost of a few trilinear
- * probes. McCormack et al. 1999 place probes along the major axis of the
- * footprint ellipse, each a trilinear lookup whose level matches the minor
- * axis, weighted by a Gaussian of their distance from the centre; Mavridis
- * & Papaioannou 2011 ("High quality elliptical texture filtering on GPU")
- * take the weights and spacing from the EWA ellipse itself. Here, with the
- * ellipse of footprint_ewa.c (conjugate semi-axes dPdx, dPdy, singular
- * values σ0 ≥ σ1 in base texels, σ1 ≥ σ0/16):
+ * Feline (footprint_feline.h): EWA quality at the cost of a bounded set of
+ * trilinear probes. McCormack et al. 1999 place probes along the major
+ * axis of the footprint ellipse, each a trilinear lookup whose level
+ * matches the minor axis, weighted by a Gaussian of their distance from
+ * the centre; Mavridis & Papaioannou 2011 ("High quality elliptical
+ * texture filtering on GPU") take the weights from the EWA ellipse and,
+ * for quality near round footprints, probe a finer level so that the sum
+ * of the bilinear probes approximates the Gaussian. Here, with the ellipse
+ * of footprint_ewa.c (singular values σ0 ≥ σ1 in base texels, σ1 ≥ σ0/16,
+ * the major axis u and minor axis v):
  *
- *   λ  = log2 σ1 (+ biases): a trilinear probe there blurs about as EWA's
- *        Gaussian does across the minor axis (standard deviation ≈ σ1/2);
- *   the probes' spread along the major axis makes up the rest of EWA's
- *        variance along it: s = ½·√(σ0² − σ1²) (EWA's e^(−2r²) has
- *        standard deviation ½ in r);
- *   N  = 2h + 1 probes at d_k = 2s·k/(h + 1), k = −h … h, spaced at most
- *        σ1 (a probe's own width, so the probes do not alias along the
- *        axis): h = ⌈2s/σ1⌉ − 1, at most 15 (the eccentricity clamp);
- *   w_k = EWA's weight at r = k/(h + 1) (fp_ewa_weight: the truncated
- *        Gaussian e^(−2r²) − e^(−2)), the sum normalised.
+ *   the filter aimed at has variance V_a = KV·σ_a² + KE·σ1² along each
+ *        axis a (base texels²);
+ *   λ' = log2 σ1 − DELTA (+ biases, clamps), split into two levels: each
+ *        trilinear probe has variance vp = ¼·((1 − f)·4^l0 + f·4^l1)
+ *        (a bilinear tent on a box-filtered level: ¼ level texel²);
+ *   the probes make up the rest, V_a − vp, as EWA's own truncated
+ *        Gaussian (fp_ewa_weight, e^(−2r²) − e^(−2) on r < 1, marginal
+ *        variance 0.136·R² for radius R): R_a = √((V_a − vp)/0.136);
+ *   probes on the lattice i·h0·u + j·h1·v inside that ellipse (r < 1),
+ *        spacing h = RHO·2^λ' (a probe's width: no aliasing between them),
+ *        widened on an axis where more than 2·M_a + 1 probes would not fit;
+ *   w = fp_ewa_weight(r²) at each probe, normalised.
  *
- * A round footprint is one trilinear probe. The probes are float GL
- * bilinear reads, summed in double.
+ * Every quantity is continuous in the footprint and a probe enters or
+ * leaves the lattice at r = 1, where its weight is 0. The probes are
+ * float GL bilinear reads, summed in double (fp_aniso_probes).
  */
 #include "footprint_feline.h"
 
-#include "aniso.h"
+#include <stdlib.h>
+
 #include "footprint.h"
 #include "kernels.h"
 #include "stochastic.h"
+
+static double par(const char *n, double d)
+{
+    const char *e = getenv(n);
+    return e ? atof(e) : d;
+}
 
 /* The unit vector (in base texels) of the ellipse's major axis: the
  * eigenvector of M = J·Jᵀ for its larger eigenvalue e (J in base texels),
@@ -48,39 +60,28 @@ static void major_axis(double J[2][2], double e, double *ux, double *uy)
     *uy = ay / n;
 }
 
-static void weighted_add(double acc[4], double w, double f, const float a[4], const float b[4])
+/* Lattice steps m on one axis (|i| ≤ m) and its spacing *h: the probes
+ * i·h with i·h < R, at most 2·mmax + 1 (the spacing widened to R/(mmax + 1)
+ * where they would not fit). R = 0 or not finite: the centre alone. */
+static int axis_steps(double R, double *h, int mmax)
 {
-    int k;
-    for (k = 0; k < 4; ++k) acc[k] += w * ((1.0 - f) * a[k] + f * b[k]);
+    double x;
+    if (!(R > 0.0) || !(R < INFINITY) || !(*h > 0.0)) return 0;
+    if (*h < R / (mmax + 1)) *h = R / (mmax + 1);
+    x = R / *h;
+    return x >= mmax + 1 ? mmax : (int)fp_ceil(x) - 1;
 }
 
-static void store_mean(float *dst, const double acc[4], double sw)
-{
-    int k;
-    if (dst)
-        for (k = 0; k < 4; ++k) dst[k] = (float)(acc[k] / sw);
-}
-
-/* The probe d base texels along the major axis (ux, uy) from the centre,
- * in normalized coordinates. */
-static void probe_at(const sample_query *q, const struct sample_level *B, double d, double ux, double uy, float *s,
-                     float *t)
-{
-    *s = (float)(q->s + d * ux / B->w);
-    *t = (float)(q->t + d * uy / B->h);
-}
-
-uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, const double *u, float out[4],
-                      float dds[4], float ddt[4], sample_stats *st)
+void ls_fp_feline_setup(const sample_ctx *c, const sample_query *q, float call_bias, fp_aniso_setup *a,
+                        fp_probe_set *set)
 {
     const struct sample_level *B = &c->tex->level[c->base];
-    const fp_bilinear_fn bilinear = ctx_readers(c)->bilinear;
-    double J[2][2], ux, uy, s0, s1, spread, lb, f, sw = 0.0, w[FP_FELINE_MAX_PROBES];
-    double acc[4] = {0, 0, 0, 0}, as[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
+    const double KV = par("FEL_KV", 1.0 / 6.0), KE = par("FEL_KE", 0.0), DELTA = par("FEL_DELTA", 1.0),
+                 RHO = par("FEL_RHO", 1.0);
+    const int M0 = (int)par("FEL_M0", 7), M1 = (int)par("FEL_M1", 2);
+    double J[2][2], ux, uy, s0, s1, lb, vp, sz0, sz1, R0, R1, h0, h1;
     fp_shape sh;
-    float lam, ff;
-    int h, k, l0, l1;
-    uint32_t texels = 0;
+    int m0, m1, i, j, n = 0;
 
     J[0][0] = (double)q->dsdx * B->w;
     J[0][1] = (double)q->dsdy * B->w;
@@ -90,65 +91,74 @@ uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bia
     s0 = sh.s[0];
     s1 = sh.s[1];
     major_axis(J, s0 * s0, &ux, &uy);
-    spread = 0.5 * sqrt(fp_pos(s0 * s0 - s1 * s1));
-    /* h = ⌈2s/σ1⌉ − 1 in [0, 15]; a NaN, infinite or zero footprint is one
-     * probe (its value then decided by the level clamps, as trilinear's). */
-    h = 0;
-    if (s1 > 0.0 && 2.0 * spread / s1 < (FP_FELINE_MAX_PROBES + 1) / 2) h = (int)fp_ceil(2.0 * spread / s1) - 1;
-    else if (s1 > 0.0 && spread < INFINITY) h = (FP_FELINE_MAX_PROBES - 1) / 2;
-    if (h < 0) h = 0;
-    lb = sample_log2(s1);
-    lam = lod_lambda(c, lb < -1e4 ? -1e4f : (lb > 1e4 ? 1e4f : (float)lb), call_bias);
-    ls_lod_split(c, lam, &l0, &l1, &ff);
-    if (ff == 0.0f) l1 = l0;
-    f = ff;
-    for (k = -h; k <= h; ++k) {
-        const double r = (double)k / (h + 1);
-        w[k + h] = fp_ewa_weight(r * r, NULL);
-        sw += w[k + h];
+    lb = sample_log2(s1) - DELTA;
+    a->lam = lod_lambda(c, lb < -1e4 ? -1e4f : (lb > 1e4 ? 1e4f : (float)lb), call_bias);
+    ls_lod_split(c, a->lam, &a->l0, &a->l1, &a->f);
+    if (a->f == 0.0f) a->l1 = a->l0;
+    if (par("FEL_ONE", 0) != 0) {
+        if (par("FEL_ONE", 0) == 2 && a->f >= 0.5f) a->l0 = a->l1;
+        a->l1 = a->l0, a->f = 0.0f;
     }
+    a->ms = a->mt = 0.0;
+    a->set = set;
+    sz0 = exp2((double)(a->l0 - c->base));
+    sz1 = exp2((double)(a->l1 - c->base));
+    vp = 0.25 * ((1.0 - a->f) * sz0 * sz0 + a->f * sz1 * sz1);
+    R0 = sqrt(fp_pos(KV * s0 * s0 + KE * s1 * s1 - vp) / 0.136);
+    R1 = sqrt(fp_pos((KV + KE) * s1 * s1 - vp) / 0.136);
+    h0 = h1 = RHO * (par("FEL_ONE", 0) != 0 ? sz0 : exp2(a->lam > 0.0f ? (double)a->lam : 0.0));
+    if (par("FEL_ONE", 0) == 3) {
+        m0 = R0 > 0.0 && R0 < INFINITY ? (int)fp_ceil(R0 / sz0) - 1 : 0;
+        m1 = R1 > 0.0 && R1 < INFINITY ? (int)fp_ceil(R1 / sz0) - 1 : 0;
+        if (R0 > 0.0 && m0 < 1) m0 = 1;
+        if (R1 > 0.0 && m1 < 1) m1 = 1;
+        if (m0 > M0) m0 = M0;
+        if (m1 > M1) m1 = M1;
+        h0 = R0 / (m0 + par("FEL_EPS", 0.5));
+        h1 = R1 / (m1 + par("FEL_EPS", 0.5));
+    } else {
+    m0 = axis_steps(R0, &h0, M0);
+    m1 = axis_steps(R1, &h1, M1);
+    }
+    set->sw = 0.0;
+    for (j = -m1; j <= m1; ++j)
+        for (i = -m0; i <= m0; ++i) {
+            const double x = m0 ? i * h0 / R0 : 0.0, y = m1 ? j * h1 / R1 : 0.0, r2 = x * x + y * y;
+            const double du = i * h0 * ux - j * h1 * uy, dv = i * h0 * uy + j * h1 * ux;
+            if (!(r2 < 1.0) || n == FP_PROBES_MAX) continue;
+            set->w[n] = fp_ewa_weight(r2, NULL);
+            set->s[n] = (float)(q->s + du / B->w);
+            set->t[n] = (float)(q->t + dv / B->h);
+            set->sw += set->w[n];
+            ++n;
+        }
+    a->n = n;
+}
+
+uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, const double *u, float out[4],
+                      float dds[4], float ddt[4], sample_stats *st)
+{
+    const fp_bilinear_fn bilinear = ctx_readers(c)->bilinear;
+    fp_aniso_setup a;
+    fp_probe_set set;
+    uint32_t texels;
+    ls_fp_feline_setup(c, q, call_bias, &a, &set);
     if (u) {
         /* One probe, drawn with probability w_k/Σw (stratified in u), its
          * level with its blend weight: one bilinear read. */
-        double v = *u * sw, cum = 0.0;
-        float ps, pt;
-        for (k = 0; k < 2 * h; ++k) {
-            if (v < cum + w[k]) break;
-            cum += w[k];
+        double v = *u * set.sw, cum = 0.0;
+        int k, l0 = a.l0;
+        for (k = 0; k < a.n - 1; ++k) {
+            if (v < cum + set.w[k]) break;
+            cum += set.w[k];
         }
-        v = (v - cum) / w[k];
+        v = (v - cum) / set.w[k];
         if (!(v >= 0.0 && v < 1.0)) v = 0.0;
-        probe_at(q, B, 2.0 * spread * (double)(k - h) / (h + 1), ux, uy, &ps, &pt);
-        if (l1 != l0 && ls_stochastic_pick2(f, &v)) l0 = l1;
-        l1 = l0;
-        texels = bilinear(c, l0, ps, pt, out, NULL, NULL);
+        if (a.l1 != a.l0 && ls_stochastic_pick2((double)a.f, &v)) l0 = a.l1;
+        a.l0 = a.l1 = l0;
+        texels = bilinear(c, l0, set.s[k], set.t[k], out, NULL, NULL);
     } else
-        for (k = -h; k <= h; ++k) {
-            const double d = 2.0 * spread * (double)k / (h + 1);
-            float ps, pt, o0[4], ds0[4], dt0[4], o1[4], ds1[4], dt1[4];
-            probe_at(q, B, d, ux, uy, &ps, &pt);
-            texels += bilinear(c, l0, ps, pt, o0, dds ? ds0 : NULL, ddt ? dt0 : NULL);
-            if (l1 != l0) {
-                texels += bilinear(c, l1, ps, pt, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
-            } else {
-                memcpy(o1, o0, sizeof o1);
-                if (dds) memcpy(ds1, ds0, sizeof ds1);
-                if (ddt) memcpy(dt1, dt0, sizeof dt1);
-            }
-            weighted_add(acc, w[k + h], f, o0, o1);
-            if (dds) weighted_add(as, w[k + h], f, ds0, ds1);
-            if (ddt) weighted_add(at, w[k + h], f, dt0, dt1);
-        }
-    if (!u) {
-        store_mean(out, acc, sw);
-        store_mean(dds, as, sw);
-        store_mean(ddt, at, sw);
-    }
-    if (st) {
-        st->level0 = (int16_t)l0;
-        st->level1 = (int16_t)(l1 != l0 ? l1 : -1);
-        st->level_frac = l1 != l0 ? ff : 0.0f;
-        st->lod = lam;
-    }
+        texels = fp_aniso_probes(c, q, &a, bilinear, out, dds, ddt);
+    if (st) fp_aniso_stats(&a, st);
     return texels;
 }

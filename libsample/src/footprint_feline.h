@@ -7,11 +7,13 @@
 #ifndef SAMPLE_FOOTPRINT_FELINE_H
 #define SAMPLE_FOOTPRINT_FELINE_H
 
+#include "aniso.h"
 #include "lod.h"
 
-/* At most this many probes: 2·16 − 1, the count at the eccentricity
- * clamp (FP_MAX_ECCENTRICITY). */
-#define FP_FELINE_MAX_PROBES 31
+/* The probes of query q (a minified one): levels, λ', and the weighted
+ * probe set, which a->set then points to. */
+void ls_fp_feline_setup(const sample_ctx *c, const sample_query *q, float call_bias, fp_aniso_setup *a,
+                        fp_probe_set *set);
 
 /* Returns texels read, fills out (and dds/ddt if non-NULL) and stats (if
  * non-NULL); applies the sampler's and the call's bias itself. With u
