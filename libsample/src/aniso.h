@@ -16,8 +16,9 @@ uint32_t ls_fp_anisotropic(const sample_ctx *c, const sample_query *q, float cal
                         float out[4], float dds[4], float ddt[4], sample_stats *st);
 
 /* At most this many weighted probes in an fp_probe_set (8 texels each on
- * two levels: well within SAMPLE_MAX_FOOTPRINT_TEXELS). */
-#define FP_PROBES_MAX 64
+ * two levels: within SAMPLE_MAX_FOOTPRINT_TEXELS); a multiple of the fast
+ * path's ANISO_LANES. */
+#define FP_PROBES_MAX 96
 
 /* Probes at explicit positions with their own weights (Feline,
  * footprint_feline.c): probe i at (s[i], t[i]) (normalized) weighs
