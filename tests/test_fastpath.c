@@ -345,8 +345,9 @@ static void test_footprints_inside(void)
     for_each_texture(sizes, 2, footprint_inside, "Blinn-Newell configurations inside");
     inside_filter = SAMPLE_FOOTPRINT_EWA;
     for_each_texture(sizes, 2, footprint_inside, "EWA configurations inside");
+    /* Feline reads up to 77 probes a query: one (odd) size keeps it short. */
     inside_filter = SAMPLE_FOOTPRINT_FELINE;
-    for_each_texture(sizes, 2, footprint_inside, "Feline configurations inside");
+    for_each_texture(sizes + 1, 1, footprint_inside, "Feline configurations inside");
 }
 
 /* λ four queries at a time (lod_lanes.h) against the general path's, on
