@@ -298,7 +298,8 @@ static void test_footprint_samplers(void)
  * levels of a texture larger than it. For the anisotropic filter the fast
  * path addresses its probes when it plans the query (fast_gl.c,
  * aniso_address): footprints of 1 to 24 probes (above 16 the probes are
- * read one at a time). For Blinn–Newell and EWA every row's span lies in
+ * read one at a time); Feline's weighted probe sets take the same path
+ * (up to FP_PROBES_MAX probes addressed). For Blinn–Newell and EWA every row's span lies in
  * the level, so whole rows and columns are read where they lie (float
  * RGBA) or decoded by the format's reader (fast_gl.c, decode_row;
  * footprint.h, fp_span_texels), spans of odd and even length. At random angles and λ', on wraps with and without a
@@ -344,6 +345,9 @@ static void test_footprints_inside(void)
     for_each_texture(sizes, 2, footprint_inside, "Blinn-Newell configurations inside");
     inside_filter = SAMPLE_FOOTPRINT_EWA;
     for_each_texture(sizes, 2, footprint_inside, "EWA configurations inside");
+    /* Feline reads up to 77 probes a query: one (odd) size keeps it short. */
+    inside_filter = SAMPLE_FOOTPRINT_FELINE;
+    for_each_texture(sizes + 1, 1, footprint_inside, "Feline configurations inside");
 }
 
 /* λ four queries at a time (lod_lanes.h) against the general path's, on

@@ -59,8 +59,8 @@ const tool_filter tool_filters[] = {
     {.label = "EWA",
      .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
      .footprint = SAMPLE_FOOTPRINT_EWA},
-    /* EWA's ellipse by Gaussian-weighted trilinear probes (Feline). */
-    {.label = "Feline (EWA by trilinear probes)",
+    /* EWA's ellipse by a lattice of Gaussian-weighted bilinear probes (Feline). */
+    {.label = "Feline (EWA by bilinear probes)",
      .min = SAMPLE_LINEAR_MIPMAP_LINEAR, .mag = SAMPLE_LINEAR,
      .footprint = SAMPLE_FOOTPRINT_FELINE},
     /* EWA with sharper radial kernels (doc/footprint-filters.md, "Radial

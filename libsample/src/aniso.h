@@ -15,14 +15,30 @@
 uint32_t ls_fp_anisotropic(const sample_ctx *c, const sample_query *q, float call_bias,
                         float out[4], float dds[4], float ddt[4], sample_stats *st);
 
+/* At most this many weighted probes in an fp_probe_set (8 texels each on
+ * two levels: within SAMPLE_MAX_FOOTPRINT_TEXELS); a multiple of the fast
+ * path's ANISO_LANES. */
+#define FP_PROBES_MAX 96
+
+/* Probes at explicit positions with their own weights (Feline,
+ * footprint_feline.c): probe i at (s[i], t[i]) (normalized) weighs
+ * w[i] / sw. */
+typedef struct fp_probe_set {
+    float s[FP_PROBES_MAX], t[FP_PROBES_MAX];
+    double w[FP_PROBES_MAX], sw;
+} fp_probe_set;
+
 /* What the anisotropic filter decides per query before reading a texel
  * (footprint_aniso.c): N probes along the major column, λ' and its two
  * levels. The fast path computes it when it plans a query and runs the
- * probes later with its own bilinear; ls_fp_anisotropic does both at once. */
+ * probes later with its own bilinear; ls_fp_anisotropic does both at once.
+ * With `set` the n probes are that set's, weighted (Feline); without, N
+ * equal probes along the major column (the anisotropic filter). */
 typedef struct fp_aniso_setup {
     int n, l0, l1;  /* probe count; levels (l1 == l0: a single level) */
     float lam, f;   /* λ' after biases and clamps; the weight of level l1 */
     double ms, mt;  /* the major column (normalized): the probes' axis */
+    const fp_probe_set *set; /* NULL: the anisotropic filter's probes */
 } fp_aniso_setup;
 
 /* From lod_log2_rho's ρx², ρy² and log2 ρ of the query. */
@@ -54,6 +70,21 @@ SAMPLE_FORCE_INLINE void fp_aniso_add(double acc[4], double f, const float a[4],
     v4d_store(acc, v4d_add(v4d_load(acc), p));
 }
 
+/* One weighted probe's trilinear value w·((1 − f)·a + f·b) added to the
+ * sums (an fp_probe_set's probe). */
+SAMPLE_FORCE_INLINE void fp_probe_add(double acc[4], double w, double f, const float a[4], const float b[4])
+{
+    v4d p = v4d_add(v4d_mul(v4d_set1(1.0 - f), v4d_of(v4_load(a))), v4d_mul(v4d_set1(f), v4d_of(v4_load(b))));
+    v4d_store(acc, v4d_add(v4d_load(acc), v4d_mul(v4d_set1(w), p)));
+}
+
+/* The weighted mean of a probe set's sums. */
+SAMPLE_FORCE_INLINE void fp_probe_mean(const double acc[4], double sw, float out[4])
+{
+    int k;
+    for (k = 0; k < 4; ++k) out[k] = (float)(acc[k] / sw);
+}
+
 /* The mean of n probes' sums. */
 SAMPLE_FORCE_INLINE void fp_aniso_mean(const double acc[4], int n, float out[4])
 {
@@ -66,9 +97,10 @@ SAMPLE_FORCE_INLINE void fp_aniso_mean(const double acc[4], int n, float out[4])
 typedef uint32_t (*fp_bilinear_fn)(const sample_ctx *c, int lv, float s, float t, float out[4],
                                    float dds[4], float ddt[4]);
 
-/* The N trilinear probes and their mean. Generic over the bilinear reader
- * so that the fast path's instantiation inlines it (zstd style) while
- * ls_fp_anisotropic calls the reader table: one loop, the same bits. */
+/* The N trilinear probes and their mean (weighted where a->set). Generic
+ * over the bilinear reader so that the fast path's instantiation inlines
+ * it (zstd style) while ls_fp_anisotropic and ls_fp_feline call the reader
+ * table: one loop, the same bits. */
 SAMPLE_FORCE_INLINE uint32_t fp_aniso_probes(const sample_ctx *c, const sample_query *q,
                                              const fp_aniso_setup *a, fp_bilinear_fn bilinear,
                                              float out[4], float dds[4], float ddt[4])
@@ -79,7 +111,10 @@ SAMPLE_FORCE_INLINE uint32_t fp_aniso_probes(const sample_ctx *c, const sample_q
     int i;
     for (i = 1; i <= a->n; ++i) {
         float s, t, o0[4], s0[4], t0[4], o1[4], s1[4], t1[4];
-        fp_aniso_probe(q, a, i, &s, &t);
+        if (a->set)
+            s = a->set->s[i - 1], t = a->set->t[i - 1];
+        else
+            fp_aniso_probe(q, a, i, &s, &t);
         /* Derivatives only where asked for: they do not touch the value. */
         texels += bilinear(c, a->l0, s, t, o0, dds ? s0 : NULL, ddt ? t0 : NULL);
         if (a->l1 != a->l0) {
@@ -89,13 +124,26 @@ SAMPLE_FORCE_INLINE uint32_t fp_aniso_probes(const sample_ctx *c, const sample_q
             if (dds) memcpy(s1, s0, sizeof s1);
             if (ddt) memcpy(t1, t0, sizeof t1);
         }
-        fp_aniso_add(acc, f, o0, o1);
-        if (dds) fp_aniso_add(as, f, s0, s1);
-        if (ddt) fp_aniso_add(at, f, t0, t1);
+        if (a->set) {
+            const double w = a->set->w[i - 1];
+            fp_probe_add(acc, w, f, o0, o1);
+            if (dds) fp_probe_add(as, w, f, s0, s1);
+            if (ddt) fp_probe_add(at, w, f, t0, t1);
+        } else {
+            fp_aniso_add(acc, f, o0, o1);
+            if (dds) fp_aniso_add(as, f, s0, s1);
+            if (ddt) fp_aniso_add(at, f, t0, t1);
+        }
     }
-    fp_aniso_mean(acc, a->n, out);
-    if (dds) fp_aniso_mean(as, a->n, dds);
-    if (ddt) fp_aniso_mean(at, a->n, ddt);
+    if (a->set) {
+        fp_probe_mean(acc, a->set->sw, out);
+        if (dds) fp_probe_mean(as, a->set->sw, dds);
+        if (ddt) fp_probe_mean(at, a->set->sw, ddt);
+    } else {
+        fp_aniso_mean(acc, a->n, out);
+        if (dds) fp_aniso_mean(as, a->n, dds);
+        if (ddt) fp_aniso_mean(at, a->n, ddt);
+    }
     return texels;
 }
 

@@ -39,6 +39,7 @@
  * (tests/test_fastpath.c).
  */
 #include "filter.h"
+#include "footprint_feline.h"
 #include "kernels.h"
 #include "lod_lanes.h"
 
@@ -69,17 +70,18 @@ typedef struct fast_taps {
 enum { PLAN_GL, PLAN_BORDER, PLAN_ANISO, PLAN_FOOTPRINT };
 
 /* The probes of an anisotropic query, addressed when the query is planned
- * (aniso_address): at most ANISO_FAST_PROBES, each with its 2 × 2 block
- * inside both levels. */
+ * (aniso_address): at most ANISO_FAST_PROBES (a weighted probe set:
+ * FP_PROBES_MAX), each with its 2 × 2 block inside both levels. */
 #define ANISO_FAST_PROBES 16
+#define ANISO_TAPS_MAX (FP_PROBES_MAX > ANISO_FAST_PROBES ? FP_PROBES_MAX : ANISO_FAST_PROBES)
 /* Probes addressed together: the loops over them run on whole vectors
  * (8 floats: one AVX register, two SSE ones). */
 #define ANISO_LANES 8
 
 typedef struct aniso_taps {
     int n; /* probes addressed; 0: fp_aniso_probes reads the query */
-    const unsigned char *p[2][ANISO_FAST_PROBES]; /* each block's first texel on l0, l1 */
-    float fu[2][ANISO_FAST_PROBES], fv[2][ANISO_FAST_PROBES];
+    const unsigned char *p[2][ANISO_TAPS_MAX]; /* each block's first texel on l0, l1 */
+    float fu[2][ANISO_TAPS_MAX], fv[2][ANISO_TAPS_MAX];
 } aniso_taps;
 
 typedef uint32_t (*aniso_fn)(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an,
@@ -359,6 +361,8 @@ static SAMPLE_NOINLINE int plan_footprint(const sample_ctx *c, const sample_quer
          * spans only in their counting pass). */
         pl->kind = PLAN_ANISO;
         ls_fp_aniso_setup_of(c, q, rho2, lr, bias, &pl->u.an);
+    } else if (c->smp->footprint == SAMPLE_FOOTPRINT_FELINE) {
+        pl->kind = PLAN_ANISO; /* plan_aniso makes its probe set */
     }
     return 1;
 }
@@ -622,18 +626,25 @@ SAMPLE_FORCE_INLINE float keep_if(float x, int in)
 static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an, size_t tb,
                          aniso_taps *at)
 {
-    float s[ANISO_FAST_PROBES], t[ANISO_FAST_PROBES];
-    int ii[ANISO_FAST_PROBES], jj[ANISO_FAST_PROBES];
+    float s[ANISO_TAPS_MAX], t[ANISO_TAPS_MAX];
+    int ii[ANISO_TAPS_MAX], jj[ANISO_TAPS_MAX];
     const int n = an->n, lanes = (n + ANISO_LANES - 1) / ANISO_LANES * ANISO_LANES;
     int lv, k, b0;
     at->n = 0;
-    if (n > ANISO_FAST_PROBES || wrap_transforms_coord(c->smp->wrap_s) || wrap_transforms_coord(c->smp->wrap_t))
+    if (n > (an->set ? FP_PROBES_MAX : ANISO_FAST_PROBES) || wrap_transforms_coord(c->smp->wrap_s) ||
+        wrap_transforms_coord(c->smp->wrap_t))
         return 0;
-    /* Lanes past n hold probes beyond the footprint's end: computed, never
-     * read. */
-    for (b0 = 0; b0 < lanes; b0 += ANISO_LANES)
-        ANISO_LANE_LOOP
-        for (k = b0; k < b0 + ANISO_LANES; ++k) fp_aniso_probe(q, an, k + 1, &s[k], &t[k]);
+    /* Lanes past n hold probes beyond the footprint's end (a set's: its
+     * last probe again): computed, never read. */
+    if (an->set)
+        for (k = 0; k < lanes; ++k) {
+            s[k] = an->set->s[k < n ? k : n - 1];
+            t[k] = an->set->t[k < n ? k : n - 1];
+        }
+    else
+        for (b0 = 0; b0 < lanes; b0 += ANISO_LANES)
+            ANISO_LANE_LOOP
+            for (k = b0; k < b0 + ANISO_LANES; ++k) fp_aniso_probe(q, an, k + 1, &s[k], &t[k]);
     for (lv = 0; lv < 1 + (an->l1 != an->l0); ++lv) {
         const struct sample_level *L = &c->tex->level[lv ? an->l1 : an->l0];
         const float w = (float)L->w, h = (float)L->h, wm = w - 1.0f, hm = h - 1.0f;
@@ -684,20 +695,30 @@ SAMPLE_FORCE_INLINE uint32_t aniso_read(const sample_ctx *c, sample_format fmt, 
             bilerp_block(fmt, nc, at->p[1][k], st1, at->fu[1][k], at->fv[1][k], o1, NULL, NULL);
         else
             memcpy(o1, o0, sizeof o1);
-        fp_aniso_add(acc, (double)an->f, o0, o1);
+        if (an->set)
+            fp_probe_add(acc, an->set->w[k], (double)an->f, o0, o1);
+        else
+            fp_aniso_add(acc, (double)an->f, o0, o1);
     }
-    fp_aniso_mean(acc, an->n, out);
+    if (an->set)
+        fp_probe_mean(acc, an->set->sw, out);
+    else
+        fp_aniso_mean(acc, an->n, out);
     return (uint32_t)(4 * at->n * (1 + two));
 }
 
-/* plan_query for the anisotropic filter's pipeline: a minified query's
- * probes addressed and their lines asked for. */
+/* plan_query for the anisotropic filter's pipeline (and Feline's, whose
+ * weighted probes go to `set`): a minified query's probes addressed and
+ * their lines asked for. */
 SAMPLE_FORCE_INLINE void plan_aniso(const sample_ctx *c, const sample_batch_args *a, size_t i, size_t tb,
-                                    fast_plan *pl, aniso_taps *at)
+                                    fast_plan *pl, aniso_taps *at, fp_probe_set *set)
 {
     plan_query(c, a, i, NULL, tb, 0, 0, pl);
     at->n = 0;
-    if (pl->kind == PLAN_ANISO && !aniso_address(c, &a->queries[i], &pl->u.an, tb, at))
+    if (pl->kind != PLAN_ANISO) return;
+    if (c->smp->footprint == SAMPLE_FOOTPRINT_FELINE)
+        ls_fp_feline_setup(c, &a->queries[i], a->lod_bias ? a->lod_bias[i] : 0.0f, &pl->u.an, set);
+    if (!aniso_address(c, &a->queries[i], &pl->u.an, tb, at) && !pl->u.an.set)
         ls_fp_aniso_prefetch(c, &a->queries[i], &pl->u.an);
 }
 
@@ -805,7 +826,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
     size_t i;
-    if (smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC) {
+    if (smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC || smp->footprint == SAMPLE_FOOTPRINT_FELINE) {
         /* A software pipeline FAST_AHEAD_ANISO queries deep: query i + D is
          * planned (its probes' lines asked for) right after query i ran, so
          * the misses of the next queries are in flight while this one
@@ -814,12 +835,14 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
          * while the block computes. */
         fast_plan ring[FAST_AHEAD_ANISO];
         aniso_taps taps[FAST_AHEAD_ANISO];
+        fp_probe_set sets[FAST_AHEAD_ANISO];
         size_t ahead = a->count < FAST_AHEAD_ANISO ? a->count : FAST_AHEAD_ANISO;
-        for (i = 0; i < ahead; ++i) plan_aniso(c, a, i, tb, &ring[i], &taps[i]);
+        for (i = 0; i < ahead; ++i) plan_aniso(c, a, i, tb, &ring[i], &taps[i], &sets[i]);
         for (i = 0; i < a->count; ++i) {
             size_t r = i % FAST_AHEAD_ANISO;
             run_query(c, a, i, &ring[r], NULL, &taps[r], fmt, nc, tb, 0, 0, aniso);
-            if (i + FAST_AHEAD_ANISO < a->count) plan_aniso(c, a, i + FAST_AHEAD_ANISO, tb, &ring[r], &taps[r]);
+            if (i + FAST_AHEAD_ANISO < a->count)
+                plan_aniso(c, a, i + FAST_AHEAD_ANISO, tb, &ring[r], &taps[r], &sets[r]);
         }
         return;
     }

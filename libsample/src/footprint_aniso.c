@@ -84,6 +84,7 @@ void ls_fp_aniso_setup_of(const sample_ctx *c, const sample_query *q, const doub
     /* Px, Py: the column lengths in base texels (lod_log2_rho). */
     int xmajor = rho2[0] >= rho2[1];
     double pmax = sqrt(xmajor ? rho2[0] : rho2[1]), pmin = sqrt(xmajor ? rho2[1] : rho2[0]), lb;
+    a->set = NULL;
     a->ms = xmajor ? q->dsdx : q->dsdy;
     a->mt = xmajor ? q->dtdx : q->dtdy;
     a->n = ls_fp_aniso_count(c->smp, pmax, pmin);

@@ -1,33 +1,47 @@
 /*
- * Feline (footprint_feline.h): EWA quality at the cost of a few trilinear
+ * Feline (footprint_feline.h): EWA quality from a bounded set of bilinear
  * probes. McCormack et al. 1999 place probes along the major axis of the
- * footprint ellipse, each a trilinear lookup whose level matches the minor
- * axis, weighted by a Gaussian of their distance from the centre; Mavridis
- * & Papaioannou 2011 ("High quality elliptical texture filtering on GPU")
- * take the weights and spacing from the EWA ellipse itself. Here, with the
- * ellipse of footprint_ewa.c (conjugate semi-axes dPdx, dPdy, singular
- * values σ0 ≥ σ1 in base texels, σ1 ≥ σ0/16):
+ * footprint ellipse, weighted by a Gaussian of their distance from the
+ * centre; Mavridis & Papaioannou 2011 ("High quality elliptical texture
+ * filtering on GPU") take the weights from the EWA ellipse and, for
+ * quality near round footprints, probe a finer level so that the sum of
+ * the bilinear probes approximates the Gaussian. Here, with the ellipse of
+ * footprint_ewa.c (singular values σ0 ≥ σ1 in base texels, σ1 ≥ σ0/16,
+ * major axis u, minor axis v):
  *
- *   λ  = log2 σ1 (+ biases): a trilinear probe there blurs about as EWA's
- *        Gaussian does across the minor axis (standard deviation ≈ σ1/2);
- *   the probes' spread along the major axis makes up the rest of EWA's
- *        variance along it: s = ½·√(σ0² − σ1²) (EWA's e^(−2r²) has
- *        standard deviation ½ in r);
- *   N  = 2h + 1 probes at d_k = 2s·k/(h + 1), k = −h … h, spaced at most
- *        σ1 (a probe's own width, so the probes do not alias along the
- *        axis): h = ⌈2s/σ1⌉ − 1, at most 15 (the eccentricity clamp);
- *   w_k = EWA's weight at r = k/(h + 1) (fp_ewa_weight: the truncated
- *        Gaussian e^(−2r²) − e^(−2)), the sum normalised.
+ *   aimed at: variance V_a = σ_a²/6 along each axis a (base texels²), that
+ *        of DESIGN §8's 2 × 2-pixel pyramid;
+ *   level: ⌊λ'⌋, λ' = log2 σ1 − ½ (+ biases, clamps), one level (texel
+ *        size z base texels): its bilinear probe has variance z²/4 (a tent
+ *        on a box-filtered level);
+ *   the probes make up the rest, V_a − z²/4, as EWA's own truncated
+ *        Gaussian (fp_ewa_weight, e^(−2r²) − e^(−2) on r < 1, whose
+ *        marginal variance is FELINE_VAR·R² for radius R):
+ *        R_a = √((V_a − z²/4)/FELINE_VAR);
+ *   lattice: i·h0·u + j·h1·v, |i| ≤ m0, |j| ≤ m1, inside that ellipse
+ *        (r < 1): m_a = ⌈R_a/z⌉ − 1 (spacing about a probe's width, so the
+ *        tents sum to a smooth kernel), at least 1, at most FELINE_M0
+ *        along u and FELINE_M1 across; h_a = R_a/(m_a + ½);
+ *   w = fp_ewa_weight(r²) at each probe, normalised.
  *
- * A round footprint is one trilinear probe. The probes are float GL
- * bilinear reads, summed in double.
+ * Measured against EWA and the anisotropic filter (error and cost) in
+ * doc/footprint-filters.md, "Feline". The probes are float GL bilinear
+ * reads, summed in double (fp_aniso_probes; the fast path reads them as the
+ * anisotropic filter's, fast_gl.c).
  */
 #include "footprint_feline.h"
 
-#include "aniso.h"
 #include "footprint.h"
 #include "kernels.h"
-#include "stochastic.h"
+
+/* Lattice steps along the major and the minor axis at most: (2·15 + 1) ×
+ * (2·1 + 1) probes bound the set. */
+#define FELINE_M0 15
+#define FELINE_M1 1
+_Static_assert((2 * FELINE_M0 + 1) * (2 * FELINE_M1 + 1) <= FP_PROBES_MAX, "the lattice fits a probe set");
+/* The marginal variance of e^(−2r²) − e^(−2) on the unit disc:
+ * ½·∫r³w dr / ∫r·w dr (numerical integration). */
+#define FELINE_VAR 0.13608
 
 /* The unit vector (in base texels) of the ellipse's major axis: the
  * eigenvector of M = J·Jᵀ for its larger eigenvalue e (J in base texels),
@@ -48,39 +62,27 @@ static void major_axis(double J[2][2], double e, double *ux, double *uy)
     *uy = ay / n;
 }
 
-static void weighted_add(double acc[4], double w, double f, const float a[4], const float b[4])
+/* Lattice steps m (|i| ≤ m) on an axis of radius R for probes of width z,
+ * and the spacing *h: 0 (the centre alone) where R is 0 or not finite. */
+static int axis_steps(double R, double z, int mmax, double *h)
 {
-    int k;
-    for (k = 0; k < 4; ++k) acc[k] += w * ((1.0 - f) * a[k] + f * b[k]);
+    double x = R / z;
+    int m;
+    *h = 0.0;
+    if (!(R > 0.0) || !(R < INFINITY)) return 0;
+    m = x >= mmax + 1 ? mmax : (int)fp_ceil(x) - 1;
+    if (m < 1) m = 1;
+    *h = R / (m + 0.5);
+    return m;
 }
 
-static void store_mean(float *dst, const double acc[4], double sw)
-{
-    int k;
-    if (dst)
-        for (k = 0; k < 4; ++k) dst[k] = (float)(acc[k] / sw);
-}
-
-/* The probe d base texels along the major axis (ux, uy) from the centre,
- * in normalized coordinates. */
-static void probe_at(const sample_query *q, const struct sample_level *B, double d, double ux, double uy, float *s,
-                     float *t)
-{
-    *s = (float)(q->s + d * ux / B->w);
-    *t = (float)(q->t + d * uy / B->h);
-}
-
-uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, const double *u, float out[4],
-                      float dds[4], float ddt[4], sample_stats *st)
+void ls_fp_feline_setup(const sample_ctx *c, const sample_query *q, float call_bias, fp_aniso_setup *a,
+                        fp_probe_set *set)
 {
     const struct sample_level *B = &c->tex->level[c->base];
-    const fp_bilinear_fn bilinear = ctx_readers(c)->bilinear;
-    double J[2][2], ux, uy, s0, s1, spread, lb, f, sw = 0.0, w[FP_FELINE_MAX_PROBES];
-    double acc[4] = {0, 0, 0, 0}, as[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
+    double J[2][2], ux, uy, s0, s1, lb, z, vp, R0, R1, h0, h1;
     fp_shape sh;
-    float lam, ff;
-    int h, k, l0, l1;
-    uint32_t texels = 0;
+    int m0, m1, i, j, n = 0;
 
     J[0][0] = (double)q->dsdx * B->w;
     J[0][1] = (double)q->dsdy * B->w;
@@ -90,65 +92,55 @@ uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bia
     s0 = sh.s[0];
     s1 = sh.s[1];
     major_axis(J, s0 * s0, &ux, &uy);
-    spread = 0.5 * sqrt(fp_pos(s0 * s0 - s1 * s1));
-    /* h = ⌈2s/σ1⌉ − 1 in [0, 15]; a NaN, infinite or zero footprint is one
-     * probe (its value then decided by the level clamps, as trilinear's). */
-    h = 0;
-    if (s1 > 0.0 && 2.0 * spread / s1 < (FP_FELINE_MAX_PROBES + 1) / 2) h = (int)fp_ceil(2.0 * spread / s1) - 1;
-    else if (s1 > 0.0 && spread < INFINITY) h = (FP_FELINE_MAX_PROBES - 1) / 2;
-    if (h < 0) h = 0;
-    lb = sample_log2(s1);
-    lam = lod_lambda(c, lb < -1e4 ? -1e4f : (lb > 1e4 ? 1e4f : (float)lb), call_bias);
-    ls_lod_split(c, lam, &l0, &l1, &ff);
-    if (ff == 0.0f) l1 = l0;
-    f = ff;
-    for (k = -h; k <= h; ++k) {
-        const double r = (double)k / (h + 1);
-        w[k + h] = fp_ewa_weight(r * r, NULL);
-        sw += w[k + h];
-    }
+    lb = sample_log2(s1) - 0.5;
+    a->lam = lod_lambda(c, lb < -1e4 ? -1e4f : (lb > 1e4 ? 1e4f : (float)lb), call_bias);
+    ls_lod_split(c, a->lam, &a->l0, &a->l1, &a->f);
+    a->l1 = a->l0; /* one level: the probes' spread makes up its width */
+    a->f = 0.0f;
+    a->ms = a->mt = 0.0;
+    a->set = set;
+    z = exp2((double)(a->l0 - c->base));
+    vp = 0.25 * z * z;
+    R0 = sqrt(fp_pos(s0 * s0 / 6.0 - vp) / FELINE_VAR);
+    R1 = sqrt(fp_pos(s1 * s1 / 6.0 - vp) / FELINE_VAR);
+    m0 = axis_steps(R0, z, FELINE_M0, &h0);
+    m1 = axis_steps(R1, z, FELINE_M1, &h1);
+    set->sw = 0.0;
+    for (j = -m1; j <= m1; ++j)
+        for (i = -m0; i <= m0; ++i) {
+            const double x = m0 ? i * h0 / R0 : 0.0, y = m1 ? j * h1 / R1 : 0.0, r2 = x * x + y * y;
+            const double du = i * h0 * ux - j * h1 * uy, dv = i * h0 * uy + j * h1 * ux;
+            if (!(r2 < 1.0)) continue;
+            set->w[n] = fp_ewa_weight(r2, NULL);
+            set->s[n] = (float)(q->s + du / B->w);
+            set->t[n] = (float)(q->t + dv / B->h);
+            set->sw += set->w[n];
+            ++n;
+        }
+    a->n = n;
+}
+
+uint32_t ls_fp_feline(const sample_ctx *c, const sample_query *q, float call_bias, const double *u, float out[4],
+                      float dds[4], float ddt[4], sample_stats *st)
+{
+    const fp_bilinear_fn bilinear = ctx_readers(c)->bilinear;
+    fp_aniso_setup a;
+    fp_probe_set set;
+    uint32_t texels;
+    ls_fp_feline_setup(c, q, call_bias, &a, &set);
     if (u) {
-        /* One probe, drawn with probability w_k/Σw (stratified in u), its
-         * level with its blend weight: one bilinear read. */
-        double v = *u * sw, cum = 0.0;
-        float ps, pt;
-        for (k = 0; k < 2 * h; ++k) {
-            if (v < cum + w[k]) break;
-            cum += w[k];
+        /* One probe, drawn with probability w_k/Σw: one bilinear read
+         * (the probes share one level). */
+        const double v = *u * set.sw;
+        double cum = 0.0;
+        int k;
+        for (k = 0; k < a.n - 1; ++k) {
+            if (v < cum + set.w[k]) break;
+            cum += set.w[k];
         }
-        v = (v - cum) / w[k];
-        if (!(v >= 0.0 && v < 1.0)) v = 0.0;
-        probe_at(q, B, 2.0 * spread * (double)(k - h) / (h + 1), ux, uy, &ps, &pt);
-        if (l1 != l0 && ls_stochastic_pick2(f, &v)) l0 = l1;
-        l1 = l0;
-        texels = bilinear(c, l0, ps, pt, out, NULL, NULL);
+        texels = bilinear(c, a.l0, set.s[k], set.t[k], out, NULL, NULL);
     } else
-        for (k = -h; k <= h; ++k) {
-            const double d = 2.0 * spread * (double)k / (h + 1);
-            float ps, pt, o0[4], ds0[4], dt0[4], o1[4], ds1[4], dt1[4];
-            probe_at(q, B, d, ux, uy, &ps, &pt);
-            texels += bilinear(c, l0, ps, pt, o0, dds ? ds0 : NULL, ddt ? dt0 : NULL);
-            if (l1 != l0) {
-                texels += bilinear(c, l1, ps, pt, o1, dds ? ds1 : NULL, ddt ? dt1 : NULL);
-            } else {
-                memcpy(o1, o0, sizeof o1);
-                if (dds) memcpy(ds1, ds0, sizeof ds1);
-                if (ddt) memcpy(dt1, dt0, sizeof dt1);
-            }
-            weighted_add(acc, w[k + h], f, o0, o1);
-            if (dds) weighted_add(as, w[k + h], f, ds0, ds1);
-            if (ddt) weighted_add(at, w[k + h], f, dt0, dt1);
-        }
-    if (!u) {
-        store_mean(out, acc, sw);
-        store_mean(dds, as, sw);
-        store_mean(ddt, at, sw);
-    }
-    if (st) {
-        st->level0 = (int16_t)l0;
-        st->level1 = (int16_t)(l1 != l0 ? l1 : -1);
-        st->level_frac = l1 != l0 ? ff : 0.0f;
-        st->lod = lam;
-    }
+        texels = fp_aniso_probes(c, q, &a, bilinear, out, dds, ddt);
+    if (st) fp_aniso_stats(&a, st);
     return texels;
 }

@@ -137,9 +137,9 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
     ls_ctx_init(&c, tex, smp, tex_resident(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
     ticket = tex_reads_begin(tex);
-    /* Feline and stochastic queries have no fast-path kernels: they run
-     * the reference path (the same reads; doc/footprint-filters.md). */
-    if (fast && smp->footprint != SAMPLE_FOOTPRINT_FELINE && !a->u)
+    /* Stochastic queries have no fast-path kernels: they run the
+     * reference path (the same reads; doc/footprint-filters.md). */
+    if (fast && !a->u)
         fast(&c, a);
     else
         reference_batch(&c, a);
