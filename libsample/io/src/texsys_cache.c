@@ -431,6 +431,10 @@ sample_status io_ts_file_source_init(ts_file *f, sample_error *err)
     f->h.base.destroy = ts_source_destroy;
     f->h.base.reads_begin = io_ts_reads_begin;
     f->h.base.reads_end = io_ts_reads_end;
+    /* ts_texel's layout: every tile is side × side texels, row after row,
+     * at the level's edge too, so the fast path addresses within it
+     * (texel.h, tile_side). */
+    f->h.base.tile_side = side;
     memcpy(f->h.base.fill, f->h.sys->o.fill, sizeof f->h.base.fill);
     for (lv = 0; lv < f->tex->nlevels; ++lv) {
         const struct sample_level *L = &f->tex->level[lv];
