@@ -184,25 +184,23 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
  * bilinear blocks in 64² tiles), wrapped, or in a tile the source lacks
  * (texel() NULL: the fill colour) — is read texel by texel through the
  * source (TAPS_SOURCE, tap_v4), which is what the reference path reads. */
-static void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb, int prefetch,
-                       fast_taps *tp)
+SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb,
+                                    int prefetch, fast_taps *tp)
 {
     const struct ls_texel_source *src = c->tex->source;
     const int side = src->tile_side, m = side - 1, x0 = tp->col[0] & m;
+    const unsigned char *p;
     int k;
-    if (in && x0 + n <= side && (y[0] & m) + n <= side) {
-        const unsigned char *p = src->texel(src, lv, tp->col[0], y[0], 0);
-        if (p) {
-            const size_t rs = (size_t)side * tb;
-            p -= (size_t)x0 * tb; /* the start of the block's first row in the tile */
-            for (k = 0; k < n; ++k, p += rs) {
-                tp->col[k] = x0 + k;
-                tp->row[k] = p;
-                if (prefetch) prefetch_run(p, x0, x0 + n - 1, n, tb);
-            }
-            tp->inside = 1;
-            return;
+    if (in && x0 + n <= side && (y[0] & m) + n <= side && (p = src->texel(src, lv, tp->col[0], y[0], 0))) {
+        const size_t rs = (size_t)side * tb;
+        p -= (size_t)x0 * tb; /* the start of the block's first row in the tile */
+        for (k = 0; k < n; ++k, p += rs) {
+            tp->col[k] = x0 + k;
+            tp->row[k] = p;
+            if (prefetch) prefetch_run(p, x0, x0 + n - 1, n, tb);
         }
+        tp->inside = 1;
+        return;
     }
     tp->inside = TAPS_SOURCE;
     for (k = 0; k < n; ++k) tp->ry[k] = y[k];
