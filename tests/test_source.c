@@ -76,21 +76,9 @@ static void test_tiled_same_bits(void)
                 CHECK(sample_texture_tiled_copy(tex, tiles[tl], &tiled, &err) == SAMPLE_OK, "tiled copy: %s",
                       err.message);
                 /* The nine OpenGL filters, then anisotropic, Blinn–Newell and EWA. */
-                for (filt = 0; filt < SAMPLE_FILTER_COUNT + 3; ++filt) {
+                for (filt = 0; filt < KIND_SAMPLERS; ++filt) {
                     sample_sampler s;
-                    sample_sampler_init(&s);
-                    s.wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-                    s.wrap_t = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-                    s.mag_filter = rnd() % 3 == 0 ? SAMPLE_NEAREST : (rnd() & 1 ? SAMPLE_LINEAR : SAMPLE_CUBIC);
-                    s.border_color[0] = 0.25f;
-                    s.border_color[3] = 0.5f;
-                    if (filt < SAMPLE_FILTER_COUNT) {
-                        s.min_filter = (sample_filter)filt;
-                    } else {
-                        s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
-                        s.footprint = (sample_footprint)(filt - SAMPLE_FILTER_COUNT + 1);
-                        s.max_anisotropy = 16.0f;
-                    }
+                    kind_sampler(&s, filt);
                     fill_queries(configs & 1);
                     sample_some(tex, &s, 0, !(configs & 2), 0);
                     sample_some(tiled, &s, 1, !(configs & 2), 0);
@@ -149,24 +137,6 @@ static void test_missing_tile_reads_fill(void)
     sample_texture_destroy(tex);
 }
 
-/* Sampler k of the twelve kinds (nine OpenGL filters, anisotropic ×16,
- * Blinn–Newell, EWA), random wraps and mag filter. */
-static void kind_sampler(sample_sampler *s, int k)
-{
-    sample_sampler_init(s);
-    s->wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-    s->wrap_t = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-    s->mag_filter = rnd() % 3 == 0 ? SAMPLE_NEAREST : (rnd() & 1 ? SAMPLE_LINEAR : SAMPLE_CUBIC);
-    s->border_color[2] = 0.75f;
-    if (k < SAMPLE_FILTER_COUNT) {
-        s->min_filter = (sample_filter)k;
-    } else {
-        s->min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
-        s->footprint = (sample_footprint)(k - SAMPLE_FILTER_COUNT + 1);
-        s->max_anisotropy = 16.0f;
-    }
-}
-
 /* Tiles missing on levels 0 and 1 (their texels the fill colour): the fast
  * path, which reads blocks in a missing tile and blocks across tile edges
  * through the source, gives the reference path's bits for every format,
@@ -183,9 +153,9 @@ static void test_missing_tiles_fast_path(void)
                       sample_texture_tile_drop(tiled, 0, 3, 0, fill) == SAMPLE_OK &&
                       sample_texture_tile_drop(tiled, 1, 0, 0, fill) == SAMPLE_OK,
                   "drop");
-            for (k = 0; k < 2 * (SAMPLE_FILTER_COUNT + 3); ++k) {
+            for (k = 0; k < 2 * KIND_SAMPLERS; ++k) {
                 sample_sampler s;
-                kind_sampler(&s, k % (SAMPLE_FILTER_COUNT + 3));
+                kind_sampler(&s, k % KIND_SAMPLERS);
                 fill_queries(k & 1);
                 sample_some(tiled, &s, 0, k & 2, 1);
                 sample_some(tiled, &s, 1, k & 2, 0);
