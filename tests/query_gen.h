@@ -91,4 +91,26 @@ static inline sample_texture *make_texture(sample_format f, int nc, int w, int h
     return tex;
 }
 
+/* Sampler k of the twelve kinds of filtering: the nine OpenGL filters,
+ * then anisotropic ×16, Blinn–Newell and EWA; random wrap modes and mag
+ * filter, a border colour no texel has. */
+#define KIND_SAMPLERS (SAMPLE_FILTER_COUNT + 3)
+static inline void kind_sampler(sample_sampler *s, int k)
+{
+    sample_sampler_init(s);
+    s->wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
+    s->wrap_t = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
+    s->mag_filter = rnd() % 3 == 0 ? SAMPLE_NEAREST : (rnd() & 1 ? SAMPLE_LINEAR : SAMPLE_CUBIC);
+    s->border_color[0] = 0.25f;
+    s->border_color[1] = 0.5f;
+    s->border_color[3] = 0.5f;
+    if (k < SAMPLE_FILTER_COUNT) {
+        s->min_filter = (sample_filter)k;
+    } else {
+        s->min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+        s->footprint = (sample_footprint)(k - SAMPLE_FILTER_COUNT + 1);
+        s->max_anisotropy = 16.0f;
+    }
+}
+
 #endif /* TESTS_QUERY_GEN_H */

@@ -6,11 +6,15 @@
  * values, derivatives and stats — for every format × channel count, wrap
  * mode, OpenGL filter and footprint filter, on tiles of 1, 4 and 8 texels
  * a side over levels that end in partial tiles. A tile the source cannot
- * supply reads as its fill colour: exact values by hand.
+ * supply reads as its fill colour: exact values by hand, and the fast
+ * path's reads of a source with missing tiles the reference path's bits.
+ * The fast path addresses a block inside one tile with one texel() call
+ * (texel.h, tile_side): counted.
  */
 #include "check.h"
 #include "query_gen.h"
 #include "sample/testing.h"
+#include "texel.h" /* struct ls_texel_source: texel() calls counted */
 
 enum { NQ = 160 };
 
@@ -18,7 +22,10 @@ static sample_query qs[NQ];
 static float rgba[2][NQ * 4], dds[2][NQ * 4], ddt[2][NQ * 4];
 static sample_stats stats[2][NQ];
 
-static void sample_all(const sample_texture *tex, const sample_sampler *s, int k)
+/* Results slot k: values, derivatives and stats (`all`), or values alone
+ * (the fast path then reads anisotropic probes from addresses planned
+ * ahead, fast_gl.c aniso_read); through the reference path if `ref`. */
+static void sample_some(const sample_texture *tex, const sample_sampler *s, int k, int all, int ref)
 {
     sample_batch_args a;
     memset(&a, 0, sizeof a);
@@ -29,11 +36,12 @@ static void sample_all(const sample_texture *tex, const sample_sampler *s, int k
     a.count = NQ;
     a.queries = qs;
     a.rgba = rgba[k];
-    a.drgba_ds = dds[k];
-    a.drgba_dt = ddt[k];
-    a.stats = stats[k];
-    CHECK(sample_batch(tex, s, &a) == SAMPLE_OK, "sample_batch");
+    a.drgba_ds = all ? dds[k] : NULL;
+    a.drgba_dt = all ? ddt[k] : NULL;
+    a.stats = all ? stats[k] : NULL;
+    CHECK((ref ? sample_batch_reference(tex, s, &a) : sample_batch(tex, s, &a)) == SAMPLE_OK, "sample_batch");
 }
+
 
 static int same_results(void)
 {
@@ -68,24 +76,12 @@ static void test_tiled_same_bits(void)
                 CHECK(sample_texture_tiled_copy(tex, tiles[tl], &tiled, &err) == SAMPLE_OK, "tiled copy: %s",
                       err.message);
                 /* The nine OpenGL filters, then anisotropic, Blinn–Newell and EWA. */
-                for (filt = 0; filt < SAMPLE_FILTER_COUNT + 3; ++filt) {
+                for (filt = 0; filt < KIND_SAMPLERS; ++filt) {
                     sample_sampler s;
-                    sample_sampler_init(&s);
-                    s.wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-                    s.wrap_t = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-                    s.mag_filter = rnd() % 3 == 0 ? SAMPLE_NEAREST : (rnd() & 1 ? SAMPLE_LINEAR : SAMPLE_CUBIC);
-                    s.border_color[0] = 0.25f;
-                    s.border_color[3] = 0.5f;
-                    if (filt < SAMPLE_FILTER_COUNT) {
-                        s.min_filter = (sample_filter)filt;
-                    } else {
-                        s.min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
-                        s.footprint = (sample_footprint)(filt - SAMPLE_FILTER_COUNT + 1);
-                        s.max_anisotropy = 16.0f;
-                    }
+                    kind_sampler(&s, filt);
                     fill_queries(configs & 1);
-                    sample_all(tex, &s, 0);
-                    sample_all(tiled, &s, 1);
+                    sample_some(tex, &s, 0, !(configs & 2), 0);
+                    sample_some(tiled, &s, 1, !(configs & 2), 0);
                     ++configs;
                     if (!same_results()) {
                         if (++fails <= 10)
@@ -141,6 +137,93 @@ static void test_missing_tile_reads_fill(void)
     sample_texture_destroy(tex);
 }
 
+/* Tiles missing on levels 0 and 1 (their texels the fill colour): the fast
+ * path, which reads blocks in a missing tile and blocks across tile edges
+ * through the source, gives the reference path's bits for every format,
+ * filter and wrap, with and without derivatives. */
+static void test_missing_tiles_fast_path(void)
+{
+    static const float fill[4] = {0.125f, 2.0f, -1.0f, 0.5f};
+    int f, nc, k, configs = 0, fails = 0;
+    for (f = 0; f < SAMPLE_FORMAT_COUNT; ++f)
+        for (nc = 1; nc <= 4; ++nc) {
+            sample_texture *tex = make_texture((sample_format)f, nc, 37, 23), *tiled = NULL;
+            CHECK(sample_texture_tiled_copy(tex, 2 + (nc & 1), &tiled, NULL) == SAMPLE_OK, "tiled copy");
+            CHECK(sample_texture_tile_drop(tiled, 0, 1, 1, fill) == SAMPLE_OK &&
+                      sample_texture_tile_drop(tiled, 0, 3, 0, fill) == SAMPLE_OK &&
+                      sample_texture_tile_drop(tiled, 1, 0, 0, fill) == SAMPLE_OK,
+                  "drop");
+            for (k = 0; k < 2 * KIND_SAMPLERS; ++k) {
+                sample_sampler s;
+                kind_sampler(&s, k % KIND_SAMPLERS);
+                fill_queries(k & 1);
+                sample_some(tiled, &s, 0, k & 2, 1);
+                sample_some(tiled, &s, 1, k & 2, 0);
+                ++configs;
+                if (!same_results() && ++fails <= 10)
+                    fprintf(stderr, "missing tiles differ: %s x%d, filter %s footprint %s, wraps %s %s\n",
+                            sample_format_name((sample_format)f), nc, sample_filter_name(s.min_filter),
+                            sample_footprint_name(s.footprint), sample_wrap_name(s.wrap_s),
+                            sample_wrap_name(s.wrap_t));
+            }
+            sample_texture_destroy(tiled);
+            sample_texture_destroy(tex);
+        }
+    CHECK(fails == 0, "%d of %d configurations differ between the fast and the reference path", fails, configs);
+}
+
+/* The texel() calls of the texture under test, through a wrapper of its
+ * source's hook. */
+static const unsigned char *(*inner_texel)(const struct ls_texel_source *, int, int, int, int);
+static unsigned long texel_calls;
+static const unsigned char *counted_texel(const struct ls_texel_source *src, int lv, int i, int j, int layer)
+{
+    ++texel_calls;
+    return inner_texel(src, lv, i, j, layer);
+}
+
+/* A 64 × 64 texture in tiles of 8 (tile_side 8): bilinear reads whose
+ * 2 × 2 block lies in one tile cost one texel() call on the fast path (the
+ * block is addressed in the tile), four on the reference path; a block
+ * across a tile's edge four on both; the same bits. */
+static void test_one_call_per_block(void)
+{
+    sample_texture *tex = make_texture(SAMPLE_FORMAT_F16, 4, 64, 64), *tiled = NULL;
+    sample_sampler s;
+    int i;
+    CHECK(sample_texture_tiled_copy(tex, 3, &tiled, NULL) == SAMPLE_OK, "tiled copy");
+    CHECK(tiled->source->tile_side == 8, "tile side %d", tiled->source->tile_side);
+    inner_texel = tiled->source->texel;
+    tiled->source->texel = counted_texel;
+    sample_sampler_init(&s);
+    s.min_filter = s.mag_filter = SAMPLE_LINEAR;
+    /* Query i at texel coordinates (x + 0.75, y + 0.25) (after the −½:
+     * block (x, y) … (x + 1, y + 1)): x, y ≤ 6 inside a tile, 7 across. */
+    for (i = 0; i < NQ; ++i) {
+        int x = 8 * (i % 8) + (i % 7), y = 8 * ((i / 8) % 8) + (i % 5);
+        memset(&qs[i], 0, sizeof qs[i]);
+        qs[i].s = ((float)x + 0.75f) / 64.0f;
+        qs[i].t = ((float)y + 0.75f) / 64.0f;
+    }
+    texel_calls = 0;
+    sample_some(tiled, &s, 0, 1, 1);
+    CHECK(texel_calls == 4 * NQ, "reference path: %lu texel() calls for %d blocks", texel_calls, NQ);
+    texel_calls = 0;
+    sample_some(tiled, &s, 1, 1, 0);
+    CHECK(texel_calls == NQ, "fast path: %lu texel() calls for %d blocks inside a tile", texel_calls, NQ);
+    CHECK(same_results(), "fast and reference paths differ");
+    for (i = 0; i < NQ; ++i) qs[i].s = (8.0f * (float)(i % 8) + 7.75f) / 64.0f; /* columns 7 and 8: across */
+    texel_calls = 0;
+    sample_some(tiled, &s, 1, 1, 0);
+    CHECK(texel_calls == 4 * NQ, "fast path: %lu texel() calls for %d blocks across a tile's edge", texel_calls,
+          NQ);
+    sample_some(tiled, &s, 0, 1, 1);
+    CHECK(same_results(), "fast and reference paths differ across tile edges");
+    tiled->source->texel = inner_texel;
+    sample_texture_destroy(tiled);
+    sample_texture_destroy(tex);
+}
+
 static void test_bad_arguments(void)
 {
     sample_texture *out = (sample_texture *)&out;
@@ -162,6 +245,8 @@ int main(void)
 {
     RUN(test_tiled_same_bits);
     RUN(test_missing_tile_reads_fill);
+    RUN(test_missing_tiles_fast_path);
+    RUN(test_one_call_per_block);
     RUN(test_bad_arguments);
     return check_finish();
 }

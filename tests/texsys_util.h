@@ -58,23 +58,8 @@ static inline void ts_queries(sample_query *q, size_t n)
     }
 }
 
-/* Sampler number k of the 12 kinds of filtering: the nine OpenGL filters,
- * then anisotropic ×16, Blinn–Newell and EWA. */
-static inline void ts_sampler(sample_sampler *s, int k)
-{
-    sample_sampler_init(s);
-    s->wrap_s = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-    s->wrap_t = (sample_wrap)(rnd() % SAMPLE_WRAP_COUNT);
-    s->mag_filter = rnd() % 3 == 0 ? SAMPLE_NEAREST : (rnd() & 1 ? SAMPLE_LINEAR : SAMPLE_CUBIC);
-    s->border_color[1] = 0.5f;
-    if (k < SAMPLE_FILTER_COUNT) {
-        s->min_filter = (sample_filter)k;
-    } else {
-        s->min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
-        s->footprint = (sample_footprint)(k - SAMPLE_FILTER_COUNT + 1);
-        s->max_anisotropy = 16.0f;
-    }
-}
-#define TS_KINDS (SAMPLE_FILTER_COUNT + 3)
+/* Sampler number k of the 12 kinds of filtering (query_gen.h). */
+#define ts_sampler kind_sampler
+#define TS_KINDS KIND_SAMPLERS
 
 #endif

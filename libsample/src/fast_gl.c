@@ -59,13 +59,23 @@
 #endif
 
 /* Texel addresses and fractions of one query on one level: taps
- * (col[x], row[y]) for x, y < 1, 2 or 4 (NEAREST, LINEAR, CUBIC). */
+ * (col[x], row[y]) for x, y < 1, 2 or 4 (NEAREST, LINEAR, CUBIC). A
+ * texture in tiles (texel.h, tile_side) has its taps in one tile, rows a
+ * tile's row apart and col[] within the tile, or read through the source
+ * (TAPS_SOURCE: col[] and ry[] the level's texel indices). */
 typedef struct fast_taps {
-    const unsigned char *row[4]; /* NULL: the row reads the border colour */
+    union {
+        const unsigned char *row[4]; /* NULL: the row reads the border colour */
+        int ry[4];                   /* TAPS_SOURCE: row index; −1: the border colour */
+    };
     int col[4];                  /* texel index; −1: the border colour */
     float fu, fv;                /* α, β: the fractional parts (eq. 8.13) */
-    int inside;                  /* every tap inside the level: no border */
+    int inside;                  /* 1: every tap inside the level (and tile), no
+                                  * border; 0: rows and columns; TAPS_SOURCE */
 } fast_taps;
+
+/* fast_taps.inside of taps read texel by texel through the source. */
+#define TAPS_SOURCE (-1)
 
 enum { PLAN_GL, PLAN_BORDER, PLAN_ANISO, PLAN_FOOTPRINT };
 
@@ -78,10 +88,16 @@ enum { PLAN_GL, PLAN_BORDER, PLAN_ANISO, PLAN_FOOTPRINT };
  * (8 floats: one AVX register, two SSE ones). */
 #define ANISO_LANES 8
 
+/* Blocks of a texture in tiles that cross a tile's edge, copied (at most
+ * this many per query): a 2 × 2 block of texels of at most 16 bytes. */
+#define ANISO_SCRATCH 8
+
 typedef struct aniso_taps {
     int n; /* probes addressed; 0: fp_aniso_probes reads the query */
     const unsigned char *p[2][ANISO_TAPS_MAX]; /* each block's first texel on l0, l1 */
+    size_t stride[2][ANISO_TAPS_MAX];          /* and the bytes from its first row to its second */
     float fu[2][ANISO_TAPS_MAX], fv[2][ANISO_TAPS_MAX];
+    unsigned char scratch[ANISO_SCRATCH][4 * 16];
 } aniso_taps;
 
 typedef uint32_t (*aniso_fn)(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an,
@@ -162,6 +178,36 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
     }
 }
 
+/* Taps of a texture whose source holds its levels in tiles (texel.h,
+ * tile_side), their indices col[] (the level's) and y[] made: an n × n
+ * block inside the level (`in`) and inside one tile is addressed in that
+ * tile (one texel() call; rows T texels apart) and then read exactly as a
+ * resident level's block; any other — across a tile's edge (about 3 % of
+ * bilinear blocks in 64² tiles), wrapped, or in a tile the source lacks
+ * (texel() NULL: the fill colour) — is read texel by texel through the
+ * source (TAPS_SOURCE, tap_v4), which is what the reference path reads. */
+SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb,
+                                    int prefetch, fast_taps *tp)
+{
+    const struct ls_texel_source *src = c->tex->source;
+    const int side = src->tile_side, m = side - 1, x0 = tp->col[0] & m;
+    const unsigned char *p;
+    int k;
+    if (in && x0 + n <= side && (y[0] & m) + n <= side && (p = src->texel(src, lv, tp->col[0], y[0], 0))) {
+        const size_t rs = (size_t)side * tb;
+        p -= (size_t)x0 * tb; /* the start of the block's first row in the tile */
+        for (k = 0; k < n; ++k, p += rs) {
+            tp->col[k] = x0 + k;
+            tp->row[k] = p;
+            if (prefetch) prefetch_run(p, x0, x0 + n - 1, n, tb);
+        }
+        tp->inside = 1;
+        return;
+    }
+    tp->inside = TAPS_SOURCE;
+    for (k = 0; k < n; ++k) tp->ry[k] = y[k];
+}
+
 /* Addresses of one query on level lv (ls_recon_level's coordinate rules) and,
  * if `prefetch`, prefetches of the lines they touch: the first and last
  * byte of each row's run cover it when the run is contiguous, as it almost
@@ -185,7 +231,14 @@ SAMPLE_FORCE_INLINE void plan_level(const sample_ctx *c, int lv, sample_filter k
     }
     tp->inside = axis_index(c->smp->wrap_s, i0, L->w, n, first, kind != SAMPLE_NEAREST, tp->col);
     if (axis_index(c->smp->wrap_t, j0, L->h, n, first, kind != SAMPLE_NEAREST, y)) {
-        taps_rows_inside(L, y[0], n, tb, prefetch, tp);
+        if (SAMPLE_LIKELY(tex_resident(c->tex)))
+            taps_rows_inside(L, y[0], n, tb, prefetch, tp);
+        else
+            plan_tiles(c, lv, n, tp->inside, y, tb, prefetch, tp);
+        return;
+    }
+    if (!tex_resident(c->tex)) {
+        plan_tiles(c, lv, n, 0, y, tb, prefetch, tp);
         return;
     }
     tp->inside = 0;
@@ -293,6 +346,25 @@ SAMPLE_FORCE_INLINE v4f fetch(const sample_ctx *c, sample_format fmt, int nc, si
     return texel_v4(fmt, nc, row + (size_t)col * tb);
 }
 
+/* Tap (x, y) of taps read through the source (TAPS_SOURCE): the border
+ * colour where the wrap says so, else the texel as the reference path
+ * reads it (tex_read_at: the fill colour where the source has none). */
+static SAMPLE_NOINLINE v4f source_tap(const sample_ctx *c, int lv, int x, int y)
+{
+    float v[4];
+    if (x < 0 || y < 0) return v4_load(c->border);
+    tex_read_at(c->tex, c->tex->source->texel(c->tex->source, lv, x, y, 0), v);
+    return v4_load(v);
+}
+
+/* Tap (col[x], row[y]) of planned taps, from wherever they are. */
+SAMPLE_FORCE_INLINE v4f tap_v4(const sample_ctx *c, sample_format fmt, int nc, size_t tb, int lv,
+                               const fast_taps *tp, int x, int y)
+{
+    if (SAMPLE_LIKELY(tp->inside != TAPS_SOURCE)) return fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]);
+    return source_tap(c, lv, tp->col[x], tp->ry[y]);
+}
+
 /* ls_recon_level on planned taps. Returns the texels read. */
 SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, int nc, size_t tb,
                                  sample_filter kind, int lv, const fast_taps *tp, float out[4],
@@ -301,23 +373,23 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
     const struct sample_level *L = &c->tex->level[lv];
     uint32_t n;
     if (kind == SAMPLE_NEAREST) {
-        v4_store(out, fetch(c, fmt, nc, tb, tp->row[0], tp->col[0]));
+        v4_store(out, tap_v4(c, fmt, nc, tb, lv, tp, 0, 0));
         if (dds) v4_store(dds, v4_set1(0.0f));
         if (ddt) v4_store(ddt, v4_set1(0.0f));
         return 1;
     }
     if (kind == SAMPLE_LINEAR) {
-        if (tp->inside) {
+        if (tp->inside > 0) {
             /* Most queries: the 2 × 2 block lies in the level (its rows
-             * are then consecutive, plan_level). */
-            bilerp_block(fmt, nc, tp->row[0] + (size_t)tp->col[0] * tb, L->stride, tp->fu, tp->fv,
-                         out, dds, ddt);
+             * are then consecutive, plan_level), or in one tile. */
+            bilerp_block(fmt, nc, tp->row[0] + (size_t)tp->col[0] * tb, (size_t)(tp->row[1] - tp->row[0]),
+                         tp->fu, tp->fv, out, dds, ddt);
         } else {
             v4f T[4];
-            T[0] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[0]);
-            T[1] = fetch(c, fmt, nc, tb, tp->row[0], tp->col[1]);
-            T[2] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[0]);
-            T[3] = fetch(c, fmt, nc, tb, tp->row[1], tp->col[1]);
+            T[0] = tap_v4(c, fmt, nc, tb, lv, tp, 0, 0);
+            T[1] = tap_v4(c, fmt, nc, tb, lv, tp, 1, 0);
+            T[2] = tap_v4(c, fmt, nc, tb, lv, tp, 0, 1);
+            T[3] = tap_v4(c, fmt, nc, tb, lv, tp, 1, 1);
             recon_bilerp(T, tp->fu, tp->fv, out, dds, ddt);
         }
         n = 4;
@@ -327,13 +399,13 @@ SAMPLE_FORCE_INLINE uint32_t run_level(const sample_ctx *c, sample_format fmt, i
         int x, y;
         ls_cubic_weights(c->smp->cubic, tp->fu, wx, dwx);
         ls_cubic_weights(c->smp->cubic, tp->fv, wy, dwy);
-        if (tp->inside) {
-            /* The 4 × 4 block lies in the level: each row's four texels
-             * are adjacent (plan_level), read as a level row. */
+        if (tp->inside > 0) {
+            /* The 4 × 4 block lies in the level (or a tile): each row's
+             * four texels are adjacent (plan_level), read as a level row. */
             for (y = 0; y < 4; ++y) decode_row(fmt, nc, tp->row[y] + (size_t)tp->col[0] * tb, tb, 4, T + 4 * y);
         } else {
             for (y = 0; y < 4; ++y)
-                for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], fetch(c, fmt, nc, tb, tp->row[y], tp->col[x]));
+                for (x = 0; x < 4; ++x) v4_store(T[4 * y + x], tap_v4(c, fmt, nc, tb, lv, tp, x, y));
         }
         ls_recon_cubic_combine(T, wx, wy, dwx, dwy, (c->smp->options & SAMPLE_OPT_CUBIC_CLAMP) != 0, tp->fu,
                                tp->fv, out, dds, ddt);
@@ -503,7 +575,7 @@ SAMPLE_FORCE_INLINE void plan_taps_block(const sample_ctx *c, const sample_query
     size_t k = 0;
 #if SAMPLE_VEC_AVX2
     if ((fmt == SAMPLE_FORMAT_F32 || fmt == SAMPLE_FORMAT_F16) && !wrap_transforms_coord(c->smp->wrap_s) &&
-        !wrap_transforms_coord(c->smp->wrap_t))
+        !wrap_transforms_coord(c->smp->wrap_t) && tex_resident(c->tex))
         for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, pl + k);
 #else
     (void)fmt;
@@ -623,13 +695,52 @@ SAMPLE_FORCE_INLINE float keep_if(float x, int in)
     return x;
 }
 
+/* aniso_address's blocks (ii[k], jj[k]), k < n, on level lv of a texture
+ * in tiles (texel.h, tile_side), as `which` (0: l0, 1: l1) of at: a block
+ * inside one tile where it is (one texel() call), one across a tile's
+ * edge copied texel by texel into at->scratch (rows 2 texels apart), the
+ * same bytes, so bilerp_block reads the same values either way. Returns 0
+ * where a block lies in a tile the source lacks (its fill colour is not
+ * a texel of this format) or the scratch is full: fp_aniso_probes then
+ * reads the query (plan_tiles, texel by texel where needed). */
+static int aniso_address_tiles(const sample_ctx *c, int lv, int n, const int *ii, const int *jj, size_t tb,
+                               int which, int *used, aniso_taps *at)
+{
+    const struct ls_texel_source *src = c->tex->source;
+    const int side = src->tile_side, m = side - 1;
+    const size_t rs = (size_t)side * tb;
+    int k, d;
+    for (k = 0; k < n; ++k) {
+        const unsigned char *p;
+        if ((ii[k] & m) + 2 <= side && (jj[k] & m) + 2 <= side) {
+            if (!(p = src->texel(src, lv, ii[k], jj[k], 0))) return 0;
+            at->p[which][k] = p;
+            at->stride[which][k] = rs;
+            SAMPLE_PREFETCH(p);
+            SAMPLE_PREFETCH(p + rs);
+            SAMPLE_PREFETCH(p + 2 * tb - 1);
+            SAMPLE_PREFETCH(p + rs + 2 * tb - 1);
+            continue;
+        }
+        if (*used == ANISO_SCRATCH) return 0;
+        for (d = 0; d < 4; ++d) {
+            if (!(p = src->texel(src, lv, ii[k] + (d & 1), jj[k] + (d >> 1), 0))) return 0;
+            memcpy(at->scratch[*used] + (size_t)d * tb, p, tb);
+        }
+        at->p[which][k] = at->scratch[*used];
+        at->stride[which][k] = 2 * tb;
+        ++*used;
+    }
+    return 1;
+}
+
 static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_aniso_setup *an, size_t tb,
                          aniso_taps *at)
 {
     float s[ANISO_TAPS_MAX], t[ANISO_TAPS_MAX];
     int ii[ANISO_TAPS_MAX], jj[ANISO_TAPS_MAX];
     const int n = an->n, lanes = (n + ANISO_LANES - 1) / ANISO_LANES * ANISO_LANES;
-    int lv, k, b0;
+    int lv, k, b0, used = 0;
     at->n = 0;
     if (n > (an->set ? FP_PROBES_MAX : ANISO_FAST_PROBES) || wrap_transforms_coord(c->smp->wrap_s) ||
         wrap_transforms_coord(c->smp->wrap_t))
@@ -667,9 +778,14 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
          * test for a line asked for already (prefetch_run): which lines
          * repeat depends on the data, and the branches mispredicted so
          * often that the query took 45 % longer (measured: doc/history/performance-passes.md). */
+        if (!tex_resident(c->tex)) {
+            if (!aniso_address_tiles(c, lv ? an->l1 : an->l0, n, ii, jj, tb, lv, &used, at)) return 0;
+            continue;
+        }
         for (k = 0; k < n; ++k) {
             const unsigned char *p = L->data + (size_t)jj[k] * L->stride + (size_t)ii[k] * tb;
             at->p[lv][k] = p;
+            at->stride[lv][k] = L->stride;
             SAMPLE_PREFETCH(p);
             SAMPLE_PREFETCH(p + L->stride);
             SAMPLE_PREFETCH(p + 2 * tb - 1);
@@ -684,15 +800,15 @@ static int aniso_address(const sample_ctx *c, const sample_query *q, const fp_an
 SAMPLE_FORCE_INLINE uint32_t aniso_read(const sample_ctx *c, sample_format fmt, int nc,
                                         const fp_aniso_setup *an, const aniso_taps *at, float out[4])
 {
-    const size_t st0 = c->tex->level[an->l0].stride, st1 = c->tex->level[an->l1].stride;
     const int two = an->l1 != an->l0;
     double acc[4] = {0, 0, 0, 0};
     int k;
+    (void)c;
     for (k = 0; k < at->n; ++k) {
         float o0[4], o1[4];
-        bilerp_block(fmt, nc, at->p[0][k], st0, at->fu[0][k], at->fv[0][k], o0, NULL, NULL);
+        bilerp_block(fmt, nc, at->p[0][k], at->stride[0][k], at->fu[0][k], at->fv[0][k], o0, NULL, NULL);
         if (two)
-            bilerp_block(fmt, nc, at->p[1][k], st1, at->fu[1][k], at->fv[1][k], o1, NULL, NULL);
+            bilerp_block(fmt, nc, at->p[1][k], at->stride[1][k], at->fu[1][k], at->fv[1][k], o1, NULL, NULL);
         else
             memcpy(o1, o0, sizeof o1);
         if (an->set)

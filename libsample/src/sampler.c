@@ -131,10 +131,11 @@ sample_status sample_batch(const sample_texture *tex, const sample_sampler *smp,
     sample_status st = batch_check(tex, smp, a, &run);
     if (!run) return st;
     /* The instruction set is chosen here, once per batch. The fast path
-     * forms texel addresses from resident levels; a texture with another
-     * texel source runs the reference loop, whose results are the fast
-     * path's bit for bit (texel.h, struct ls_texel_source). */
-    ls_ctx_init(&c, tex, smp, tex_resident(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
+     * forms texel addresses from resident levels or within a source's
+     * tiles; a texture with another texel source runs the reference loop,
+     * whose results are the fast path's bit for bit (texel.h, struct
+     * ls_texel_source). */
+    ls_ctx_init(&c, tex, smp, tex_addressable(tex) ? ls_isa_kernels_active() : &ls_isa_kernels_reference);
     fast = c.isa->fast_gl[tex->format][tex->channels - 1];
     ticket = tex_reads_begin(tex);
     /* Stochastic queries have no fast-path kernels: they run the

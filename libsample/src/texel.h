@@ -21,9 +21,10 @@
  * filters do not change with the source: every texel read goes through
  * tex_texel (below), and the only readers that form addresses themselves
  * (the fast path's planners, the footprint filters' in-level spans, the
- * prefetches) do so for resident textures alone; sample_batch runs any
- * other texture through the reference loop, whose answers are the fast
- * path's bit for bit. */
+ * prefetches) do so for resident textures, and for a source that declares
+ * its tiles (tile_side), in a tile; sample_batch runs any other texture
+ * through the reference loop, whose answers are the fast path's bit for
+ * bit. */
 struct ls_texel_source {
     const unsigned char *(*texel)(const struct ls_texel_source *src, int lv, int i, int j, int layer);
     void (*destroy)(struct ls_texel_source *src); /* with the texture */
@@ -35,6 +36,15 @@ struct ls_texel_source {
      * two, every pointer texel() handed out stays valid. */
     uintptr_t (*reads_begin)(const struct ls_texel_source *src);
     void (*reads_end)(const struct ls_texel_source *src, uintptr_t ticket);
+    /* 0, or the side T (a power of two) of the square tiles the source
+     * holds each level in: texels [tx·T, tx·T + T) × [ty·T, ty·T + T) lie
+     * in one array, row after row, rows T texels apart (a tile past the
+     * level's edge keeps that shape), so the pointer texel() returns for
+     * one texel of a tile addresses every texel of that tile, valid as
+     * long as that pointer is. The fast path's planners then read a 2 × 2
+     * or 4 × 4 block inside one tile as a resident level's block, with one
+     * texel() call (fast_gl.c, plan_tiles; doc/architecture.md). */
+    int tile_side;
     float fill[4];
 };
 
@@ -130,6 +140,14 @@ SAMPLE_FORCE_INLINE v4f tex_decode_v4(sample_format format, int nc, const unsign
     default:
         return v4_set(0.0f, 0.0f, 0.0f, 1.0f);
     }
+}
+
+/* Whether the fast path's planners can address the texture's texels: a
+ * resident texture, or a source in tiles of tile_side (struct
+ * ls_texel_source). */
+static inline int tex_addressable(const sample_texture *tex)
+{
+    return tex->source == NULL || tex->source->tile_side > 0;
 }
 
 /* Texel (i, j) of a resident level (its first layer). */

@@ -100,6 +100,7 @@ sample_status sample_texture_tiled_copy(const sample_texture *tex, int tile_log2
     }
     t->base.texel = tiled_texel;
     t->base.destroy = tiled_destroy;
+    t->base.tile_side = 1 << tile_log2; /* tiled_texel's layout (texel.h) */
     t->log2 = tile_log2;
     t->texel_bytes = tex->texel_bytes;
     copy->source = &t->base;

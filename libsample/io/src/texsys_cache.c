@@ -63,11 +63,20 @@ static void note_memory(sample_texsys *sys)
 /* ---- Epochs ----------------------------------------------------------------
  * A batch takes the current epoch as its ticket. A tile evicted during epoch
  * g can be read only by batches holding tickets ≤ g (a batch with a later
- * ticket began after the eviction emptied its slot, both under sys->lock).
- * The epoch moves from g to g + 1 once no batch holds ticket g − 1; the
- * tiles evicted during g − 1 are then freed. So two parities suffice, as in
- * the two-counter form of read-copy-update (McKenney, "Sleepable RCU",
- * 2006). Called with sys->lock held. */
+ * ticket read the epoch after the eviction emptied its slot, and the epoch
+ * moves under sys->lock after that). The epoch moves from g to g + 1 once
+ * no batch holds ticket g − 1; the tiles evicted during g − 1 are then
+ * freed. So two parities suffice, as in the two-counter form of
+ * read-copy-update (McKenney, "Sleepable RCU", 2006).
+ *
+ * A batch counts itself without the lock (io_ts_reads_begin): it adds
+ * itself to the count of its ticket's parity and checks that the epoch is
+ * still its ticket, else takes itself back out and tries again; all of
+ * these sequentially consistent, so an advance that could free what the
+ * batch reads sees its count. Where the working set fits the cache nothing
+ * is ever retired, and batches on many threads share no lock
+ * (retired_any: a batch's end takes the lock only to advance the epochs
+ * past retired tiles). The functions below run with sys->lock held. */
 static void free_retired(sample_texsys *sys, int parity)
 {
     ts_tile *t, *next;
@@ -81,34 +90,40 @@ static void free_retired(sample_texsys *sys, int parity)
 
 static void ts_advance(sample_texsys *sys)
 {
-    const int old = (int)((sys->epoch + 1) & 1); /* parity of epoch − 1 */
-    if (sys->active[old] != 0) return;
+    const uint64_t epoch = atomic_load(&sys->epoch);
+    const int old = (int)((epoch + 1) & 1); /* parity of epoch − 1 */
+    if (atomic_load(&sys->active[old]) != 0) return;
     free_retired(sys, old);
-    sys->epoch++;
-    /* No batch at all: nothing evicted can be held. */
-    if (sys->active[0] + sys->active[1] == 0) {
+    atomic_store(&sys->epoch, epoch + 1);
+    /* No batch at all: nothing evicted can be held (a batch that counts
+     * itself from now on finds the new epoch and holds no retired tile). */
+    if (atomic_load(&sys->active[0]) + atomic_load(&sys->active[1]) == 0) {
         free_retired(sys, 0);
         free_retired(sys, 1);
     }
+    atomic_store(&sys->retired_any, sys->retired[0] != NULL || sys->retired[1] != NULL);
     note_memory(sys);
 }
 
 uintptr_t io_ts_reads_begin(const struct ls_texel_source *src)
 {
     sample_texsys *sys = ((const ts_head *)src)->sys;
-    uint64_t ticket;
-    pthread_mutex_lock(&sys->lock);
-    ticket = sys->epoch;
-    sys->active[ticket & 1]++;
-    pthread_mutex_unlock(&sys->lock);
-    return (uintptr_t)ticket;
+    for (;;) {
+        const uint64_t ticket = atomic_load(&sys->epoch);
+        atomic_fetch_add(&sys->active[ticket & 1], 1);
+        if (atomic_load(&sys->epoch) == ticket) return (uintptr_t)ticket;
+        atomic_fetch_sub(&sys->active[ticket & 1], 1);
+    }
 }
 
 void io_ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket)
 {
     sample_texsys *sys = ((const ts_head *)src)->sys;
+    atomic_fetch_sub(&sys->active[ticket & 1], 1);
+    /* Every eviction happens inside a batch, whose own end then sees the
+     * flag. */
+    if (!atomic_load(&sys->retired_any)) return;
     pthread_mutex_lock(&sys->lock);
-    sys->active[ticket & 1]--;
     ts_advance(sys);
     pthread_mutex_unlock(&sys->lock);
 }
@@ -159,8 +174,9 @@ static void ts_evict_one(sample_texsys *sys)
     atomic_store_explicit(&t->file->slots[t->lv][t->slot], NULL, memory_order_release);
     sys->resident -= t->bytes;
     sys->retired_bytes += t->bytes;
-    t->retired = sys->retired[sys->epoch & 1];
-    sys->retired[sys->epoch & 1] = t;
+    t->retired = sys->retired[atomic_load(&sys->epoch) & 1];
+    sys->retired[atomic_load(&sys->epoch) & 1] = t;
+    atomic_store(&sys->retired_any, 1);
     sys->st.evictions++;
 }
 
@@ -431,6 +447,10 @@ sample_status io_ts_file_source_init(ts_file *f, sample_error *err)
     f->h.base.destroy = ts_source_destroy;
     f->h.base.reads_begin = io_ts_reads_begin;
     f->h.base.reads_end = io_ts_reads_end;
+    /* ts_texel's layout: every tile is side × side texels, row after row,
+     * at the level's edge too, so the fast path addresses within it
+     * (texel.h, tile_side). */
+    f->h.base.tile_side = side;
     memcpy(f->h.base.fill, f->h.sys->o.fill, sizeof f->h.base.fill);
     for (lv = 0; lv < f->tex->nlevels; ++lv) {
         const struct sample_level *L = &f->tex->level[lv];

@@ -105,8 +105,12 @@ struct sample_texsys {
     ts_tile *hand; /* the clock's hand; NULL: no tile resident */
     size_t resident, retired_bytes;
     ts_tile *retired[2];     /* tiles evicted in epochs of each parity */
-    uint64_t epoch;          /* batches begun now get this ticket */
-    unsigned long active[2]; /* running batches, by ticket parity */
+    /* The epochs (texsys_cache.c): a batch takes its ticket and counts
+     * itself without the lock; the epoch moves, and retired_any changes,
+     * under it. */
+    _Atomic uint64_t epoch;    /* batches begun now get this ticket */
+    atomic_ulong active[2];    /* running batches, by ticket parity */
+    atomic_int retired_any;    /* a retired list is not empty */
     uint64_t clock;          /* open-file recency */
     int open_files;
     sample_texsys_stats st;
