@@ -18,6 +18,7 @@
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 #include "backend.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,6 +40,11 @@ typedef struct store_file {
     sample_wrap wrap_s, wrap_t;
     oiio_ts_tex *handle;
     int refs; /* prepared textures using it */
+    /* The texture last prepared on it: while refs > 0 that texture is
+     * alive (a prepared texture is released before its texture is
+     * destroyed) and unchanged (libsample's textures are immutable), so
+     * the same pointer with the same key holds the same texels. */
+    const sample_texture *src;
 } store_file;
 
 struct tool_oiio_store {
@@ -99,16 +105,22 @@ static oiio_ts_format file_format(const tool_oiio_store *s, const sample_texture
     }
 }
 
-/* The values OpenImageIO's file stores for texel (linear RGBA, in place):
- * an 8-bit sRGB texture's codes / 255 (the colour channels encoded again:
- * sample_linear_to_srgb inverts the exact decoding within far less than
- * half a code step, so the codes come back as stored; alpha is linear,
- * GL 4.6 §8.24); oiio_ts_make_texture rounds value·255 to the code. */
+/* The values OpenImageIO's file is made from for texel (linear RGBA, in
+ * place): for an 8-bit texture its codes / 255 exactly — an sRGB
+ * texture's colour channels encoded again first (sample_linear_to_srgb
+ * inverts the exact decoding within far less than half a code step, so the
+ * codes come back as stored; alpha is linear, GL 4.6 §8.24). Exact
+ * quotients matter beyond the base level: make_texture's 2 × 2 box
+ * averages land on half codes, where a rounding error would pick the
+ * other code. */
 static void file_values(sample_format fmt, oiio_ts_format ofmt, float rgba[4])
 {
     int c;
-    if (ofmt != OIIO_TS_UINT8 || fmt != SAMPLE_FORMAT_SRGB8) return;
-    for (c = 0; c < 3; ++c) rgba[c] = sample_linear_to_srgb(rgba[c]);
+    if (ofmt != OIIO_TS_UINT8) return;
+    for (c = 0; c < 4; ++c) {
+        float v = c < 3 && fmt == SAMPLE_FORMAT_SRGB8 ? sample_linear_to_srgb(rgba[c]) : rgba[c];
+        rgba[c] = floorf(v * 255.0f + 0.5f) / 255.0f;
+    }
 }
 
 static void file_drop(store_file *f)
@@ -209,6 +221,15 @@ static store_file *store_get(tool_oiio_store *s, const sample_texture *tex, cons
     key.fmt = file_format(s, &info, env);
     key.wrap_s = env ? SAMPLE_WRAP_REPEAT : smp->wrap_s;
     key.wrap_t = env ? SAMPLE_WRAP_REPEAT : smp->wrap_t;
+    key.src = tex;
+    /* A texture another row holds: no need to read its texels again (a
+     * timing prepares a row per measurement on a texture of millions). */
+    for (k = 0; k < STORE_FILES; ++k) {
+        store_file *c = &s->file[k];
+        if (c->refs > 0 && c->src == tex && c->env == env && c->fmt == key.fmt &&
+            c->wrap_s == key.wrap_s && c->wrap_t == key.wrap_t)
+            return c;
+    }
     bytes = sizeof *key.rgba * 4 * (size_t)key.w * (size_t)key.h;
     if (!(key.rgba = malloc(bytes))) {
         snprintf(err, errlen, "out of memory for a %d x %d texture", key.w, key.h);
@@ -225,6 +246,7 @@ static store_file *store_get(tool_oiio_store *s, const sample_texture *tex, cons
         if (c->rgba && c->w == key.w && c->h == key.h && c->env == env && c->fmt == key.fmt &&
             c->wrap_s == key.wrap_s && c->wrap_t == key.wrap_t && memcmp(c->rgba, key.rgba, bytes) == 0) {
             free(key.rgba);
+            c->src = tex;
             return c;
         }
     }

@@ -175,6 +175,7 @@ int bench_env(const bench_env_opts *o)
     sample_query3 *q = malloc(o->queries * sizeof *q);
     tool_oiio_store *store = NULL;
     bench_texture tl = {.ours = NULL}, tc = {.ours = NULL};
+    bench_row held = {NULL, NULL};
     char err[512];
     int neng = env_engines(o->filters, o->oiio, eng, ENV_MAX_ENGINES), set, e, rc = EXIT_OK;
     if (neng < 0) {
@@ -196,6 +197,16 @@ int bench_env(const bench_env_opts *o)
         if (!store) fprintf(stderr, "texsample bench: %s\n", err);
         rc = cli_runtime_error("bench", "OpenImageIO's environment map could not be made (--no-oiio leaves it out)");
     }
+    /* One OpenImageIO row held for the whole run, so that each timed
+     * measurement's prepare finds the map's file by the texture it holds
+     * (tools/backends/oiio.c) instead of reading the map's texels again. */
+    for (e = 0; e < neng && rc == EXIT_OK && store; ++e)
+        if (eng[e].oiio) {
+            if (bench_row_prepare(&eng[e], &tl, &held) != 0)
+                rc = cli_runtime_error("bench", "OpenImageIO's environment map could not be made (--no-oiio "
+                                                "leaves it out)");
+            break;
+        }
     printf("environment maps: lat-long %d x %d, cube %d x %d faces; %zu queries a set, median of %d runs, samples/s\n",
            o->size, o->size / 2, o->size / 4 > 0 ? o->size / 4 : 1, o->size / 4 > 0 ? o->size / 4 : 1, o->queries,
            o->runs);
@@ -217,6 +228,7 @@ int bench_env(const bench_env_opts *o)
                    eng[e].env == BENCH_ENV_CUBE ? "cube" : "latlong", one.median, all.median);
         }
     }
+    bench_row_release(&held);
     bench_engines_close(eng, neng);
     tool_oiio_store_close(store);
     sample_texture_destroy(ll);
