@@ -105,22 +105,50 @@ static oiio_ts_format file_format(const tool_oiio_store *s, const sample_texture
     }
 }
 
+/* An sRGB texture's 256 decodings (sample_srgb_to_linear, which the
+ * texture's exact decoding matches within an ulp, far less than half a gap
+ * between codes) and, for each of SRGB_BUCKETS equal steps of [0, 1], the
+ * last code whose decoding lies at or below the step's start: a value's
+ * code is then a step or two past its bucket's. */
+enum { SRGB_BUCKETS = 1024 };
+typedef struct srgb_codes {
+    float lin[256];
+    unsigned char first[SRGB_BUCKETS];
+} srgb_codes;
+
+static void srgb_codes_init(srgb_codes *t)
+{
+    int b, c = 0;
+    for (b = 0; b < 256; ++b) t->lin[b] = sample_srgb_to_linear((float)b / 255.0f);
+    for (b = 0; b < SRGB_BUCKETS; ++b) {
+        while (c < 255 && t->lin[c + 1] <= (float)b / SRGB_BUCKETS) ++c;
+        t->first[b] = (unsigned char)c;
+    }
+}
+
+/* The code whose decoding is nearest v, over 255. */
+static float srgb_code(const srgb_codes *t, float v)
+{
+    float x = v * SRGB_BUCKETS;
+    int lo = t->first[x <= 0.0f ? 0 : x >= SRGB_BUCKETS - 1 ? SRGB_BUCKETS - 1 : (int)x], hi;
+    while (lo < 255 && t->lin[lo + 1] <= v) ++lo;
+    hi = lo < 255 ? lo + 1 : 255;
+    return (float)(v - t->lin[lo] <= t->lin[hi] - v ? lo : hi) / 255.0f;
+}
+
 /* The values OpenImageIO's file is made from for texel (linear RGBA, in
  * place): for an 8-bit texture its codes / 255 exactly — an sRGB
- * texture's colour channels encoded again first (sample_linear_to_srgb
- * inverts the exact decoding within far less than half a code step, so the
- * codes come back as stored; alpha is linear, GL 4.6 §8.24). Exact
- * quotients matter beyond the base level: make_texture's 2 × 2 box
- * averages land on half codes, where a rounding error would pick the
- * other code. */
-static void file_values(sample_format fmt, oiio_ts_format ofmt, float rgba[4])
+ * texture's colour channels by the code whose decoding is nearest, its
+ * alpha linear (GL 4.6 §8.24). Exact quotients matter beyond the base
+ * level: make_texture's 2 × 2 box averages land on half codes, where a
+ * rounding error would pick the other code. */
+static void file_values(sample_format fmt, oiio_ts_format ofmt, const srgb_codes *t, float rgba[4])
 {
     int c;
     if (ofmt != OIIO_TS_UINT8) return;
-    for (c = 0; c < 4; ++c) {
-        float v = c < 3 && fmt == SAMPLE_FORMAT_SRGB8 ? sample_linear_to_srgb(rgba[c]) : rgba[c];
-        rgba[c] = floorf(v * 255.0f + 0.5f) / 255.0f;
-    }
+    for (c = 0; c < 4; ++c)
+        rgba[c] = c < 3 && fmt == SAMPLE_FORMAT_SRGB8 ? srgb_code(t, rgba[c])
+                                                      : floorf(rgba[c] * 255.0f + 0.5f) / 255.0f;
 }
 
 static void file_drop(store_file *f)
@@ -175,9 +203,11 @@ static int file_write(tool_oiio_store *s, store_file *f, const sample_texture *t
                       size_t errlen)
 {
     /* OpenImageIO 2.4's TIFF writer cannot hold half, nor OpenEXR 8-bit
-     * (oiio_ts.h): .exr for float and half, .tx (TIFF) for 8-bit. */
+     * (oiio_ts.h): in the texture's own format .tx (TIFF, as maketx
+     * writes) for float and 8-bit, .exr for half; float files otherwise
+     * .exr. */
     snprintf(f->path, sizeof f->path, "%s/%s%u.%s", s->dir, f->env ? "environment" : "texture",
-             s->serial++, f->fmt == OIIO_TS_UINT8 ? "tx" : "exr");
+             s->serial++, s->native && !f->env && f->fmt != OIIO_TS_HALF ? "tx" : "exr");
     if (f->env) {
 #ifdef TEXSAMPLE_HAVE_IO
         sample_io_exr_options o;
@@ -211,6 +241,7 @@ static store_file *store_get(tool_oiio_store *s, const sample_texture *tex, cons
 {
     sample_texture_info info;
     store_file key, *f = NULL;
+    srgb_codes codes;
     size_t bytes;
     int i, j, k;
     sample_texture_info_get(tex, &info);
@@ -235,11 +266,12 @@ static store_file *store_get(tool_oiio_store *s, const sample_texture *tex, cons
         snprintf(err, errlen, "out of memory for a %d x %d texture", key.w, key.h);
         return NULL;
     }
+    if (info.format == SAMPLE_FORMAT_SRGB8 && key.fmt == OIIO_TS_UINT8) srgb_codes_init(&codes);
     for (j = 0; j < key.h; ++j)
         for (i = 0; i < key.w; ++i) {
             float *p = key.rgba + ((size_t)j * (size_t)key.w + (size_t)i) * 4;
             sample_texture_texel(tex, 0, i, j, p);
-            file_values(info.format, key.fmt, p);
+            file_values(info.format, key.fmt, &codes, p);
         }
     for (k = 0; k < STORE_FILES; ++k) {
         store_file *c = &s->file[k];

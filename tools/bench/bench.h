@@ -61,7 +61,7 @@ typedef enum bench_format {
 } bench_format;
 
 extern const char *const bench_format_names[BENCH_FMT_COUNT];
-/* OIIO's file for each format as --save names it ("bench_float.exr"). */
+/* OIIO's file for each format as --save names it ("bench_float.tx"). */
 extern const char *const bench_oiio_file_names[BENCH_FMT_COUNT];
 
 /* One format of the synthetic texture. OpenImageIO's rows read the file

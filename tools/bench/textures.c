@@ -21,7 +21,7 @@ const char *const bench_format_names[BENCH_FMT_COUNT] = {
 /* As OpenImageIO's backend writes them: OIIO 2.4's TIFF writer cannot hold
  * half, nor OpenEXR 8-bit (oiio_ts.h). */
 const char *const bench_oiio_file_names[BENCH_FMT_COUNT] = {
-    [BENCH_FMT_F32] = "bench_float.exr",
+    [BENCH_FMT_F32] = "bench_float.tx",
     [BENCH_FMT_F16] = "bench_half.exr",
     [BENCH_FMT_SRGB8] = "bench_srgb8.tx",
 };
