@@ -57,7 +57,7 @@ static const char help[] =
     "                     (sample_batch_reference), to measure the fast path\n"
     "  --tmpdir DIR       where OIIO's texture files are written (default $TMPDIR\n"
     "                     or /tmp); they are removed at the end (--save keeps\n"
-    "                     them in its directory instead)\n"
+    "                     copies in its directory)\n"
     "  --json FILE        also write the results as JSON ('-': stdout, no table)\n"
     "  --save DIR         keep what was timed in DIR (created if missing): each\n"
     "                     set's queries (queries_SET.bin, little-endian float32\n"
