@@ -16,7 +16,8 @@
  *     gives sample_batch's values bit for bit, stochastic draws and
  *     texel counts included; a backend without `run` (a program) answers
  *     a plain 2D batch and is n/a with the reason for direction queries,
- *     stochastic draws and environment maps.
+ *     stochastic draws and environment maps; libsample's backend over a
+ *     caller's batch function passes its context.
  *
  *   backends TEXSAMPLE EXAMPLE_DIR OUT_DIR
  *
@@ -280,6 +281,15 @@ static void test_program(void)
     unsetenv("TEXSAMPLE_PROGRAM_TIMEOUT");
 }
 
+/* A batch function with a context (tool_backend_libsample_ctx): counts
+ * its calls in *ctx. */
+static sample_status counted_batch(void *ctx, const sample_texture *t, const sample_sampler *s,
+                                   const sample_batch_args *a)
+{
+    ++*(int *)ctx;
+    return sample_batch(t, s, a);
+}
+
 static void test_interface(void)
 {
     enum { N = 64 };
@@ -293,7 +303,7 @@ static void test_interface(void)
     float u[N], got[4 * N], ref[4 * N];
     double texels = 0.0, sum = 0.0;
     char err[512], cmd[1200];
-    int k;
+    int k, calls = 0;
     sampler_of("ewa", SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT, &s);
     for (k = 0; k < N; ++k) u[k] = (float)k / N;
     CHECK(tool_backend_libsample(&lib, NULL) == 0 && lib.thread_safe && lib.counts_texels, "libsample");
@@ -317,6 +327,23 @@ static void test_interface(void)
     CHECK(sample_batch(tex, &s, &want) == SAMPLE_OK, "sample_batch");
     for (k = 0; k < N; ++k) sum += st_want[k].texels;
     CHECK(memcmp(got, ref, sizeof got) == 0 && texels == sum, "texels %g, want %g", texels, sum);
+    tool_backend_release(&lib, x);
+    tool_backend_close(&lib);
+
+    /* libsample through a caller's batch function and its context (bench
+     * --cache-mb: a texture system's): the function's values and context,
+     * direction queries n/a. */
+    CHECK(tool_backend_libsample_ctx(&lib, counted_batch, &calls, "counted") == 0 &&
+              strstr(lib.driver, "counted") && lib.thread_safe,
+          "libsample with a context: %s", lib.driver);
+    CHECK(tool_backend_prepare(&lib, tex, &s, &x, NULL, err, sizeof err) == 0, "%s", err);
+    tool_backend_batch_init(&a, N, queries, NULL, got, NULL);
+    CHECK(tool_backend_run(&lib, x, &a, NULL, err, sizeof err) == 0 && calls == 1, "%s", err);
+    CHECK(memcmp(got, ref, sizeof got) == 0, "the context's batch as sample_batch");
+    tool_backend_batch_init(&a, 1, NULL, q3, got, NULL);
+    CHECK(tool_backend_run(&lib, x, &a, NULL, err, sizeof err) == TOOL_BACKEND_NA &&
+              strstr(err, "no direction or volume queries") && calls == 1,
+          "direction queries: %s", err);
     tool_backend_release(&lib, x);
     tool_backend_close(&lib);
 

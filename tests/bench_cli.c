@@ -5,7 +5,8 @@
  * exact texel counts of the filters whose cost is fixed (nearest 1,
  * bilinear 4, bicubic 16 on every query), and ratios exactly where an OIIO
  * twin exists; the instruction set it ran on (LIBSAMPLE_ISA) in the table
- * and the JSON; a tiny --env run's table; and a tiny --volume run (a row
+ * and the JSON (libsample's rows through --cache-mb's texture system on
+ * OpenImageIO's file of each format); a tiny --env run's table; and a tiny --volume run (a row
  * per filter, texel counts of nearest 1 and trilinear 16, OpenImageIO's two
  * texture3d rows). No speed is asserted.
  */
@@ -80,11 +81,18 @@ static void tiny_json(void)
     char *text;
     cJSON *root, *res, *x;
     int n = 0, rc;
+    /* With --cache-mb: libsample's rows through a texture system that
+     * opened OpenImageIO's file of each format, beside OIIO's rows on it. */
     rc = run("--quick --size 32 --queries 300 --runs 1 --threads 2 --batch 64 "
-             "--sets magnify,plane --formats float,srgb8 --json r.json");
+             "--sets magnify,plane --formats float,srgb8 --cache-mb 0.05 --json r.json");
     CHECK(rc == 0, "tiny run exits 0 (got %d)", rc);
     text = check_slurp_in(dir, "out.txt");
     CHECK(text && strstr(text, "\nlibsample ISA: ") != NULL, "the table names the instruction set");
+    free(text);
+    text = check_slurp_in(dir, "err.txt");
+    CHECK(text && strstr(text, "libsample cache: tiles read ") && !strstr(text, "tiles read 0,") &&
+              strstr(strstr(text, "libsample cache: ") + 1, "libsample cache: "),
+          "each format's texture system read tiles: %s", text ? text : "");
     free(text);
     text = check_slurp_in(dir, "r.json");
     CHECK(text != NULL, "r.json written");

@@ -2,8 +2,8 @@
  * The bench's timer (tools/bench/timing.c) as `bench` uses it: engines'
  * 1-thread passes taking turns (cmd_bench.c, measure), a pool of two
  * threads, and the failure paths — a pass past the runs asked for, a
- * timer closed early, an engine whose warm-up fails (OIIO here, linked
- * without OpenImageIO). Under ASan and LeakSanitizer in CI, so a timer
+ * timer closed early, an engine whose row cannot be prepared (OIIO here,
+ * linked without OpenImageIO). Under ASan and LeakSanitizer in CI, so a timer
  * that leaks threads or memory on any path fails. No speed is asserted.
  */
 #include "bench_no_oiio.h"
@@ -41,8 +41,8 @@ static void taking_turns(void)
     int r;
     CHECK(a && b, "bench has trilinear and ewa");
     if (!a || !b) return;
-    ta = bench_timer_open(a, &t, NULL, q, N, 1, 3, 64);
-    tb = bench_timer_open(b, &t, NULL, q, N, 1, 3, 64);
+    ta = bench_timer_open(a, &t, q, N, 1, 3, 64);
+    tb = bench_timer_open(b, &t, q, N, 1, 3, 64);
     CHECK(ta && tb, "timers open (warm-up passes ran)");
     for (r = 0; r < 3; ++r) {
         CHECK(bench_timer_pass(ta) == 0, "trilinear pass %d", r);
@@ -61,16 +61,18 @@ static void pool_and_failures(void)
     bench_timing r2, early;
     bench_timer *tm;
     memset(&early, 0, sizeof early);
-    CHECK(bench_time(a, &t, NULL, q, N, 2, 3, 16, &r2) == 0 && timing_ok(&r2, 3), "two threads, three runs");
-    tm = bench_timer_open(a, &t, NULL, q, N, 2, 4, 16);
+    CHECK(bench_time(a, &t, q, N, 2, 3, 16, &r2) == 0 && timing_ok(&r2, 3), "two threads, three runs");
+    tm = bench_timer_open(a, &t, q, N, 2, 4, 16);
     CHECK(tm && bench_timer_pass(tm) == 0, "one pass of four");
     CHECK(bench_timer_close(tm, &early) == -1 && early.runs == 0, "closed after 1 of 4 passes: no timing");
-    CHECK(bench_timer_open(a, &t, NULL, q, N, 1, 0, 16) == NULL, "zero runs refused");
-    CHECK(bench_timer_open(a, &t, NULL, q, N, 0, 3, 16) == NULL, "zero threads refused");
+    CHECK(bench_timer_open(a, &t, q, N, 1, 0, 16) == NULL, "zero runs refused");
+    CHECK(bench_timer_open(a, &t, q, N, 0, 3, 16) == NULL, "zero threads refused");
     CHECK(o != NULL, "bench has OIIO's bilinear");
     if (o) {
-        fprintf(stderr, "(the next line is the expected OIIO failure)\n");
-        CHECK(bench_timer_open(o, &t, NULL, q, N, 2, 3, 16) == NULL, "a failing warm-up fails the open");
+        fprintf(stderr, "(the next two lines are the expected OIIO failures)\n");
+        CHECK(bench_engines_open_oiio(eng, neng, NULL) == -1 && !o->backend,
+              "OIIO's backends cannot open without OpenImageIO");
+        CHECK(bench_timer_open(o, &t, q, N, 2, 3, 16) == NULL, "a row that cannot be prepared fails the open");
     }
     CHECK(bench_timer_close(NULL, &early) == -1, "closing nothing");
 }

@@ -4,18 +4,24 @@
  * orientation: t = 0 is the first stored row in both), bilinear
  * magnification of the base level agrees within a float rounding bound,
  * the wrap modes map to their OpenGL equivalents, and the formats round
- * the same way. The texture file goes to the working directory (ctest
- * runs each test in the build tree) and is removed afterwards.
+ * the same way. OpenImageIO's backend (tools/backends/oiio.c) writes a
+ * texture's own format where asked (bench) and float otherwise (compare,
+ * freq), and opens an existing file as it is. The texture files go to the
+ * working directory (ctest runs each test in the build tree) and are
+ * removed afterwards.
  */
 #define _POSIX_C_SOURCE 200809L
+#include "backend.h"
 #include "check.h"
 #include "oiio_ts.h"
 #include "sample/sample.h"
 
 #include <float.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 enum { W = 16, H = 8, NQ = 2000 };
@@ -56,7 +62,7 @@ static sample_texture *make_ours(sample_format fmt)
     if (fmt == SAMPLE_FORMAT_F16) {
         for (k = 0; k < W * H * 4; ++k) half[k] = sample_float_to_half(texels[k]);
         img.data = half;
-    } else if (fmt == SAMPLE_FORMAT_UNORM8) {
+    } else if (fmt == SAMPLE_FORMAT_UNORM8 || fmt == SAMPLE_FORMAT_SRGB8) {
         for (k = 0; k < W * H * 4; ++k) u8[k] = (unsigned char)(texels[k] * 255.0f + 0.5f);
         img.data = u8;
     }
@@ -204,6 +210,100 @@ static void unsupported(void)
     CHECK(oiio_ts_mode_parse("nope") == -1, "parse unknown");
 }
 
+/* Every texel centre of a W × H texture, OpenImageIO's closest through
+ * backend b on x, into out (W·H·4). */
+static void backend_texels(tool_backend *b, tool_backend_tex *x, float *out)
+{
+    static sample_query q[W * H];
+    tool_backend_batch a;
+    char err[256] = "";
+    int i, j;
+    for (j = 0; j < H; ++j)
+        for (i = 0; i < W; ++i)
+            q[j * W + i] = (sample_query){(i + 0.5f) / W, (j + 0.5f) / H, 1.0f / W, 0, 0, 1.0f / H};
+    tool_backend_batch_init(&a, W * H, q, NULL, out, NULL);
+    CHECK(tool_backend_run(b, x, &a, NULL, err, sizeof err) == 0, "backend run: %s", err);
+}
+
+static int ends_with(const char *s, const char *tail)
+{
+    size_t n = strlen(s), m = strlen(tail);
+    return n >= m && strcmp(s + n - m, tail) == 0;
+}
+
+/* The backend's files: a native-format store gives OpenImageIO an sRGB
+ * texture's stored codes (read as code/255, up to the ulp closest_exact
+ * allows) and a half texture's halves; the default store the decoded
+ * floats. A texture a row holds is found again; an existing file is
+ * opened as it is; a wrap mode without an equivalent is n/a. */
+static void backend_files(void)
+{
+    static const sample_format fmts[] = {SAMPLE_FORMAT_SRGB8, SAMPLE_FORMAT_F16};
+    static float nat[W * H * 4], flt[W * H * 4], again[W * H * 4];
+    tool_oiio_store *sn, *sf;
+    tool_backend bn, bf;
+    oiio_ts_opts o;
+    sample_sampler smp;
+    char err[256] = "";
+    int f, k;
+    sn = tool_oiio_store_open_in(0.0, ".", err, sizeof err);
+    sf = tool_oiio_store_open_in(0.0, ".", err, sizeof err);
+    CHECK(sn && sf, "stores: %s", err);
+    if (!sn || !sf) return;
+    tool_oiio_store_native_formats(sn);
+    oiio_ts_opts_init(&o);
+    o.mode = OIIO_TS_CLOSEST;
+    CHECK(tool_backend_oiio_open(&bn, sn, &o, err, sizeof err) == 0 &&
+          tool_backend_oiio_open(&bf, sf, &o, err, sizeof err) == 0, "open: %s", err);
+    sample_sampler_init(&smp);
+    for (f = 0; f < 2; ++f) {
+        sample_texture *tex = make_ours(fmts[f]);
+        tool_backend_tex *xn = NULL, *xf = NULL, *x2 = NULL;
+        int srgb = fmts[f] == SAMPLE_FORMAT_SRGB8, far = 0;
+        if (!tex) continue;
+        CHECK(tool_backend_prepare(&bn, tex, &smp, &xn, NULL, err, sizeof err) == 0 &&
+              tool_backend_prepare(&bf, tex, &smp, &xf, NULL, err, sizeof err) == 0, "prepare: %s", err);
+        if (!xn || !xf) continue;
+        CHECK(ends_with(tool_oiio_file(xn), srgb ? ".tx" : ".exr") && ends_with(tool_oiio_file(xf), ".exr"),
+              "file names %s %s", tool_oiio_file(xn), tool_oiio_file(xf));
+        backend_texels(&bn, xn, nat);
+        backend_texels(&bf, xf, flt);
+        for (k = 0; k < W * H * 4; ++k) {
+            float dec[4], code = (float)(unsigned char)(texels[k] * 255.0f + 0.5f) / 255.0f;
+            sample_texture_texel(tex, 0, (k / 4) % W, k / 4 / W, dec);
+            if (srgb)
+                CHECK(fabsf(nat[k] - code) <= FLT_EPSILON, "srgb8 texel %d: %.9g, code/255 %.9g", k, nat[k], code);
+            else
+                CHECK(nat[k] == dec[k % 4], "half texel %d: %.9g, stored %.9g", k, nat[k], dec[k % 4]);
+            CHECK(flt[k] == dec[k % 4], "float file texel %d: %.9g, decoded %.9g", k, flt[k], dec[k % 4]);
+            far += fabsf(nat[k] - flt[k]) > 1e-3f;
+        }
+        CHECK(srgb ? far > 0 : far == 0, "%d texels apart between the native and the float file", far);
+        CHECK(tool_backend_prepare(&bn, tex, &smp, &x2, NULL, err, sizeof err) == 0 && x2 &&
+              strcmp(tool_oiio_file(x2), tool_oiio_file(xn)) == 0, "the held texture's file again");
+        if (x2) tool_backend_release(&bn, x2);
+        x2 = NULL;
+        CHECK(tool_backend_oiio_prepare_file(&bf, tool_oiio_file(xn), &smp, &x2, err, sizeof err) == 0,
+              "existing file: %s", err);
+        if (x2) {
+            backend_texels(&bf, x2, again);
+            CHECK(memcmp(again, nat, sizeof nat) == 0, "the existing file read as it is");
+            tool_backend_release(&bf, x2);
+        }
+        smp.wrap_s = SAMPLE_WRAP_MIRROR_CLAMP_TO_EDGE;
+        CHECK(tool_backend_oiio_prepare_file(&bf, tool_oiio_file(xn), &smp, &x2, err, sizeof err) ==
+                      TOOL_BACKEND_NA && strstr(err, "mirror_clamp_to_edge"), "n/a: %s", err);
+        smp.wrap_s = SAMPLE_WRAP_REPEAT;
+        tool_backend_release(&bn, xn);
+        tool_backend_release(&bf, xf);
+        sample_texture_destroy(tex);
+    }
+    tool_backend_close(&bn);
+    tool_backend_close(&bf);
+    tool_oiio_store_close(sn);
+    tool_oiio_store_close(sf);
+}
+
 int main(void)
 {
     int k;
@@ -216,6 +316,7 @@ int main(void)
     RUN(closest_exact);
     RUN(bilinear_close);
     RUN(unsupported);
+    RUN(backend_files);
     oiio_ts_destroy(ts);
     for (k = 0; k < files; ++k) {
         file_name(k, OIIO_TS_FLOAT);

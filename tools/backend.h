@@ -110,6 +110,15 @@ struct tool_backend {
 typedef sample_status (*tool_batch_fn)(const sample_texture *tex, const sample_sampler *smp,
                                        const sample_batch_args *args);
 int tool_backend_libsample(tool_backend *b, tool_batch_fn batch);
+/* libsample with a context: 2D batches through batch(ctx, …), e.g. a
+ * texture system's sample_texsys_batch on a texture it opened (bench
+ * --cache-mb, sample/texsys.h); `driver` names it. Direction and volume
+ * queries are n/a. Returns 0, or TOOL_BACKEND_ERROR (out of memory). */
+typedef sample_status (*tool_batch_ctx_fn)(void *ctx, const sample_texture *tex,
+                                           const sample_sampler *smp,
+                                           const sample_batch_args *args);
+int tool_backend_libsample_ctx(tool_backend *b, tool_batch_ctx_fn batch, void *ctx,
+                               const char *driver);
 
 /* OpenImageIO's TextureSystem (backends/oiio.c) at the settings `opts`
  * (a registry entry's twin: tool_filter_oiio_opts; the wrap modes come
@@ -124,9 +133,31 @@ int tool_backend_libsample(tool_backend *b, tool_batch_fn batch);
 typedef struct tool_oiio_store tool_oiio_store;
 int tool_oiio_available(void);
 tool_oiio_store *tool_oiio_store_open(double cache_mb, char *err, size_t errlen);
+/* The same with its folder under `base` (NULL or "": $TMPDIR, else /tmp). */
+tool_oiio_store *tool_oiio_store_open_in(double cache_mb, const char *base, char *err,
+                                         size_t errlen);
 void tool_oiio_store_close(tool_oiio_store *s);
+/* From now on the store writes a 2D texture's file in the texture's own
+ * texel format — half for SAMPLE_FORMAT_F16, 8-bit codes for UNORM8 and
+ * SRGB8 (OpenImageIO reads them as code/255: the same memory traffic and
+ * work as libsample's, not the same values), float otherwise — so that a
+ * timing compares the same texel format on both sides (bench). Without
+ * it every file is float: the values libsample decodes, which is what
+ * compare and freq score. */
+void tool_oiio_store_native_formats(tool_oiio_store *s);
 int tool_backend_oiio_open(tool_backend *b, tool_oiio_store *store, const oiio_ts_opts *opts,
                            char *err, size_t errlen);
+/* The file a texture prepared by an OpenImageIO backend reads (valid until
+ * its release): bench --save copies it, bench --cache-mb opens it in
+ * libsample's texture system. */
+const char *tool_oiio_file(const tool_backend_tex *x);
+/* prepare for an existing OpenImageIO texture file (path) instead of a
+ * texture of libsample: the file is opened as it is, not read through
+ * (bench --textures: a working set larger than the cache), and stays. */
+int tool_backend_oiio_prepare_file(tool_backend *b, const char *path, const sample_sampler *smp,
+                                   tool_backend_tex **out, char *err, size_t errlen);
+/* The store's TextureSystem, for its statistics (oiio_ts_stats_get). */
+oiio_ts *tool_oiio_store_ts(tool_oiio_store *s);
 
 /* 1 when this build has the OpenGL backend (EGL found at configure time). */
 int tool_backend_gl_available(void);

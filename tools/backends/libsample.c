@@ -1,6 +1,7 @@
 /* libsample as a backend (backend.h): sample_batch on the caller's texture
  * with the caller's sampler state, texels counted; direction queries
- * through sample_batch_env, volume queries through sample_batch_3d. One
+ * through sample_batch_env, volume queries through sample_batch_3d; or a
+ * caller's batch function with its context (a texture system's batch). One
  * prepared texture serves any number of threads (sample.h: the batch
  * calls only read the texture and the sampler). */
 #include "backend.h"
@@ -40,13 +41,20 @@ static int lib_prepare(tool_backend *b, const sample_texture *tex, const sample_
 
 typedef struct lib_impl {
     tool_batch_fn batch;
+    tool_batch_ctx_fn batch_ctx; /* with ctx, instead of batch */
+    void *ctx;
 } lib_impl;
 
 static int lib_run(tool_backend *b, tool_backend_tex *x, const tool_backend_batch *a,
                    tool_backend_times *t, char *err, size_t errlen)
 {
+    const lib_impl *l = b->impl;
     sample_status st;
     (void)t;
+    if (a->q3 && l->batch_ctx) {
+        snprintf(err, errlen, "no direction or volume queries through %s", b->driver);
+        return TOOL_BACKEND_NA;
+    }
     if (a->q3 && a->u) {
         /* sample_batch3_args has no u: the 3D and environment paths are
          * deterministic. */
@@ -69,7 +77,7 @@ static int lib_run(tool_backend *b, tool_backend_tex *x, const tool_backend_batc
         a2.stats = a->stats;
         a2.u = a->u;
         a2.draws = a->draws;
-        st = ((const lib_impl *)b->impl)->batch(x->tex, &x->smp, &a2);
+        st = l->batch_ctx ? l->batch_ctx(l->ctx, x->tex, &x->smp, &a2) : l->batch(x->tex, &x->smp, &a2);
     }
     if (st != SAMPLE_OK) {
         snprintf(err, errlen, "sample_batch: %s", sample_strerror(st));
@@ -92,17 +100,34 @@ static const tool_backend_ops lib_ops = {.prepare = lib_prepare,
                                          .release = lib_release,
                                          .close = lib_close};
 
-int tool_backend_libsample(tool_backend *b, tool_batch_fn batch)
+/* Both openings: batch or batch_ctx set. */
+static int lib_open(tool_backend *b, tool_batch_fn batch, tool_batch_ctx_fn batch_ctx, void *ctx)
 {
-    lib_impl *l = malloc(sizeof *l);
+    lib_impl *l = calloc(1, sizeof *l);
     memset(b, 0, sizeof *b);
     if (!l) return TOOL_BACKEND_ERROR;
-    l->batch = batch ? batch : sample_batch;
+    l->batch = batch;
+    l->batch_ctx = batch_ctx;
+    l->ctx = ctx;
     b->ops = &lib_ops;
-    snprintf(b->driver, sizeof b->driver, "libsample %s%s", SAMPLE_VERSION_STRING,
-             batch && batch != sample_batch ? ", reference path" : "");
     b->counts_texels = 1;
     b->thread_safe = 1;
     b->impl = l;
+    return 0;
+}
+
+int tool_backend_libsample(tool_backend *b, tool_batch_fn batch)
+{
+    if (lib_open(b, batch ? batch : sample_batch, NULL, NULL) != 0) return TOOL_BACKEND_ERROR;
+    snprintf(b->driver, sizeof b->driver, "libsample %s%s", SAMPLE_VERSION_STRING,
+             batch && batch != sample_batch ? ", reference path" : "");
+    return 0;
+}
+
+int tool_backend_libsample_ctx(tool_backend *b, tool_batch_ctx_fn batch, void *ctx,
+                               const char *driver)
+{
+    if (lib_open(b, NULL, batch, ctx) != 0) return TOOL_BACKEND_ERROR;
+    snprintf(b->driver, sizeof b->driver, "libsample %s, %s", SAMPLE_VERSION_STRING, driver);
     return 0;
 }

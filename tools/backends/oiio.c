@@ -18,6 +18,7 @@
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 #include "backend.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,28 +36,41 @@ typedef struct store_file {
     char path[640];
     float *rgba; /* base level, w × h × 4: the key with the rest */
     int w, h, env;
+    oiio_ts_format fmt; /* the file's texel format */
     sample_wrap wrap_s, wrap_t;
     oiio_ts_tex *handle;
     int refs; /* prepared textures using it */
+    /* The texture last prepared on it: while refs > 0 that texture is
+     * alive (a prepared texture is released before its texture is
+     * destroyed) and unchanged (libsample's textures are immutable), so
+     * the same pointer with the same key holds the same texels. */
+    const sample_texture *src;
 } store_file;
 
 struct tool_oiio_store {
     oiio_ts *ts;
     char dir[512];
     unsigned serial;
+    int native; /* tool_oiio_store_native_formats */
     store_file file[STORE_FILES];
 };
 
 struct tool_backend_tex {
     store_file *file;
+    store_file own; /* file: an existing file (tool_backend_oiio_prepare_file) */
 };
 
 int tool_oiio_available(void) { return 1; }
 
 tool_oiio_store *tool_oiio_store_open(double cache_mb, char *err, size_t errlen)
 {
+    return tool_oiio_store_open_in(cache_mb, NULL, err, errlen);
+}
+
+tool_oiio_store *tool_oiio_store_open_in(double cache_mb, const char *base, char *err, size_t errlen)
+{
     tool_oiio_store *s = calloc(1, sizeof *s);
-    const char *base = getenv("TMPDIR");
+    if (!base || !*base) base = getenv("TMPDIR");
     if (!s) {
         snprintf(err, errlen, "out of memory");
         return NULL;
@@ -75,6 +89,66 @@ tool_oiio_store *tool_oiio_store_open(double cache_mb, char *err, size_t errlen)
         return NULL;
     }
     return s;
+}
+
+void tool_oiio_store_native_formats(tool_oiio_store *s) { s->native = 1; }
+
+/* The format a file of tex is written in (tool_oiio_store_native_formats). */
+static oiio_ts_format file_format(const tool_oiio_store *s, const sample_texture_info *info, int env)
+{
+    if (!s->native || env) return OIIO_TS_FLOAT;
+    switch (info->format) {
+    case SAMPLE_FORMAT_F16: return OIIO_TS_HALF;
+    case SAMPLE_FORMAT_UNORM8:
+    case SAMPLE_FORMAT_SRGB8: return OIIO_TS_UINT8;
+    default: return OIIO_TS_FLOAT;
+    }
+}
+
+/* An sRGB texture's 256 decodings (sample_srgb_to_linear, which the
+ * texture's exact decoding matches within an ulp, far less than half a gap
+ * between codes) and, for each of SRGB_BUCKETS equal steps of [0, 1], the
+ * last code whose decoding lies at or below the step's start: a value's
+ * code is then a step or two past its bucket's. */
+enum { SRGB_BUCKETS = 1024 };
+typedef struct srgb_codes {
+    float lin[256];
+    unsigned char first[SRGB_BUCKETS];
+} srgb_codes;
+
+static void srgb_codes_init(srgb_codes *t)
+{
+    int b, c = 0;
+    for (b = 0; b < 256; ++b) t->lin[b] = sample_srgb_to_linear((float)b / 255.0f);
+    for (b = 0; b < SRGB_BUCKETS; ++b) {
+        while (c < 255 && t->lin[c + 1] <= (float)b / SRGB_BUCKETS) ++c;
+        t->first[b] = (unsigned char)c;
+    }
+}
+
+/* The code whose decoding is nearest v, over 255. */
+static float srgb_code(const srgb_codes *t, float v)
+{
+    float x = v * SRGB_BUCKETS;
+    int lo = t->first[x <= 0.0f ? 0 : x >= SRGB_BUCKETS - 1 ? SRGB_BUCKETS - 1 : (int)x], hi;
+    while (lo < 255 && t->lin[lo + 1] <= v) ++lo;
+    hi = lo < 255 ? lo + 1 : 255;
+    return (float)(v - t->lin[lo] <= t->lin[hi] - v ? lo : hi) / 255.0f;
+}
+
+/* The values OpenImageIO's file is made from for texel (linear RGBA, in
+ * place): for an 8-bit texture its codes / 255 exactly — an sRGB
+ * texture's colour channels by the code whose decoding is nearest, its
+ * alpha linear (GL 4.6 §8.24). Exact quotients matter beyond the base
+ * level: make_texture's 2 × 2 box averages land on half codes, where a
+ * rounding error would pick the other code. */
+static void file_values(sample_format fmt, oiio_ts_format ofmt, const srgb_codes *t, float rgba[4])
+{
+    int c;
+    if (ofmt != OIIO_TS_UINT8) return;
+    for (c = 0; c < 4; ++c)
+        rgba[c] = c < 3 && fmt == SAMPLE_FORMAT_SRGB8 ? srgb_code(t, rgba[c])
+                                                      : floorf(rgba[c] * 255.0f + 0.5f) / 255.0f;
 }
 
 static void file_drop(store_file *f)
@@ -128,8 +202,12 @@ static void warm_up(tool_oiio_store *s, store_file *f)
 static int file_write(tool_oiio_store *s, store_file *f, const sample_texture *tex, char *err,
                       size_t errlen)
 {
-    snprintf(f->path, sizeof f->path, "%s/%s%u.exr", s->dir, f->env ? "environment" : "texture",
-             s->serial++);
+    /* OpenImageIO 2.4's TIFF writer cannot hold half, nor OpenEXR 8-bit
+     * (oiio_ts.h): in the texture's own format .tx (TIFF, as maketx
+     * writes) for float and 8-bit, .exr for half; float files otherwise
+     * .exr. */
+    snprintf(f->path, sizeof f->path, "%s/%s%u.%s", s->dir, f->env ? "environment" : "texture",
+             s->serial++, s->native && !f->env && f->fmt != OIIO_TS_HALF ? "tx" : "exr");
     if (f->env) {
 #ifdef TEXSAMPLE_HAVE_IO
         sample_io_exr_options o;
@@ -145,7 +223,7 @@ static int file_write(tool_oiio_store *s, store_file *f, const sample_texture *t
         snprintf(err, errlen, "this build has no libsample_io to write the environment map");
         return -1;
 #endif
-    } else if (oiio_ts_make_texture(f->rgba, f->w, f->h, OIIO_TS_FLOAT, f->wrap_s, f->wrap_t,
+    } else if (oiio_ts_make_texture(f->rgba, f->w, f->h, f->fmt, f->wrap_s, f->wrap_t,
                                     f->path, err, errlen) != 0) {
         return -1;
     }
@@ -163,6 +241,7 @@ static store_file *store_get(tool_oiio_store *s, const sample_texture *tex, cons
 {
     sample_texture_info info;
     store_file key, *f = NULL;
+    srgb_codes codes;
     size_t bytes;
     int i, j, k;
     sample_texture_info_get(tex, &info);
@@ -170,21 +249,36 @@ static store_file *store_get(tool_oiio_store *s, const sample_texture *tex, cons
     key.w = info.width;
     key.h = info.height;
     key.env = env;
+    key.fmt = file_format(s, &info, env);
     key.wrap_s = env ? SAMPLE_WRAP_REPEAT : smp->wrap_s;
     key.wrap_t = env ? SAMPLE_WRAP_REPEAT : smp->wrap_t;
+    key.src = tex;
+    /* A texture another row holds: no need to read its texels again (a
+     * timing prepares a row per measurement on a texture of millions). */
+    for (k = 0; k < STORE_FILES; ++k) {
+        store_file *c = &s->file[k];
+        if (c->refs > 0 && c->src == tex && c->env == env && c->fmt == key.fmt &&
+            c->wrap_s == key.wrap_s && c->wrap_t == key.wrap_t)
+            return c;
+    }
     bytes = sizeof *key.rgba * 4 * (size_t)key.w * (size_t)key.h;
     if (!(key.rgba = malloc(bytes))) {
         snprintf(err, errlen, "out of memory for a %d x %d texture", key.w, key.h);
         return NULL;
     }
+    if (info.format == SAMPLE_FORMAT_SRGB8 && key.fmt == OIIO_TS_UINT8) srgb_codes_init(&codes);
     for (j = 0; j < key.h; ++j)
-        for (i = 0; i < key.w; ++i)
-            sample_texture_texel(tex, 0, i, j, key.rgba + ((size_t)j * (size_t)key.w + (size_t)i) * 4);
+        for (i = 0; i < key.w; ++i) {
+            float *p = key.rgba + ((size_t)j * (size_t)key.w + (size_t)i) * 4;
+            sample_texture_texel(tex, 0, i, j, p);
+            file_values(info.format, key.fmt, &codes, p);
+        }
     for (k = 0; k < STORE_FILES; ++k) {
         store_file *c = &s->file[k];
-        if (c->rgba && c->w == key.w && c->h == key.h && c->env == env &&
+        if (c->rgba && c->w == key.w && c->h == key.h && c->env == env && c->fmt == key.fmt &&
             c->wrap_s == key.wrap_s && c->wrap_t == key.wrap_t && memcmp(c->rgba, key.rgba, bytes) == 0) {
             free(key.rgba);
+            c->src = tex;
             return c;
         }
     }
@@ -212,6 +306,20 @@ typedef struct oiio_impl {
     oiio_ts_opts opts;
 } oiio_impl;
 
+/* 1 (with the reason in err) where OpenImageIO has no equivalent of the
+ * sampler's wrap modes: its black wrap is a zero border. */
+static int wrap_na(const sample_sampler *smp, char *err, size_t errlen)
+{
+    if (oiio_ts_wrap_supported(smp->wrap_s) && oiio_ts_wrap_supported(smp->wrap_t) &&
+        ((smp->wrap_s != SAMPLE_WRAP_CLAMP_TO_BORDER && smp->wrap_t != SAMPLE_WRAP_CLAMP_TO_BORDER) ||
+         (smp->border_color[0] == 0.0f && smp->border_color[1] == 0.0f &&
+          smp->border_color[2] == 0.0f && smp->border_color[3] == 0.0f)))
+        return 0;
+    snprintf(err, errlen, "OpenImageIO has no equivalent of wrap modes %s/%s",
+             sample_wrap_name(smp->wrap_s), sample_wrap_name(smp->wrap_t));
+    return 1;
+}
+
 static int prepare_as(tool_backend *b, const sample_texture *tex, const sample_sampler *smp, int env,
                       tool_backend_tex **out, char *err, size_t errlen)
 {
@@ -232,16 +340,7 @@ static int prepare_as(tool_backend *b, const sample_texture *tex, const sample_s
         snprintf(err, errlen, "OpenImageIO's environment() reads lat-long maps only, not cube maps");
         return TOOL_BACKEND_NA;
     }
-    if (!env && (!oiio_ts_wrap_supported(smp->wrap_s) || !oiio_ts_wrap_supported(smp->wrap_t) ||
-                 ((smp->wrap_s == SAMPLE_WRAP_CLAMP_TO_BORDER ||
-                   smp->wrap_t == SAMPLE_WRAP_CLAMP_TO_BORDER) &&
-                  (smp->border_color[0] != 0.0f || smp->border_color[1] != 0.0f ||
-                   smp->border_color[2] != 0.0f || smp->border_color[3] != 0.0f)))) {
-        /* OpenImageIO's black wrap is a zero border. */
-        snprintf(err, errlen, "OpenImageIO has no equivalent of wrap modes %s/%s",
-                 sample_wrap_name(smp->wrap_s), sample_wrap_name(smp->wrap_t));
-        return TOOL_BACKEND_NA;
-    }
+    if (!env && wrap_na(smp, err, errlen)) return TOOL_BACKEND_NA;
     if (!(x = malloc(sizeof *x))) {
         snprintf(err, errlen, "out of memory");
         return TOOL_BACKEND_ERROR;
@@ -300,11 +399,38 @@ static int oiio_run(tool_backend *b, tool_backend_tex *x, const tool_backend_bat
 static void oiio_release(tool_backend *b, tool_backend_tex *x)
 {
     (void)b;
-    --x->file->refs;
+    if (x->file != &x->own) --x->file->refs;
     free(x);
 }
 
+int tool_backend_oiio_prepare_file(tool_backend *b, const char *path, const sample_sampler *smp,
+                                   tool_backend_tex **out, char *err, size_t errlen)
+{
+    oiio_impl *o = b->impl;
+    tool_backend_tex *x;
+    if (wrap_na(smp, err, errlen)) return TOOL_BACKEND_NA;
+    if (!(x = calloc(1, sizeof *x))) {
+        snprintf(err, errlen, "out of memory");
+        return TOOL_BACKEND_ERROR;
+    }
+    snprintf(x->own.path, sizeof x->own.path, "%s", path);
+    x->own.wrap_s = smp->wrap_s;
+    x->own.wrap_t = smp->wrap_t;
+    /* Not read through: such files may be larger than the cache. */
+    if (!(x->own.handle = oiio_ts_open(o->store->ts, path, err, errlen))) {
+        free(x);
+        return TOOL_BACKEND_ERROR;
+    }
+    x->file = &x->own;
+    *out = x;
+    return 0;
+}
+
+oiio_ts *tool_oiio_store_ts(tool_oiio_store *s) { return s->ts; }
+
 static void oiio_close(tool_backend *b) { free(b->impl); }
+
+const char *tool_oiio_file(const tool_backend_tex *x) { return x->file->path; }
 
 static const tool_backend_ops oiio_ops = {.prepare = oiio_prepare,
                                           .prepare_env = oiio_prepare_env,
@@ -336,12 +462,40 @@ int tool_oiio_available(void) { return 0; }
 
 tool_oiio_store *tool_oiio_store_open(double cache_mb, char *err, size_t errlen)
 {
+    return tool_oiio_store_open_in(cache_mb, NULL, err, errlen);
+}
+
+tool_oiio_store *tool_oiio_store_open_in(double cache_mb, const char *base, char *err, size_t errlen)
+{
     (void)cache_mb;
+    (void)base;
     snprintf(err, errlen, "this build has no OpenImageIO");
     return NULL;
 }
 
 void tool_oiio_store_close(tool_oiio_store *s) { (void)s; }
+
+void tool_oiio_store_native_formats(tool_oiio_store *s) { (void)s; }
+
+oiio_ts *tool_oiio_store_ts(tool_oiio_store *s)
+{
+    (void)s;
+    return NULL;
+}
+
+int tool_backend_oiio_prepare_file(tool_backend *b, const char *path, const sample_sampler *smp,
+                                   tool_backend_tex **out, char *err, size_t errlen)
+{
+    (void)b, (void)path, (void)smp, (void)out;
+    snprintf(err, errlen, "this build has no OpenImageIO");
+    return TOOL_BACKEND_ERROR;
+}
+
+const char *tool_oiio_file(const tool_backend_tex *x)
+{
+    (void)x;
+    return "";
+}
 
 int tool_backend_oiio_open(tool_backend *b, tool_oiio_store *store, const oiio_ts_opts *opts,
                            char *err, size_t errlen)

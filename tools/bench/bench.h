@@ -2,9 +2,10 @@
  * bench's private header: where its pieces meet (doc/benchmarks.md).
  *
  *   queries.c    the standard query sets, from a fixed seed
- *   textures.c   synthetic textures: libsample objects and OIIO files
+ *   textures.c   synthetic textures in each format (libsample's objects)
  *   engines.c    the filters measured: registry entries (tools/filters.h),
- *                on libsample and on their OIIO twins
+ *                on libsample and on their OIIO twins, each row through
+ *                its backend (tools/backend.h)
  *   timing.c     runs over pthreads, medians
  *   gl.c         the OpenGL twins of the filters, through tools/backend.h,
  *                with upload and read-back timed apart from the sampling
@@ -21,6 +22,7 @@
 
 /* By its path: programs built from bench's sources (tests/probes.cmake,
  * scripts/perf_probe.sh) name only tools/bench in their include path. */
+#include "../backend.h"
 #include "../filters.h"
 #include "oiio_ts.h"
 #include "sample/sample.h"
@@ -59,35 +61,36 @@ typedef enum bench_format {
 } bench_format;
 
 extern const char *const bench_format_names[BENCH_FMT_COUNT];
-/* OIIO's file for each format, inside bench's directory ("bench_float.tx"). */
+/* OIIO's file for each format as --save names it ("bench_float.tx"). */
 extern const char *const bench_oiio_file_names[BENCH_FMT_COUNT];
 
-/* One format of the synthetic texture, as libsample sees it and as OIIO's
- * file (NULL when OIIO is not measured). */
+/* One format of the synthetic texture. OpenImageIO's rows read the file
+ * their backend writes of `ours` in its own format (tools/backends/oiio.c,
+ * tool_oiio_store_native_formats). */
 typedef struct bench_texture {
     sample_texture *ours;
-    oiio_ts_tex *theirs;
-    /* bench --cache-mb: libsample's texture read from OIIO's file through a
-     * texture system (sample/texsys.h) whose tiles `cached` samples
-     * through; NULL otherwise (then ours is resident). */
+    /* bench --cache-mb: the same texels read from OpenImageIO's file
+     * through a texture system (sample/texsys.h), which libsample's rows
+     * sample through `cached_backend` (tools/backend.h); NULL otherwise. */
+    const sample_texture *cached;
     void *sys;
-    sample_status (*cached)(void *sys, const sample_texture *tex, const sample_sampler *s,
-                            const sample_batch_args *a);
+    tool_backend *cached_backend;
+    /* bench --textures: an existing OpenImageIO file of the texture, which
+     * OIIO's rows read as it is (ours is then NULL); NULL otherwise. */
+    const char *file;
 } bench_texture;
 
 /* The synthetic size × size RGBA content (linear, in [0, 1]); caller frees. */
 float *bench_content(int size);
 /* Build format `fmt` from `content`: libsample's texture with a box pyramid
- * (REPEAT); when dir is non-NULL, OIIO's texture file in it; when ts is
- * non-NULL too, that file opened in ts. Returns 0, or reports on stderr and
- * returns −1. */
-int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts *ts,
-                       const char *dir, bench_texture *out);
-/* Replace t's libsample texture by OIIO's file (in dir) opened through a
- * texture system of cache_mb MiB. Returns 0, or reports and returns −1. */
-int bench_texture_cache(bench_texture *t, bench_format fmt, const char *dir, double cache_mb);
-/* bench_texture.cached for a texture of a texture system: sys is the
- * sample_texsys. */
+ * (REPEAT). Returns 0, or reports on stderr and returns −1. */
+int bench_texture_make(const float *content, int size, bench_format fmt, bench_texture *out);
+/* Open `path` (OpenImageIO's file of t's texels) through a texture system
+ * of cache_mb MiB for libsample's rows (t->cached). Returns 0, or reports
+ * and returns −1. */
+int bench_texture_cache(bench_texture *t, const char *path, double cache_mb);
+/* A texture system's batch (sys: the sample_texsys), for libsample's
+ * backend over it (tool_backend_libsample_ctx). */
 sample_status bench_texsys_batch(void *sys, const sample_texture *tex, const sample_sampler *s,
                                  const sample_batch_args *a);
 /* What the texture system of a cached texture read (nothing otherwise). */
@@ -107,6 +110,8 @@ typedef struct bench_engine {
     /* 0: 2D queries (sample_query); BENCH_ENV_*: direction queries
      * (sample_query3) of an environment map (env.c) */
     int env;
+    /* OIIO rows: their backend (bench_engines_open_oiio); NULL until then */
+    tool_backend *backend;
 } bench_engine;
 
 enum { BENCH_ENV_LATLONG = 1, BENCH_ENV_CUBE = 2 };
@@ -120,11 +125,30 @@ int bench_engines_of(const tool_filter *const *filters, int count, bench_engine 
 /* The same for bench_default_filters. */
 int bench_engines(bench_engine *out, int max);
 
-/* Sample queries [0, n) with an engine into rgba (n × 4), optionally with
- * stats (libsample only). q: sample_query, or sample_query3 for an
- * environment engine (e->env). Returns 0, or −1 (reported). */
-int bench_engine_run(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-                     const void *q, size_t n, float *rgba, sample_stats *stats);
+/* Open the OIIO rows' backends (tools/backends/oiio.c at each row's twin
+ * settings) over `store`. Returns 0, or −1 (reported). */
+int bench_engines_open_oiio(bench_engine *e, int n, tool_oiio_store *store);
+/* Close what bench_engines_open_oiio opened. */
+void bench_engines_close(bench_engine *e, int n);
+
+/* An engine's row on one texture (its backend and the texture prepared
+ * there): prepared once, then any number of batches from any number of
+ * threads. */
+typedef struct bench_row {
+    tool_backend *b;
+    tool_backend_tex *x;
+} bench_row;
+/* Returns 0, or −1 (reported). */
+int bench_row_prepare(const bench_engine *e, const bench_texture *t, bench_row *out);
+/* Sample queries [0, n) into rgba (n × 4), optionally with stats (libsample
+ * only). q: sample_query, or sample_query3 for an environment engine
+ * (e->env). Returns 0, or −1 (reported). */
+int bench_row_run(const bench_engine *e, const bench_row *r, const void *q, size_t n, float *rgba,
+                  sample_stats *stats);
+void bench_row_release(bench_row *r);
+/* Prepare, run once, release. */
+int bench_engine_run(const bench_engine *e, const bench_texture *t, const void *q, size_t n,
+                     float *rgba, sample_stats *stats);
 
 /* ---- Timing (timing.c) ------------------------------------------------ */
 
@@ -139,9 +163,8 @@ void bench_timing_of(double *v, int n, bench_timing *out);
 /* Time `runs` passes of all n queries on `threads` threads (tiles taken
  * first come first served, in batches of `batch`), after one untimed
  * warm-up pass. Returns 0, or −1 if a pass failed. */
-int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-               const void *q, size_t n, int threads, int runs, size_t batch,
-               bench_timing *out);
+int bench_time(const bench_engine *e, const bench_texture *t, const void *q, size_t n,
+               int threads, int runs, size_t batch, bench_timing *out);
 
 /* bench_time in three steps, so that several engines' passes can take
  * turns (cmd_bench.c): open makes the pool and runs the warm-up pass (NULL
@@ -149,8 +172,8 @@ int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
  * `runs`), close fills *out once all `runs` passes are timed (0; −1
  * otherwise) and frees the timer either way. */
 typedef struct bench_timer bench_timer;
-bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const void *q,
-                              size_t n, int threads, int runs, size_t batch);
+bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, const void *q, size_t n,
+                              int threads, int runs, size_t batch);
 int bench_timer_pass(bench_timer *tm);
 int bench_timer_close(bench_timer *tm, bench_timing *out);
 
@@ -262,6 +285,9 @@ typedef struct bench_save {
 /* One set's queries as DIR/queries_<set>.bin: n records of 6 little-endian
  * float32 in sample_query's field order. Returns 0, or nonzero (reported). */
 int bench_save_queries(const char *dir, bench_set set, const sample_query *q, size_t n);
+/* OpenImageIO's file of one format (`path`, as its backend wrote it) as
+ * DIR/bench_oiio_file_names[fmt]. Returns 0, or nonzero (reported). */
+int bench_save_texture(const char *dir, bench_format fmt, const char *path);
 /* DIR/manifest.json: the query files, OIIO's texture files, every selected
  * filter's settings on both sides, and the 1-thread timings of the report.
  * Returns 0, or nonzero (reported). */

@@ -8,7 +8,10 @@
  * frames of one timed run, every texture is seen across the whole plane.
  * libsample samples through one texture system of --cache-mb MiB,
  * OpenImageIO through its TextureSystem with the same max_memory_MB; both
- * get the same queries in the same order. Threads take screen tiles first
+ * get the same queries in the same order, each side through its backend
+ * (tools/backend.h: libsample's over the texture system, OpenImageIO's on
+ * the files as they are), one row per texture prepared before the clock
+ * and one run per screen tile. Threads take screen tiles first
  * come first served. A timed run lasts seconds, so threads are created per
  * run (their start-up is microseconds) instead of timing.c's pool.
  */
@@ -35,8 +38,7 @@ typedef struct cs_job {
 
 typedef struct cs_run {
     const bench_engine *e;
-    const bench_texture *tex; /* N textures, both sides' handles */
-    oiio_ts *ts;
+    const bench_row *rows; /* the engine's row on each of the N textures */
     const sample_query *q;
     const cs_job *jobs;
     size_t njobs;
@@ -58,7 +60,7 @@ static void *worker(void *arg)
     size_t k;
     while ((k = atomic_fetch_add(&r->next, 1)) < r->njobs && !atomic_load(&r->failed)) {
         const cs_job *j = &r->jobs[k];
-        if (bench_engine_run(r->e, &r->tex[j->tex], r->ts, r->q + j->q0, j->n, rgba, NULL) != 0)
+        if (bench_row_run(r->e, &r->rows[j->tex], r->q + j->q0, j->n, rgba, NULL) != 0)
             atomic_store(&r->failed, 1);
     }
     return NULL;
@@ -148,15 +150,15 @@ static int make_files(const bench_cacheset_opts *o, const char *dir, char (*path
     return 0;
 }
 
-/* Open the N files in a new texture system of mb MiB (and in ts when
- * given). Returns the system, or NULL (reported). */
-static sample_texsys *open_all(const bench_cacheset_opts *o, double mb, char (*path)[1100], oiio_ts *ts,
+/* Open the N files in a new texture system of mb MiB, libsample's
+ * backend over it in *lib (OpenImageIO's rows read the files as they are).
+ * Returns the system, or NULL (reported). */
+static sample_texsys *open_all(const bench_cacheset_opts *o, double mb, char (*path)[1100], tool_backend *lib,
                                bench_texture *tex)
 {
     sample_texsys_options so;
     sample_texsys *sys = NULL;
     sample_error err;
-    char oerr[512];
     int k;
     sample_texsys_options_init(&so);
     so.max_memory_mb = mb;
@@ -164,23 +166,44 @@ static sample_texsys *open_all(const bench_cacheset_opts *o, double mb, char (*p
         fprintf(stderr, "texsample bench: %s\n", err.message);
         return NULL;
     }
+    if (tool_backend_libsample_ctx(lib, bench_texsys_batch, sys, "texture system") != 0) {
+        fprintf(stderr, "texsample bench: out of memory\n");
+        sample_texsys_destroy(sys);
+        return NULL;
+    }
     for (k = 0; k < o->textures; ++k) {
         const sample_texture *t;
         if (sample_texsys_open(sys, path[k], &t, &err) != SAMPLE_OK) {
             fprintf(stderr, "texsample bench: %s\n", err.message);
+            tool_backend_close(lib);
             sample_texsys_destroy(sys);
             return NULL;
         }
-        tex[k].ours = (sample_texture *)(uintptr_t)t;
+        tex[k].cached = t;
         tex[k].sys = sys;
-        tex[k].cached = bench_texsys_batch;
-        if (ts && !(tex[k].theirs = oiio_ts_open(ts, path[k], oerr, sizeof oerr))) {
-            fprintf(stderr, "texsample bench: %s\n", oerr);
-            sample_texsys_destroy(sys);
-            return NULL;
-        }
+        tex[k].cached_backend = lib;
+        tex[k].file = path[k];
     }
     return sys;
+}
+
+/* Engine e's rows on the N textures. Returns 0, or −1 (reported; none
+ * left prepared). */
+static int prepare_rows(const bench_engine *e, const bench_texture *tex, int n, bench_row *rows)
+{
+    int k;
+    for (k = 0; k < n; ++k)
+        if (bench_row_prepare(e, &tex[k], &rows[k]) != 0) {
+            while (k-- > 0) bench_row_release(&rows[k]);
+            return -1;
+        }
+    return 0;
+}
+
+static void release_rows(bench_row *rows, int n)
+{
+    int k;
+    for (k = 0; k < n; ++k) bench_row_release(&rows[k]);
 }
 
 /* The process's peak resident memory in MiB: Linux's VmHWM, which
@@ -216,11 +239,11 @@ static int rss_peak_reset(void)
 }
 
 /* Tiles and bytes one side has read so far. */
-static void counts(const cs_run *r, sample_texsys *sys, double *tiles, double *bytes)
+static void counts(const cs_run *r, sample_texsys *sys, oiio_ts *ts, double *tiles, double *bytes)
 {
     if (r->e->oiio) {
         oiio_ts_stats os;
-        oiio_ts_stats_get(r->ts, &os);
+        oiio_ts_stats_get(ts, &os);
         *tiles = (double)os.tiles_read;
         *bytes = (double)os.bytes_read;
     } else {
@@ -239,17 +262,18 @@ typedef struct cs_result {
 
 /* One engine on `threads` threads: a warm-up run, then o->runs timed
  * ones. Returns 0, or −1 (reported). */
-static int measure(cs_run *r, sample_texsys *sys, int threads, int runs, size_t nq, cs_result *out)
+static int measure(cs_run *r, sample_texsys *sys, oiio_ts *ts, int threads, int runs, size_t nq,
+                   cs_result *out)
 {
     double v[1000], t0, b0, t1, b1, s;
     int k;
     if (timed_run(r, threads) < 0) return -1;
-    counts(r, sys, &t0, &b0);
+    counts(r, sys, ts, &t0, &b0);
     for (k = 0; k < runs; ++k) {
         if ((s = timed_run(r, threads)) < 0) return -1;
         v[k] = (double)nq / s;
     }
-    counts(r, sys, &t1, &b1);
+    counts(r, sys, ts, &t1, &b1);
     bench_timing_of(v, runs, &out->timing);
     out->tiles = (t1 - t0) / runs;
     out->bytes = (b1 - b0) / runs;
@@ -276,19 +300,26 @@ static void print_row(const char *name, int threads, double cache_mb, const cs_r
 static int working_set(const bench_cacheset_opts *o, char (*path)[1100], cs_run *r, double *bytes)
 {
     bench_texture *tex = calloc((size_t)o->textures, sizeof *tex);
-    sample_texsys *sys = tex ? open_all(o, 1048576.0, path, NULL, tex) : NULL;
+    bench_row *rows = calloc((size_t)o->textures, sizeof *rows);
+    tool_backend lib;
+    sample_texsys *sys = tex && rows ? open_all(o, 1048576.0, path, &lib, tex) : NULL;
     sample_texsys_stats st;
     cs_run w = *r;
     int rc = -1;
     if (sys) {
-        w.tex = tex;
-        if (timed_run(&w, 1) >= 0) {
-            sample_texsys_stats_get(sys, &st);
-            *bytes = (double)st.bytes_read;
-            rc = 0;
+        w.rows = rows;
+        if (prepare_rows(r->e, tex, o->textures, rows) == 0) {
+            if (timed_run(&w, 1) >= 0) {
+                sample_texsys_stats_get(sys, &st);
+                *bytes = (double)st.bytes_read;
+                rc = 0;
+            }
+            release_rows(rows, o->textures);
         }
+        tool_backend_close(&lib);
         sample_texsys_destroy(sys);
     }
+    free(rows);
     free(tex);
     return rc;
 }
@@ -297,7 +328,11 @@ int bench_cacheset(const bench_cacheset_opts *o)
 {
     char (*path)[1100] = calloc((size_t)o->textures, sizeof *path);
     bench_texture *tex = calloc((size_t)o->textures, sizeof *tex);
-    char dir[1024];
+    bench_row *rows = calloc((size_t)o->textures, sizeof *rows);
+    bench_engine *eng = calloc((size_t)o->neng, sizeof *eng);
+    tool_backend lib = {0};
+    tool_oiio_store *store = NULL;
+    char dir[1024], err[512];
     sample_query *q = NULL;
     cs_job *jobs = NULL;
     size_t njobs = 0, nq;
@@ -308,7 +343,7 @@ int bench_cacheset(const bench_cacheset_opts *o)
     double rss_setup, rss_phase[2] = {-1.0, -1.0}, rss_start[2] = {-1.0, -1.0};
     int e, k, reset = 0, nthr = o->threads > 1 ? 2 : 1, rc = 1, made_dir = 0;
 
-    if (!path || !tex || make_frames(o->queries, o->textures, &q, &jobs, &njobs) != 0) {
+    if (!path || !tex || !rows || !eng || make_frames(o->queries, o->textures, &q, &jobs, &njobs) != 0) {
         fprintf(stderr, "texsample bench: out of memory\n");
         goto done;
     }
@@ -321,11 +356,17 @@ int bench_cacheset(const bench_cacheset_opts *o)
         made_dir = 1;
     }
     if (make_files(o, dir, path) != 0) goto done;
-    if (o->oiio && !(ts = oiio_ts_create(o->cache_mb))) {
-        fprintf(stderr, "texsample bench: cannot create an OpenImageIO TextureSystem\n");
-        goto done;
+    /* OpenImageIO's rows: its TextureSystem with the same cache. */
+    memcpy(eng, o->eng, (size_t)o->neng * sizeof *eng);
+    if (o->oiio) {
+        if (!(store = tool_oiio_store_open_in(o->cache_mb, o->tmpdir, err, sizeof err))) {
+            fprintf(stderr, "texsample bench: %s\n", err);
+            goto done;
+        }
+        if (bench_engines_open_oiio(eng, o->neng, store) != 0) goto done;
+        ts = tool_oiio_store_ts(store);
     }
-    if (!(sys = open_all(o, o->cache_mb, path, ts, tex))) goto done;
+    if (!(sys = open_all(o, o->cache_mb, path, &lib, tex))) goto done;
     if (!(res = calloc((size_t)o->neng * 2, sizeof *res))) goto done;
     nq = o->queries * (size_t)o->textures;
     rss_setup = peak_rss_mib();
@@ -335,22 +376,25 @@ int bench_cacheset(const bench_cacheset_opts *o)
         reset = rss_peak_reset();
         rss_start[k] = status_mib("VmRSS:");
         for (e = 0; e < o->neng; ++e) {
-            cs_run r = {&o->eng[e], tex, ts, q, jobs, njobs, 0, 0};
-            int t;
-            if (o->eng[e].oiio != k || (o->eng[e].oiio && !ts)) continue;
-            for (t = 0; t < nthr; ++t)
-                if (measure(&r, sys, t ? o->threads : 1, o->runs, nq, &res[2 * e + t]) != 0) {
-                    fprintf(stderr, "texsample bench: %s failed\n", o->eng[e].name);
-                    goto done;
-                }
+            cs_run r = {&eng[e], rows, q, jobs, njobs, 0, 0};
+            int t, failed = 0;
+            if (eng[e].oiio != k || (eng[e].oiio && !ts)) continue;
+            if (prepare_rows(&eng[e], tex, o->textures, rows) != 0) goto done;
+            for (t = 0; t < nthr && !failed; ++t)
+                failed = measure(&r, sys, ts, t ? o->threads : 1, o->runs, nq, &res[2 * e + t]) != 0;
+            release_rows(rows, o->textures);
+            if (failed) {
+                fprintf(stderr, "texsample bench: %s failed\n", eng[e].name);
+                goto done;
+            }
         }
         rss_phase[k] = peak_rss_mib();
     }
     /* Last: the freed tiles of a cache that never evicts would stay in
      * the heap, resident, under the RSS of the timed runs. */
     for (e = 0; e < o->neng; ++e) {
-        cs_run r = {&o->eng[e], tex, ts, q, jobs, njobs, 0, 0};
-        if (!o->eng[e].oiio && working_set(o, path, &r, &res[2 * e].working_set) != 0) goto done;
+        cs_run r = {&eng[e], rows, q, jobs, njobs, 0, 0};
+        if (!eng[e].oiio && working_set(o, path, &r, &res[2 * e].working_set) != 0) goto done;
         res[2 * e + 1].working_set = res[2 * e].working_set;
     }
     sample_texsys_stats_get(sys, &st);
@@ -387,8 +431,10 @@ int bench_cacheset(const bench_cacheset_opts *o)
         printf("process peak RSS: %.0f MiB (the whole run's)\n", peak_rss_mib());
     rc = 0;
 done:
+    if (sys) tool_backend_close(&lib);
     sample_texsys_destroy(sys);
-    oiio_ts_destroy(ts);
+    if (eng) bench_engines_close(eng, o->neng);
+    tool_oiio_store_close(store);
     if (made_dir) {
         for (k = 0; k < o->textures; ++k)
             if (path[k][0]) remove(path[k]);
@@ -396,6 +442,8 @@ done:
     }
     free(res);
     free(path);
+    free(rows);
+    free(eng);
     free(tex);
     free(q);
     free(jobs);

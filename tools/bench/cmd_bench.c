@@ -57,7 +57,7 @@ static const char help[] =
     "                     (sample_batch_reference), to measure the fast path\n"
     "  --tmpdir DIR       where OIIO's texture files are written (default $TMPDIR\n"
     "                     or /tmp); they are removed at the end (--save keeps\n"
-    "                     them in its directory instead)\n"
+    "                     copies in its directory)\n"
     "  --json FILE        also write the results as JSON ('-': stdout, no table)\n"
     "  --save DIR         keep what was timed in DIR (created if missing): each\n"
     "                     set's queries (queries_SET.bin, little-endian float32\n"
@@ -259,7 +259,7 @@ static int texels_per_sample(const bench_engine *e, const bench_texture *t,
     int rc = -1;
     if (!st || !rgba) {
         cli_runtime_error("bench", "out of memory");
-    } else if (bench_engine_run(e, t, NULL, q, n, rgba, st) == 0) {
+    } else if (bench_engine_run(e, t, q, n, rgba, st) == 0) {
         for (i = 0; i < n; ++i) sum += st[i].texels;
         *out = sum / (double)n;
         rc = 0;
@@ -273,7 +273,11 @@ typedef struct bench_run {
     bench_opts o;
     bench_engine eng[MAX_ENGINES];
     int neng, nours; /* engines, of which libsample's (the first nours) */
-    oiio_ts *ts;
+    /* OpenImageIO's files and TextureSystem (tools/backends/oiio.c), in
+     * each format's own texels; `files` writes a format's file for --save
+     * and --cache-mb. NULL / unopened when neither they nor OIIO run. */
+    tool_oiio_store *store;
+    tool_backend files;
     bench_result *res;
     size_t nres;
     tool_backend gl; /* --gl: opened once */
@@ -283,7 +287,7 @@ typedef struct bench_run {
 
 /* Is engine e measured? Every engine is one the filters named (the table
  * is built from them); OIIO's only when OIIO runs. */
-static int engine_selected(const bench_run *b, int e) { return !b->eng[e].oiio || b->ts; }
+static int engine_selected(const bench_run *b, int e) { return !b->eng[e].oiio || b->eng[e].backend; }
 
 /* Every selected engine on one texture and query set, at 1 and at all
  * threads. The 1-thread passes take turns: pass r of every engine runs
@@ -322,7 +326,7 @@ static int measure(bench_run *b, const bench_texture *tex, bench_format fmt, ben
         }
     }
     for (e = 0; e < b->neng && !failed; ++e)
-        if (sel[e] && !(tm[e] = bench_timer_open(&b->eng[e], tex, b->ts, q, b->o.queries, 1, b->o.runs, b->o.batch)))
+        if (sel[e] && !(tm[e] = bench_timer_open(&b->eng[e], tex, q, b->o.queries, 1, b->o.runs, b->o.batch)))
             failed = b->eng[e].name;
     for (r = 0; r < b->o.runs && !failed; ++r)
         for (e = 0; e < b->neng && !failed; ++e)
@@ -336,7 +340,7 @@ static int measure(bench_run *b, const bench_texture *tex, bench_format fmt, ben
     for (k = 1; k < nthr && !failed; ++k)
         for (e = 0; e < b->neng && !failed; ++e) {
             if (!sel[e]) continue;
-            if (bench_time(&b->eng[e], tex, b->ts, q, b->o.queries, thr[k], b->o.runs, b->o.batch,
+            if (bench_time(&b->eng[e], tex, q, b->o.queries, thr[k], b->o.runs, b->o.batch,
                            &b->res[slot[e] + (size_t)k].timing) != 0)
                 failed = b->eng[e].name;
             else
@@ -357,8 +361,28 @@ static int count_bits(unsigned m)
     return n;
 }
 
-/* OIIO's files go to `files` (NULL: none are written). */
-static int run_all(bench_run *b, const char *files)
+/* OpenImageIO's file of tex, for --save and --cache-mb: written by its
+ * backend in the format's own texels (*file holds it until released).
+ * Returns 0, or nonzero after reporting. */
+static int format_file(bench_run *b, bench_texture *tex, bench_format fmt, tool_backend_tex **file)
+{
+    sample_sampler smp;
+    char err[512];
+    const char *path;
+    *file = NULL;
+    if (!b->files.ops) return 0;
+    sample_sampler_init(&smp); /* REPEAT, as the texture's pyramid */
+    if (tool_backend_prepare(&b->files, tex->ours, &smp, file, NULL, err, sizeof err) != 0) {
+        *file = NULL;
+        return cli_runtime_error("bench", "OpenImageIO's %s file: %s", bench_format_names[fmt], err);
+    }
+    path = tool_oiio_file(*file);
+    if (b->o.save && bench_save_texture(b->o.save, fmt, path) != 0) return EXIT_RUNTIME;
+    if (b->o.cache_mb > 0.0f && bench_texture_cache(tex, path, b->o.cache_mb) != 0) return EXIT_RUNTIME;
+    return 0;
+}
+
+static int run_all(bench_run *b)
 {
     float *content = bench_content(b->o.size);
     sample_query *q = malloc(b->o.queries * sizeof *q);
@@ -377,12 +401,13 @@ static int run_all(bench_run *b, const char *files)
     }
     for (fmt = 0; fmt < BENCH_FMT_COUNT && rc == 0; ++fmt) {
         bench_texture tex;
+        tool_backend_tex *file = NULL;
         if (!((b->o.formats >> fmt) & 1u)) continue;
-        if (bench_texture_make(content, b->o.size, (bench_format)fmt, b->ts, files, &tex) != 0 ||
-            (b->o.cache_mb > 0.0f && bench_texture_cache(&tex, (bench_format)fmt, files, b->o.cache_mb) != 0)) {
+        if (bench_texture_make(content, b->o.size, (bench_format)fmt, &tex) != 0) {
             rc = EXIT_RUNTIME;
             break;
         }
+        rc = format_file(b, &tex, (bench_format)fmt, &file);
         for (set = 0; set < BENCH_SET_COUNT && rc == 0; ++set) {
             if (!((b->o.sets >> set) & 1u)) continue;
             bench_queries((bench_set)set, b->o.size, q, b->o.queries);
@@ -403,6 +428,7 @@ static int run_all(bench_run *b, const char *files)
             }
         }
         bench_texture_stats(&tex, stderr);
+        if (file) tool_backend_release(&b->files, file);
         bench_texture_free(&tex);
         saved_any_format = 1;
     }
@@ -412,16 +438,25 @@ done:
     return rc;
 }
 
-/* OIIO's files, by the names textures.c gives them. */
-static void remove_files(const char *dir)
+/* OpenImageIO's store (its files in the texture's own format, under
+ * --tmpdir; its TextureSystem's cache --cache-mb) and its rows' backends,
+ * and the OpenGL backend. Returns 0, or EXIT_RUNTIME after reporting. */
+static int open_backends(bench_run *b)
 {
-    char path[1100];
-    int k;
-    for (k = 0; k < BENCH_FMT_COUNT; ++k) {
-        snprintf(path, sizeof path, "%s/%s", dir, bench_oiio_file_names[k]);
-        remove(path);
+    char err[512];
+    if (b->o.oiio || b->o.save || b->o.cache_mb > 0.0f) {
+        oiio_ts_opts opts;
+        if (!(b->store = tool_oiio_store_open_in(b->o.cache_mb, b->o.tmpdir, err, sizeof err)))
+            return cli_runtime_error("bench", "%s", err);
+        tool_oiio_store_native_formats(b->store);
+        oiio_ts_opts_init(&opts);
+        if (tool_backend_oiio_open(&b->files, b->store, &opts, err, sizeof err) != 0)
+            return cli_runtime_error("bench", "%s", err);
     }
-    rmdir(dir);
+    if (b->o.oiio && bench_engines_open_oiio(b->eng, b->neng, b->store) != 0) return EXIT_RUNTIME;
+    if (b->o.gl && tool_backend_gl_open(&b->gl, b->o.gl_device, err, sizeof err) != 0)
+        return cli_runtime_error("bench", "OpenGL: %s", err);
+    return 0;
 }
 
 /* --save's directory: made if missing (one level, as mkdir), else it must
@@ -457,10 +492,9 @@ static int make_engines(bench_run *b)
 int cmd_bench(int argc, char **argv)
 {
     bench_run b;
-    char dir[1024], glerr[512];
     const char *tmp;
     char *command = NULL;
-    double load[2];
+    double load[2] = {-1.0, -1.0};
     int i, rc;
     long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
 
@@ -543,27 +577,12 @@ int cmd_bench(int argc, char **argv)
     for (i = 0; i < b.neng; ++i)
         if (b.o.scalar && !b.eng[i].oiio) b.eng[i].reference = 1;
 
-    tmp = b.o.tmpdir ? b.o.tmpdir : getenv("TMPDIR");
-    snprintf(dir, sizeof dir, "%s/texsample-bench-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (b.o.save) {
-        if (make_save_dir(b.o.save) != 0) return EXIT_RUNTIME;
-        /* The files are the record: they stay where --save put them. */
-        snprintf(dir, sizeof dir, "%s", b.o.save);
-    } else if ((b.o.oiio || b.o.cache_mb > 0.0f) && !mkdtemp(dir)) {
-        return cli_runtime_error("bench", "cannot create a directory in %s",
-                                 tmp && *tmp ? tmp : "/tmp");
+    if (b.o.save && make_save_dir(b.o.save) != 0) return EXIT_RUNTIME;
+    rc = open_backends(&b);
+    if (rc == 0) {
+        if (getloadavg(&load[0], 1) != 1) load[0] = -1.0;
+        rc = run_all(&b);
     }
-    if (b.o.oiio && !(b.ts = oiio_ts_create(b.o.cache_mb))) {
-        if (!b.o.save) rmdir(dir);
-        return cli_runtime_error("bench", "cannot create an OpenImageIO TextureSystem");
-    }
-    if (b.o.gl && tool_backend_gl_open(&b.gl, b.o.gl_device, glerr, sizeof glerr) != 0) {
-        oiio_ts_destroy(b.ts);
-        if (b.o.oiio && !b.o.save) remove_files(dir);
-        return cli_runtime_error("bench", "OpenGL: %s", glerr);
-    }
-    if (getloadavg(&load[0], 1) != 1) load[0] = -1.0;
-    rc = run_all(&b, b.o.oiio || b.o.save || b.o.cache_mb > 0.0f ? dir : NULL);
     if (getloadavg(&load[1], 1) != 1) load[1] = -1.0;
     if (rc == 0) {
         bench_report r;
@@ -592,8 +611,9 @@ int cmd_bench(int argc, char **argv)
             if (bench_save_manifest(&sv, &r) != 0) rc = EXIT_RUNTIME;
         }
     }
-    oiio_ts_destroy(b.ts);
-    if ((b.o.oiio || b.o.cache_mb > 0.0f) && !b.o.save) remove_files(dir);
+    bench_engines_close(b.eng, b.neng);
+    tool_backend_close(&b.files);
+    tool_oiio_store_close(b.store);
     free(b.res);
     free(b.glres);
     tool_backend_close(&b.gl);

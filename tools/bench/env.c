@@ -19,7 +19,6 @@
  * the equator), each the synthetic content at that size. Timing, threads
  * and batches are bench's own (timing.c).
  */
-#define _POSIX_C_SOURCE 200809L
 #include "bench.h"
 #include "cli.h"
 
@@ -27,11 +26,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-#ifdef TEXSAMPLE_HAVE_IO
-#include "sample/sample_io.h"
-#endif
 
 enum { ENV_SETS = 2, ENV_MAX_ENGINES = 48 };
 static const char *const env_set_names[ENV_SETS] = {"env-random", "env-reflection"};
@@ -147,30 +141,6 @@ static int make_maps(int size, sample_texture **ll, sample_texture **cube)
     return rc;
 }
 
-/* OIIO's copy of the lat-long map (sample_io_write_env: the same texels and
- * pyramid, y up, centres at (i + ½)/w), opened in ts; NULL if it cannot be. */
-static oiio_ts_tex *oiio_map(oiio_ts *ts, const sample_texture *ll, const char *path)
-{
-#ifdef TEXSAMPLE_HAVE_IO
-    sample_io_exr_options o;
-    sample_error e;
-    char err[512];
-    oiio_ts_tex *t;
-    sample_io_exr_options_init(&o);
-    o.use_float = 1;
-    if (sample_io_write_env(path, ll, &o, &e) != SAMPLE_OK) {
-        fprintf(stderr, "texsample bench: %s\n", e.message);
-        return NULL;
-    }
-    if (!(t = oiio_ts_open(ts, path, err, sizeof err))) fprintf(stderr, "texsample bench: %s\n", err);
-    return t;
-#else
-    (void)ts, (void)ll, (void)path;
-    fprintf(stderr, "texsample bench: no libsample_io in this build to write OIIO's environment map\n");
-    return NULL;
-#endif
-}
-
 /* The engines: each filter on the lat-long map, on the cube map, and its
  * OIIO twin (lat-long) when OIIO runs. */
 static int env_engines(const char *filters, int oiio, bench_engine *out, int max)
@@ -203,9 +173,10 @@ int bench_env(const bench_env_opts *o)
     bench_engine eng[ENV_MAX_ENGINES];
     sample_texture *ll = NULL, *cube = NULL;
     sample_query3 *q = malloc(o->queries * sizeof *q);
-    oiio_ts *ts = NULL;
+    tool_oiio_store *store = NULL;
     bench_texture tl = {.ours = NULL}, tc = {.ours = NULL};
-    char path[1100];
+    bench_row held = {NULL, NULL};
+    char err[512];
     int neng = env_engines(o->filters, o->oiio, eng, ENV_MAX_ENGINES), set, e, rc = EXIT_OK;
     if (neng < 0) {
         free(q);
@@ -219,9 +190,23 @@ int bench_env(const bench_env_opts *o)
     }
     tl.ours = ll;
     tc.ours = cube;
-    snprintf(path, sizeof path, "%s/texsample_bench_env_%ld.exr", o->tmpdir, (long)getpid());
-    if (o->oiio && (!(ts = oiio_ts_create(0.0)) || !(tl.theirs = oiio_map(ts, ll, path))))
+    /* OpenImageIO's rows read its lat-long map, which its backend writes
+     * from ll (sample_io_write_env: the same texels and pyramid). */
+    if (o->oiio && (!(store = tool_oiio_store_open_in(0.0, o->tmpdir, err, sizeof err)) ||
+                    bench_engines_open_oiio(eng, neng, store) != 0)) {
+        if (!store) fprintf(stderr, "texsample bench: %s\n", err);
         rc = cli_runtime_error("bench", "OpenImageIO's environment map could not be made (--no-oiio leaves it out)");
+    }
+    /* One OpenImageIO row held for the whole run, so that each timed
+     * measurement's prepare finds the map's file by the texture it holds
+     * (tools/backends/oiio.c) instead of reading the map's texels again. */
+    for (e = 0; e < neng && rc == EXIT_OK && store; ++e)
+        if (eng[e].oiio) {
+            if (bench_row_prepare(&eng[e], &tl, &held) != 0)
+                rc = cli_runtime_error("bench", "OpenImageIO's environment map could not be made (--no-oiio "
+                                                "leaves it out)");
+            break;
+        }
     printf("environment maps: lat-long %d x %d, cube %d x %d faces; %zu queries a set, median of %d runs, samples/s\n",
            o->size, o->size / 2, o->size / 4 > 0 ? o->size / 4 : 1, o->size / 4 > 0 ? o->size / 4 : 1, o->queries,
            o->runs);
@@ -233,8 +218,8 @@ int bench_env(const bench_env_opts *o)
             const bench_texture *t = eng[e].env == BENCH_ENV_CUBE ? &tc : &tl;
             bench_timing one, all;
             char label[64];
-            if (bench_time(&eng[e], t, ts, q, o->queries, 1, o->runs, o->batch, &one) != 0 ||
-                bench_time(&eng[e], t, ts, q, o->queries, o->threads, o->runs, o->batch, &all) != 0) {
+            if (bench_time(&eng[e], t, q, o->queries, 1, o->runs, o->batch, &one) != 0 ||
+                bench_time(&eng[e], t, q, o->queries, o->threads, o->runs, o->batch, &all) != 0) {
                 rc = cli_runtime_error("bench", "%s on %s failed", eng[e].name, env_set_names[set]);
                 break;
             }
@@ -243,8 +228,9 @@ int bench_env(const bench_env_opts *o)
                    eng[e].env == BENCH_ENV_CUBE ? "cube" : "latlong", one.median, all.median);
         }
     }
-    oiio_ts_destroy(ts);
-    if (o->oiio) remove(path);
+    bench_row_release(&held);
+    bench_engines_close(eng, neng);
+    tool_oiio_store_close(store);
     sample_texture_destroy(ll);
     sample_texture_destroy(cube);
     free(q);

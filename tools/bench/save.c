@@ -53,6 +53,22 @@ int bench_save_queries(const char *dir, bench_set set, const sample_query *q, si
     return rc;
 }
 
+int bench_save_texture(const char *dir, bench_format fmt, const char *path)
+{
+    void *data = NULL;
+    size_t size = 0;
+    const char *why = "";
+    char out[1100];
+    int rc = 0;
+    snprintf(out, sizeof out, "%s/%s", dir, bench_oiio_file_names[fmt]);
+    if (!cli_read_file(path, &data, &size, &why))
+        rc = cli_runtime_error("bench", "cannot read %s: %s", path, why);
+    else if (!cli_write_file(out, data, size))
+        rc = cli_runtime_error("bench", "cannot write %s", out);
+    free(data);
+    return rc;
+}
+
 static void timing(FILE *f, const bench_result *x)
 {
     if (!x) {

@@ -1,6 +1,7 @@
 /*
- * The benchmark's synthetic texture in each storage format, for libsample
- * and as an OIIO texture file. The content only has to defeat constant-
+ * The benchmark's synthetic texture in each storage format, as libsample's
+ * texture (OpenImageIO's rows read their backend's file of it in the same
+ * format: tools/backends/oiio.c). The content only has to defeat constant-
  * colour shortcuts and give every mip level real detail: a 32-texel
  * checker, two ramps and per-texel hash noise.
  */
@@ -17,7 +18,8 @@ const char *const bench_format_names[BENCH_FMT_COUNT] = {
     [BENCH_FMT_SRGB8] = "srgb8",
 };
 
-/* OIIO 2.4's TIFF writer cannot hold half (oiio_ts.h): .exr for it. */
+/* As OpenImageIO's backend writes them: OIIO 2.4's TIFF writer cannot hold
+ * half, nor OpenEXR 8-bit (oiio_ts.h). */
 const char *const bench_oiio_file_names[BENCH_FMT_COUNT] = {
     [BENCH_FMT_F32] = "bench_float.tx",
     [BENCH_FMT_F16] = "bench_half.exr",
@@ -67,42 +69,7 @@ static unsigned char *to_srgb8(const float *c, size_t n)
     return p;
 }
 
-/* Make OIIO's file of the same texels (and open it when ts is given). OIIO
- * reads 8-bit data as code/255 and never decodes sRGB, so its srgb8 texture
- * holds the same codes and reads them as if linear: the same memory traffic
- * and work, not the same values (doc/benchmarks.md). */
-static int make_oiio(const float *content, const void *stored, int size, bench_format fmt,
-                     oiio_ts *ts, const char *dir, bench_texture *out)
-{
-    static const oiio_ts_format ofmt[BENCH_FMT_COUNT] = {OIIO_TS_FLOAT, OIIO_TS_HALF,
-                                                        OIIO_TS_UINT8};
-    size_t n = (size_t)size * (size_t)size * 4, k;
-    float *codes = NULL;
-    const float *src = content;
-    char path[1024], err[512];
-    int rc;
-    snprintf(path, sizeof path, "%s/%s", dir, bench_oiio_file_names[fmt]);
-    if (fmt == BENCH_FMT_SRGB8) {
-        const unsigned char *c8 = stored;
-        if (!(codes = malloc(n * sizeof *codes))) {
-            fprintf(stderr, "texsample bench: out of memory\n");
-            return -1;
-        }
-        for (k = 0; k < n; ++k) codes[k] = (float)c8[k] / 255.0f;
-        src = codes;
-    }
-    rc = oiio_ts_make_texture(src, size, size, ofmt[fmt], SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT,
-                              path, err, sizeof err);
-    free(codes);
-    if (rc != 0 || (ts && !(out->theirs = oiio_ts_open(ts, path, err, sizeof err)))) {
-        fprintf(stderr, "texsample bench: %s\n", err);
-        return -1;
-    }
-    return 0;
-}
-
-int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts *ts,
-                       const char *dir, bench_texture *out)
+int bench_texture_make(const float *content, int size, bench_format fmt, bench_texture *out)
 {
     size_t n = (size_t)size * (size_t)size, k;
     void *stored = NULL;
@@ -133,7 +100,7 @@ int bench_texture_make(const float *content, int size, bench_format fmt, oiio_ts
     mip.wrap_s = mip.wrap_t = SAMPLE_WRAP_REPEAT;
     if (sample_texture_create(&img, &mip, &out->ours, &err) != SAMPLE_OK) {
         fprintf(stderr, "texsample bench: %s texture: %s\n", bench_format_names[fmt], err.message);
-    } else if (!dir || make_oiio(content, stored, size, fmt, ts, dir, out) == 0) {
+    } else {
         rc = 0;
     }
     free(stored);
@@ -147,14 +114,13 @@ sample_status bench_texsys_batch(void *sys, const sample_texture *tex, const sam
     return sample_texsys_batch((sample_texsys *)sys, tex, s, a);
 }
 
-int bench_texture_cache(bench_texture *t, bench_format fmt, const char *dir, double cache_mb)
+int bench_texture_cache(bench_texture *t, const char *path, double cache_mb)
 {
     sample_texsys_options o;
     sample_texsys *sys = NULL;
     const sample_texture *tex = NULL;
     sample_error err;
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, bench_oiio_file_names[fmt]);
+    char what[64];
     sample_texsys_options_init(&o);
     o.max_memory_mb = cache_mb;
     if (sample_texsys_create(&o, &sys, &err) != SAMPLE_OK || sample_texsys_open(sys, path, &tex, &err) != SAMPLE_OK) {
@@ -162,11 +128,16 @@ int bench_texture_cache(bench_texture *t, bench_format fmt, const char *dir, dou
         sample_texsys_destroy(sys);
         return -1;
     }
-    sample_texture_destroy(t->ours);
-    /* The system owns it; bench_texture_free destroys the system. */
-    t->ours = (sample_texture *)(uintptr_t)tex;
+    /* The system owns tex; bench_texture_free destroys the system. */
+    t->cached = tex;
     t->sys = sys;
-    t->cached = bench_texsys_batch;
+    snprintf(what, sizeof what, "texture system of %g MiB", cache_mb);
+    if (!(t->cached_backend = malloc(sizeof *t->cached_backend)) ||
+        tool_backend_libsample_ctx(t->cached_backend, bench_texsys_batch, sys, what) != 0) {
+        fprintf(stderr, "texsample bench: out of memory\n");
+        bench_texture_free(t);
+        return -1;
+    }
     return 0;
 }
 
@@ -181,11 +152,10 @@ void bench_texture_stats(const bench_texture *t, FILE *f)
 
 void bench_texture_free(bench_texture *t)
 {
-    /* OIIO's handles belong to its TextureSystem; a cached texture to its
-     * texture system. */
-    if (t->sys)
-        sample_texsys_destroy((sample_texsys *)t->sys);
-    else
-        sample_texture_destroy(t->ours);
+    /* A cached texture belongs to its texture system. */
+    if (t->cached_backend) tool_backend_close(t->cached_backend);
+    free(t->cached_backend);
+    sample_texsys_destroy((sample_texsys *)t->sys);
+    sample_texture_destroy(t->ours);
     memset(t, 0, sizeof *t);
 }

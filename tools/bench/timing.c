@@ -41,8 +41,7 @@ typedef struct pool pool;
 
 typedef struct job {
     const bench_engine *e;
-    const bench_texture *t;
-    oiio_ts *ts;
+    const bench_row *row; /* the engine's row on the texture, prepared once */
     const void *q;      /* n queries of qsize bytes */
     size_t qsize;
     float *rgba;
@@ -115,7 +114,7 @@ static void run_tiles(job *j)
         size_t i, hi = j->n - lo < tile ? j->n : lo + tile;
         for (i = lo; i < hi && !j->failed; i += j->batch) {
             size_t m = hi - i < j->batch ? hi - i : j->batch;
-            if (bench_engine_run(j->e, j->t, j->ts, (const char *)j->q + i * j->qsize, m, j->rgba + 4 * i, NULL) != 0)
+            if (bench_row_run(j->e, j->row, (const char *)j->q + i * j->qsize, m, j->rgba + 4 * i, NULL) != 0)
                 j->failed = 1;
         }
     }
@@ -185,6 +184,7 @@ void bench_timing_of(double *v, int n, bench_timing *out)
 }
 
 struct bench_timer {
+    bench_row row;
     job *jobs;
     pthread_t *tid;
     float *rgba;
@@ -205,6 +205,7 @@ static void timer_stop(bench_timer *tm)
     pthread_mutex_destroy(&tm->p.mu);
     pthread_cond_destroy(&tm->p.go);
     pthread_cond_destroy(&tm->p.done);
+    bench_row_release(&tm->row);
     free(tm->rgba);
     free(tm->jobs);
     free(tm->tid);
@@ -212,8 +213,8 @@ static void timer_stop(bench_timer *tm)
     free(tm);
 }
 
-bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oiio_ts *ts, const void *q,
-                              size_t n, int threads, int runs, size_t batch)
+bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, const void *q, size_t n,
+                              int threads, int runs, size_t batch)
 {
     bench_timer *tm;
     size_t batches, tile;
@@ -235,14 +236,13 @@ bench_timer *bench_timer_open(const bench_engine *e, const bench_texture *t, oii
     tm->jobs = calloc((size_t)threads, sizeof *tm->jobs);
     tm->tid = calloc((size_t)threads, sizeof *tm->tid);
     tm->sps = calloc((size_t)runs, sizeof *tm->sps);
-    if (!tm->rgba || !tm->jobs || !tm->tid || !tm->sps) goto fail;
+    if (!tm->rgba || !tm->jobs || !tm->tid || !tm->sps || bench_row_prepare(e, t, &tm->row) != 0) goto fail;
     batches = n / ((size_t)threads * BENCH_TILES_PER_THREAD * batch);
     tile = batch * (batches < 1 ? 1 : batches > BENCH_TILE_BATCHES ? BENCH_TILE_BATCHES : batches);
     for (k = 0; k < threads; ++k) {
         job *j = &tm->jobs[k];
         j->e = e;
-        j->t = t;
-        j->ts = ts;
+        j->row = &tm->row;
         j->q = q;
         j->qsize = e->env ? sizeof(sample_query3) : sizeof(sample_query);
         j->rgba = tm->rgba;
@@ -284,11 +284,10 @@ int bench_timer_close(bench_timer *tm, bench_timing *out)
     return rc;
 }
 
-int bench_time(const bench_engine *e, const bench_texture *t, oiio_ts *ts,
-               const void *q, size_t n, int threads, int runs, size_t batch,
-               bench_timing *out)
+int bench_time(const bench_engine *e, const bench_texture *t, const void *q, size_t n,
+               int threads, int runs, size_t batch, bench_timing *out)
 {
-    bench_timer *tm = bench_timer_open(e, t, ts, q, n, threads, runs, batch);
+    bench_timer *tm = bench_timer_open(e, t, q, n, threads, runs, batch);
     int r;
     if (!tm) return -1;
     for (r = 0; r < runs; ++r)
