@@ -176,7 +176,10 @@ extern "C" void oiio_ts_destroy(oiio_ts *ts)
 {
     if (!ts) return;
     for (oiio_ts_tex *t : ts->opened) delete t;
-    TextureSystem::destroy(ts->sys);
+    // The system is unshared (oiio_ts_create), so the image cache it made
+    // is its own: without teardown_imagecache OpenImageIO 2.4 leaves that
+    // cache allocated (LeakSanitizer: ImageCache::create's aligned_malloc).
+    TextureSystem::destroy(ts->sys, true);
     delete ts;
 }
 
