@@ -1,26 +1,17 @@
 # texsample compare (tools/compare): its metrics as a unit, then the
 # command end to end (ground-truth convergence, ordering of the filters on
 # the plane, outputs, exit codes), then the HTML page in headless Chromium.
-add_executable(compare_metrics ${CMAKE_CURRENT_SOURCE_DIR}/compare_metrics.c
-                               ${PROJECT_SOURCE_DIR}/tools/compare/metrics.c
-                               ${PROJECT_SOURCE_DIR}/tools/compare/legend.c
-                               ${PROJECT_SOURCE_DIR}/tools/compare/font.c)
-target_include_directories(compare_metrics PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
-                           ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
-target_link_libraries(compare_metrics PRIVATE sample m)
-target_compile_options(compare_metrics PRIVATE ${SAMPLE_WARNINGS})
-add_test(NAME compare_metrics COMMAND compare_metrics)
+if(TARGET texsample_compare)
+  add_executable(compare_metrics ${CMAKE_CURRENT_SOURCE_DIR}/compare_metrics.c)
+  target_link_libraries(compare_metrics PRIVATE texsample_compare)
+  target_compile_options(compare_metrics PRIVATE ${SAMPLE_WARNINGS})
+  add_test(NAME compare_metrics COMMAND compare_metrics)
 
-# compare's own scenes through the per-pixel queries (no texsample run).
-if(TARGET texsample_render)
-  add_executable(compare_scenes ${CMAKE_CURRENT_SOURCE_DIR}/compare_scenes.c
-                 ${PROJECT_SOURCE_DIR}/tools/compare/scenes.c ${PROJECT_SOURCE_DIR}/tools/compare/view.c)
-  target_include_directories(compare_scenes PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}
-                             ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
-  target_link_libraries(compare_scenes PRIVATE texsample_render m)
+  # compare's own scenes through the per-pixel queries (no texsample run).
+  add_executable(compare_scenes ${CMAKE_CURRENT_SOURCE_DIR}/compare_scenes.c)
+  target_include_directories(compare_scenes PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  target_link_libraries(compare_scenes PRIVATE texsample_compare)
   target_compile_options(compare_scenes PRIVATE ${SAMPLE_WARNINGS})
-  # The photograph of the teapot-image scene, as in tools/compare.cmake.
-  target_compile_definitions(compare_scenes PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   add_test(NAME compare_scenes COMMAND compare_scenes)
   set_tests_properties(compare_scenes PROPERTIES SKIP_RETURN_CODE 77)
 endif()
@@ -42,25 +33,15 @@ if(TARGET texsample)
     ENVIRONMENT "ASAN_OPTIONS=new_delete_type_mismatch=0")
 endif()
 
-# compare's view, truth, runs, stochastic sweep and plots as a library for
-# the tests below that call them on tiny scenes: solid textures baked into
-# 3D textures (tests/compare_solid.c) and the stochastic sweep with its plot
-# (tests/compare_spp.c).
-if(TARGET texsample_render)
-  set(_cmp_sources configs scenes view run backends truth metrics stochastic cost picture font legend
-    report)
-  list(TRANSFORM _cmp_sources PREPEND ${PROJECT_SOURCE_DIR}/tools/compare/)
-  list(TRANSFORM _cmp_sources APPEND .c)
-  add_library(compare_parts STATIC ${_cmp_sources} ${PROJECT_SOURCE_DIR}/tools/cli.c)
-  target_include_directories(compare_parts PUBLIC ${PROJECT_SOURCE_DIR}/tools ${PROJECT_SOURCE_DIR}/tools/compare)
-  # The photograph of the teapot-image scene, as in tools/compare.cmake.
-  target_compile_definitions(compare_parts PRIVATE TEXSAMPLE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  target_link_libraries(compare_parts PUBLIC texsample_freq texsample_render m)
-  target_compile_options(compare_parts PRIVATE ${SAMPLE_WARNINGS})
+# compare's view, truth, runs, stochastic sweep and plots (texsample's own
+# library, tools/compare.cmake) called on tiny scenes: solid textures baked
+# into 3D textures (tests/compare_solid.c) and the stochastic sweep with its
+# plot (tests/compare_spp.c).
+if(TARGET texsample_compare)
   foreach(t compare_solid compare_spp)
     add_executable(${t} ${CMAKE_CURRENT_SOURCE_DIR}/${t}.c)
     target_include_directories(${t} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-    target_link_libraries(${t} PRIVATE compare_parts)
+    target_link_libraries(${t} PRIVATE texsample_compare)
     target_compile_options(${t} PRIVATE ${SAMPLE_WARNINGS})
   endforeach()
   add_test(NAME compare_solid COMMAND compare_solid)

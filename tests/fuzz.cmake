@@ -4,7 +4,7 @@
 # committed corpus and writes new inputs only into the build tree.
 # Longer runs, and merging what they find into the committed corpus
 # (-merge=1): doc/testing.md, "Longer fuzzing".
-set(SAMPLE_FUZZ_SECONDS 25 CACHE STRING "Seconds each fuzzer runs in ctest")
+set(SAMPLE_FUZZ_SECONDS 20 CACHE STRING "Seconds each fuzzer runs in ctest")
 if(SAMPLE_FUZZ AND NOT TARGET fuzzers)
   add_custom_target(fuzzers) # `cmake --build B --target fuzzers` builds them all
 endif()
