@@ -246,8 +246,8 @@ void fq_report_html(const fq_plan *plan, const fq_sweep *s, const char *const *s
     fq_buf_printf(out, "; texture %d &times; %d, %d &times; %d pixels &times; %d offsets per point.</p>\n",
                   plan->n, plan->n, plan->width, plan->rows, plan->phases);
     fq_buf_printf(out, "<h2>Summary</h2>\n<p>Means weigh every (m, &theta;, r) curve "
-                       "equally; worst is the lowest pass-band mean and the highest aliasing "
-                       "mean of any one curve.</p>\n");
+                       "equally; worst is the lowest mean response below F = 0.4 and the highest "
+                       "aliasing mean of any one curve.</p>\n");
     table_overall(plan, s, &HTML, out);
     table_by_r(plan, s, &HTML, out);
     html_drivers(plan, out);
