@@ -88,16 +88,28 @@ static void free_retired(sample_texsys *sys, int parity)
     sys->retired[parity] = NULL;
 }
 
+/* The batches counted in every stripe with ticket parity p. The sum is no
+ * snapshot, and need not be: a batch that holds a ticket counted itself
+ * before it confirmed the epoch, so its count stays in its stripe, seen by
+ * every read of the stripes from then until its end. */
+static unsigned long ts_active(sample_texsys *sys, int p)
+{
+    unsigned long n = 0;
+    int k;
+    for (k = 0; k < TS_STRIPES; ++k) n += atomic_load(&sys->active[k].n[p]);
+    return n;
+}
+
 static void ts_advance(sample_texsys *sys)
 {
     const uint64_t epoch = atomic_load(&sys->epoch);
     const int old = (int)((epoch + 1) & 1); /* parity of epoch − 1 */
-    if (atomic_load(&sys->active[old]) != 0) return;
+    if (ts_active(sys, old) != 0) return;
     free_retired(sys, old);
     atomic_store(&sys->epoch, epoch + 1);
     /* No batch at all: nothing evicted can be held (a batch that counts
      * itself from now on finds the new epoch and holds no retired tile). */
-    if (atomic_load(&sys->active[0]) + atomic_load(&sys->active[1]) == 0) {
+    if (ts_active(sys, 0) + ts_active(sys, 1) == 0) {
         free_retired(sys, 0);
         free_retired(sys, 1);
     }
@@ -105,21 +117,36 @@ static void ts_advance(sample_texsys *sys)
     note_memory(sys);
 }
 
+/* This thread's stripe: threads are numbered as they first sample, in
+ * the process (a number, no shared state: every system indexes its own
+ * stripes with it). */
+static atomic_uint ts_threads;
+static _Thread_local unsigned ts_thread_id; /* 0: not numbered yet */
+
+static unsigned ts_stripe_of_thread(void)
+{
+    if (ts_thread_id == 0) ts_thread_id = atomic_fetch_add(&ts_threads, 1) + 1;
+    return (ts_thread_id - 1) % TS_STRIPES;
+}
+
+/* The ticket handed to reads_end: the stripe counted in and the parity. */
 uintptr_t io_ts_reads_begin(const struct ls_texel_source *src)
 {
     sample_texsys *sys = ((const ts_head *)src)->sys;
+    ts_stripe *stripe = &sys->active[ts_stripe_of_thread()];
     for (;;) {
-        const uint64_t ticket = atomic_load(&sys->epoch);
-        atomic_fetch_add(&sys->active[ticket & 1], 1);
-        if (atomic_load(&sys->epoch) == ticket) return (uintptr_t)ticket;
-        atomic_fetch_sub(&sys->active[ticket & 1], 1);
+        const uint64_t epoch = atomic_load(&sys->epoch);
+        const int p = (int)(epoch & 1);
+        atomic_fetch_add(&stripe->n[p], 1);
+        if (atomic_load(&sys->epoch) == epoch) return (uintptr_t)(stripe - sys->active) * 2u + (uintptr_t)p;
+        atomic_fetch_sub(&stripe->n[p], 1);
     }
 }
 
 void io_ts_reads_end(const struct ls_texel_source *src, uintptr_t ticket)
 {
     sample_texsys *sys = ((const ts_head *)src)->sys;
-    atomic_fetch_sub(&sys->active[ticket & 1], 1);
+    atomic_fetch_sub(&sys->active[ticket / 2].n[ticket & 1], 1);
     /* Every eviction happens inside a batch, whose own end then sees the
      * flag. */
     if (!atomic_load(&sys->retired_any)) return;

@@ -95,6 +95,19 @@ struct ts_file {
     ts_file *next;            /* the system's list */
 };
 
+/* The running batches' counts are split into stripes, one per thread
+ * (up to TS_STRIPES threads; more share), each alone in its cache line:
+ * a count every batch of every thread adds to and takes from would be the
+ * one line all threads write, moved between cores at every batch
+ * (doc/texture-system.md, "The cache"). A stripe fills 2 lines so that no
+ * two stripes share one whatever the struct's alignment. */
+#define TS_LINE 64
+#define TS_STRIPES 16
+typedef struct ts_stripe {
+    atomic_ulong n[2]; /* batches of this stripe, by ticket parity */
+    char pad[2 * TS_LINE - 2 * sizeof(atomic_ulong)];
+} ts_stripe;
+
 struct sample_texsys {
     sample_texsys_options o;
     char *ocio_config, *colorspace; /* the options' strings, owned */
@@ -107,10 +120,15 @@ struct sample_texsys {
     ts_tile *retired[2];     /* tiles evicted in epochs of each parity */
     /* The epochs (texsys_cache.c): a batch takes its ticket and counts
      * itself without the lock; the epoch moves, and retired_any changes,
-     * under it. */
+     * under it. epoch and retired_any are read by every batch and written
+     * rarely; the counts are written by every batch, so each thread counts
+     * in a stripe of its own, a cache line apart from the others and from
+     * these two. */
+    char pad_epoch[TS_LINE];
     _Atomic uint64_t epoch;    /* batches begun now get this ticket */
-    atomic_ulong active[2];    /* running batches, by ticket parity */
     atomic_int retired_any;    /* a retired list is not empty */
+    char pad_active[TS_LINE];
+    ts_stripe active[TS_STRIPES]; /* running batches, by ticket parity */
     uint64_t clock;          /* open-file recency */
     int open_files;
     sample_texsys_stats st;
