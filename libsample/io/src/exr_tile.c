@@ -12,6 +12,7 @@
  * exactly.
  */
 #include "exr_tile.h"
+#include "texel.h" /* the levels of a sample_texture */
 
 #include <OpenEXR/openexr.h>
 
