@@ -2,10 +2,7 @@
  * The texture system's direct OpenEXR tile reader (exr_tile.h). The
  * OpenEXR core C library (OpenEXR 3.1, "OpenEXRCore" in its documentation)
  * decodes one chunk per call on the caller's thread: no C++ thread pool
- * woken per tile, no intermediate frame buffer, reads by pread so that one
- * context serves several threads (openexr_decode.h: "meant to be used by
- * separate threads, which can all be accessing the same context
- * concurrently"). Only the layout exr_read.cpp takes is taken here — one
+ * woken per tile, no intermediate frame buffer, one pread per chunk. Only the layout exr_read.cpp takes is taken here — one
  * tiled part, MIPMAP_LEVELS, ROUND_DOWN, channels exactly a prefix of R,
  * G, B, A of one type — and the texels come out as OpenImageIO's reader
  * gives them: channels in R, G, B, A order, half kept or widened to float
@@ -24,12 +21,16 @@ struct io_exr_tile {
     int nchan;
     exr_pixel_type_t out_type; /* plan->read_as */
     size_t out_bytes;          /* 2 or 4 */
+    /* One decoding pipeline kept from tile to tile, so that its buffers
+     * are reused (exr_decoding_update) rather than allocated per tile. */
+    exr_decode_pipeline_t d;
+    int has_d;
 };
 
 /* The core library reports a failure's detail through the context's error
  * handler before the call returns (openexr_context.h, error_handler_fn);
- * each thread keeps its own last message, so concurrent reads of one
- * context do not mix them. */
+ * each thread keeps its own last message, so that loads of different
+ * files on other threads do not mix theirs in. */
 static _Thread_local char last_message[256];
 
 static void keep_message(exr_const_context_t ctx, exr_result_t code, const char *msg)
@@ -131,7 +132,7 @@ sample_status io_exr_tile_open(const char *path, const sample_texture *tex, int 
 sample_status io_exr_tile_read(io_exr_tile *x, int lv, int tx, int ty, int w, int h, unsigned char *dst,
                                size_t pixel, size_t line, sample_error *err)
 {
-    exr_decode_pipeline_t d = EXR_DECODE_PIPELINE_INITIALIZER;
+    exr_decode_pipeline_t *d = &x->d;
     exr_chunk_info_t ci;
     exr_result_t rv;
     int c;
@@ -145,9 +146,14 @@ sample_status io_exr_tile_read(io_exr_tile *x, int lv, int tx, int ty, int w, in
                  ci.height, w, h);
         rv = EXR_ERR_CORRUPT_CHUNK;
     }
-    if (rv == EXR_ERR_SUCCESS) rv = exr_decoding_initialize(x->ctx, 0, &ci, &d);
-    for (c = 0; rv == EXR_ERR_SUCCESS && c < d.channel_count; ++c) {
-        exr_coding_channel_info_t *ch = &d.channels[c];
+    if (rv == EXR_ERR_SUCCESS && x->has_d) {
+        rv = exr_decoding_update(x->ctx, 0, &ci, d);
+    } else if (rv == EXR_ERR_SUCCESS) {
+        rv = exr_decoding_initialize(x->ctx, 0, &ci, d);
+        x->has_d = rv == EXR_ERR_SUCCESS;
+    }
+    for (c = 0; rv == EXR_ERR_SUCCESS && c < d->channel_count; ++c) {
+        exr_coding_channel_info_t *ch = &d->channels[c];
         const int k = rgba_index(ch->channel_name);
         if (k < 0 || k >= x->nchan || ch->width != w || ch->height != h) {
             snprintf(last_message, sizeof last_message, "channel '%s' does not fit the tile", ch->channel_name);
@@ -160,10 +166,13 @@ sample_status io_exr_tile_read(io_exr_tile *x, int lv, int tx, int ty, int w, in
         ch->user_bytes_per_element = (int16_t)x->out_bytes;
         ch->user_data_type = (uint16_t)x->out_type;
     }
-    if (rv == EXR_ERR_SUCCESS) rv = exr_decoding_choose_default_routines(x->ctx, 0, &d);
-    if (rv == EXR_ERR_SUCCESS) rv = exr_decoding_run(x->ctx, 0, &d);
-    exr_decoding_destroy(x->ctx, &d);
+    /* The routines depend on where the texels go: chosen again per tile. */
+    if (rv == EXR_ERR_SUCCESS) rv = exr_decoding_choose_default_routines(x->ctx, 0, d);
+    if (rv == EXR_ERR_SUCCESS) rv = exr_decoding_run(x->ctx, 0, d);
     if (rv == EXR_ERR_SUCCESS) return SAMPLE_OK;
+    /* After a failure the pipeline starts afresh. */
+    exr_decoding_destroy(x->ctx, d);
+    x->has_d = 0;
     if (rv == EXR_ERR_OUT_OF_MEMORY)
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "'%s': out of memory decoding tile (%d, %d) of level %d",
                                 x->path, tx, ty, lv);
@@ -174,6 +183,7 @@ sample_status io_exr_tile_read(io_exr_tile *x, int lv, int tx, int ty, int w, in
 void io_exr_tile_close(io_exr_tile *x)
 {
     if (!x) return;
+    if (x->has_d) exr_decoding_destroy(x->ctx, &x->d);
     if (x->ctx) exr_finish(&x->ctx);
     free(x->path);
     free(x);

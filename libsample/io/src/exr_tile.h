@@ -26,8 +26,9 @@ sample_status io_exr_tile_open(const char *path, const sample_texture *tex, int 
  * level: the file must agree), into dst: texel (i, j) at dst + j × line +
  * i × pixel, channel c at c × 2 (half) or c × 4 (float) bytes within it.
  * A tile the file lacks or cannot decode is SAMPLE_E_CORRUPT with a
- * message naming the file, the level and the tile. May run on several
- * threads at once for one x (the core library reads with pread). */
+ * message naming the file, the level and the tile. One call at a time
+ * per x (its decoding pipeline is reused; texsys_cache.c holds the
+ * file's io_lock). */
 sample_status io_exr_tile_read(io_exr_tile *x, int lv, int tx, int ty, int w, int h, unsigned char *dst,
                                size_t pixel, size_t line, sample_error *err);
 
