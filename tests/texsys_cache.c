@@ -255,7 +255,8 @@ static void write_core_exr(const char *path, const sample_texture *src, int tile
 }
 
 /* Layouts the direct OpenEXR tile reader takes (PIZ and uncompressed,
- * half and float) give the resident texture's bits, every tile decoded by
+ * half and float, 2 to 4 channels, decoded as stored or converted from
+ * another colour space) give the resident texture's bits, every tile decoded by
  * it; a ROUND_UP file (power-of-two sides: the same level sizes) is left
  * to OpenImageIO, with the same bits. */
 static void test_direct_reader(void)
@@ -268,11 +269,17 @@ static void test_direct_reader(void)
         exr_tile_round_mode_t round;
         exr_pixel_type_t type;
         int direct;
+        const char *cs; /* decoded from this colour space; NULL: the file's */
     } files[] = {
-        {"piz.exr", SAMPLE_FORMAT_F16, 4, 77, 45, 16, EXR_COMPRESSION_PIZ, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1},
-        {"raw3.exr", SAMPLE_FORMAT_F32, 3, 40, 64, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_FLOAT, 1},
-        {"raw2.exr", SAMPLE_FORMAT_F16, 2, 93, 70, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1},
-        {"up.exr", SAMPLE_FORMAT_F16, 4, 64, 32, 16, EXR_COMPRESSION_ZIP, EXR_TILE_ROUND_UP, EXR_PIXEL_HALF, 0},
+        {"piz.exr", SAMPLE_FORMAT_F16, 4, 77, 45, 16, EXR_COMPRESSION_PIZ, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1, NULL},
+        {"raw3.exr", SAMPLE_FORMAT_F32, 3, 40, 64, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_FLOAT, 1,
+         NULL},
+        {"raw2.exr", SAMPLE_FORMAT_F16, 2, 93, 70, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
+         NULL},
+        /* Converted: decoded as float, then the plan (io_plan_apply). */
+        {"aces.exr", SAMPLE_FORMAT_F16, 4, 50, 60, 16, EXR_COMPRESSION_PIZ, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
+         "acescg"},
+        {"up.exr", SAMPLE_FORMAT_F16, 4, 64, 32, 16, EXR_COMPRESSION_ZIP, EXR_TILE_ROUND_UP, EXR_PIXEL_HALF, 0, NULL},
     };
     size_t f;
     for (f = 0; f < sizeof files / sizeof files[0]; ++f) {
@@ -281,12 +288,24 @@ static void test_direct_reader(void)
         char path[1024];
         sample_texture *src = io_test_texture(files[f].w, files[f].h, files[f].nc, files[f].fmt, 31u + (unsigned)f,
                                               SAMPLE_MIPGEN_BOX, 0);
-        sample_texture *resident;
-        const sample_texture *cached;
+        sample_texture *resident = NULL;
+        const sample_texture *cached = NULL;
+        sample_error e;
         write_core_exr(io_path(path, sizeof path, io_scratch, files[f].name), src, files[f].tile, files[f].comp,
                        files[f].round, files[f].type);
-        resident = ts_resident(path);
-        cached = open_ok(sys, path);
+        if (files[f].cs) {
+            sample_io_options o;
+            sample_mip_params mip;
+            sample_io_options_init(&o);
+            o.mip_wrap_from_file = 1;
+            o.colorspace = files[f].cs;
+            sample_mip_params_init(&mip);
+            CHECK(io_read_texture_col(path, ts_col, &o, &mip, &resident, &e) == SAMPLE_OK, "%s", e.message);
+            CHECK(sample_texsys_open_colorspace(sys, path, files[f].cs, &cached, &e) == SAMPLE_OK, "%s", e.message);
+        } else {
+            resident = ts_resident(path);
+            cached = open_ok(sys, path);
+        }
         if (resident && cached) {
             CHECK(compare_all(sys, cached, resident) == 0, "%s: cached texels differ from resident ones",
                   files[f].name);

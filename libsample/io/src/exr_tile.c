@@ -19,8 +19,9 @@ struct io_exr_tile {
     exr_context_t ctx;
     char *path;
     int nchan;
-    exr_pixel_type_t out_type; /* plan->read_as */
-    size_t out_bytes;          /* 2 or 4 */
+    exr_pixel_type_t type; /* the channels' type in the file */
+    size_t bytes;          /* its size: 2 or 4 */
+    int widen;             /* 1: half in the file, read as float */
     /* One decoding pipeline kept from tile to tile, so that its buffers
      * are reused (exr_decoding_update) rather than allocated per tile. */
     exr_decode_pipeline_t d;
@@ -96,11 +97,10 @@ static int eligible(io_exr_tile *x, const sample_texture *tex, int side, const i
     if (x->nchan == 0 || x->nchan != plan->nchan) return 0;
     /* Half kept, half widened to float, float kept: exact, as OpenImageIO
      * converts. Float narrowed to half is the plan's (io_plan_apply). */
-    if (plan->read_as == IO_HALF && type == EXR_PIXEL_HALF) x->out_type = EXR_PIXEL_HALF;
-    else if (plan->read_as == IO_FLOAT) x->out_type = EXR_PIXEL_FLOAT;
-    else return 0;
-    x->out_bytes = x->out_type == EXR_PIXEL_HALF ? 2 : 4;
-    return 1;
+    x->type = type;
+    x->bytes = type == EXR_PIXEL_HALF ? 2 : 4;
+    x->widen = type == EXR_PIXEL_HALF && plan->read_as == IO_FLOAT;
+    return plan->read_as == IO_FLOAT || (plan->read_as == IO_HALF && type == EXR_PIXEL_HALF);
 }
 
 sample_status io_exr_tile_open(const char *path, const sample_texture *tex, int log2, const io_plan *plan,
@@ -127,6 +127,25 @@ sample_status io_exr_tile_open(const char *path, const sample_texture *tex, int 
     }
     *out = x;
     return SAMPLE_OK;
+}
+
+/* Half to float in place, pixel by pixel: channel c's float (bytes 4c to
+ * 4c + 3) is written after the halves it covers (2c and up) were read,
+ * the last channel first. Exact, as every half is a float. */
+static void widen(unsigned char *dst, int w, int h, int nchan, size_t pixel, size_t line)
+{
+    int i, j, c;
+    for (j = 0; j < h; ++j)
+        for (i = 0; i < w; ++i) {
+            unsigned char *p = dst + (size_t)j * line + (size_t)i * pixel;
+            for (c = nchan - 1; c >= 0; --c) {
+                uint16_t hv;
+                float f;
+                memcpy(&hv, p + 2 * c, 2);
+                f = sample_half_to_float(hv);
+                memcpy(p + 4 * c, &f, 4);
+            }
+        }
 }
 
 sample_status io_exr_tile_read(io_exr_tile *x, int lv, int tx, int ty, int w, int h, unsigned char *dst,
@@ -160,15 +179,20 @@ sample_status io_exr_tile_read(io_exr_tile *x, int lv, int tx, int ty, int w, in
             rv = EXR_ERR_CORRUPT_CHUNK;
             break;
         }
-        ch->decode_to_ptr = dst + (size_t)k * x->out_bytes;
+        /* The texels as stored, at the start of each pixel: OpenEXR
+         * 3.1.5's half-to-float unpackers for channels in reverse order
+         * (the file lists A, B, G, R) swap the channels, so half is
+         * widened below instead. */
+        ch->decode_to_ptr = dst + (size_t)k * x->bytes;
         ch->user_pixel_stride = (int32_t)pixel;
         ch->user_line_stride = (int32_t)line;
-        ch->user_bytes_per_element = (int16_t)x->out_bytes;
-        ch->user_data_type = (uint16_t)x->out_type;
+        ch->user_bytes_per_element = (int16_t)x->bytes;
+        ch->user_data_type = (uint16_t)x->type;
     }
     /* The routines depend on where the texels go: chosen again per tile. */
     if (rv == EXR_ERR_SUCCESS) rv = exr_decoding_choose_default_routines(x->ctx, 0, d);
     if (rv == EXR_ERR_SUCCESS) rv = exr_decoding_run(x->ctx, 0, d);
+    if (rv == EXR_ERR_SUCCESS && x->widen) widen(dst, w, h, x->nchan, pixel, line);
     if (rv == EXR_ERR_SUCCESS) return SAMPLE_OK;
     /* After a failure the pipeline starts afresh. */
     exr_decoding_destroy(x->ctx, d);
