@@ -255,7 +255,7 @@ static void write_core_exr(const char *path, const sample_texture *src, int tile
 }
 
 /* Layouts the direct OpenEXR tile reader takes (PIZ and uncompressed,
- * half and float, 2 to 4 channels, decoded as stored or converted from
+ * half and float, 1 to 4 channels, decoded as stored or converted from
  * another colour space) give the resident texture's bits, every tile decoded by
  * it; a ROUND_UP file (power-of-two sides: the same level sizes) is left
  * to OpenImageIO, with the same bits. */
@@ -275,6 +275,8 @@ static void test_direct_reader(void)
         {"raw3.exr", SAMPLE_FORMAT_F32, 3, 40, 64, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_FLOAT, 1,
          NULL},
         {"raw2.exr", SAMPLE_FORMAT_F16, 2, 93, 70, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
+         NULL},
+        {"raw1.exr", SAMPLE_FORMAT_F16, 1, 90, 70, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
          NULL},
         /* Converted: decoded as float, then the plan (io_plan_apply). */
         {"aces.exr", SAMPLE_FORMAT_F16, 4, 50, 60, 16, EXR_COMPRESSION_PIZ, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
