@@ -8,11 +8,14 @@
  * gone, unreadable, memory refused, more files than may be open) read as
  * the fill colour exactly and are recorded; two systems are independent;
  * UDIM sets continue across tile edges and read the fill where a tile is
- * missing.
+ * missing; the direct OpenEXR tile reader serves PIZ, uncompressed and
+ * float files (stats: tiles_direct) and leaves a ROUND_UP file to
+ * OpenImageIO, with the same bits.
  */
 #include "texsys_util.h"
 #include "texsys_internal.h" /* io_texsys_fail_allocs */
 
+#include <OpenEXR/openexr.h>
 #include <fcntl.h>
 #include <sys/wait.h>
 
@@ -160,6 +163,8 @@ static void test_same_bits(void)
         CHECK(compare_all(sys, cached, resident) == 0, "%s: cached texels differ from resident ones", files[f].name);
         CHECK(open_ok(sys, path) == cached, "a name opens once");
         sample_texsys_stats_get(sys, &st);
+        CHECK(st.tiles_direct == (files[f].tiled ? st.tiles_read : 0), "%s: %llu of %llu tiles read directly",
+              files[f].name, (unsigned long long)st.tiles_direct, (unsigned long long)st.tiles_read);
         CHECK(st.evictions > 0 && st.tiles_read > st.evictions && st.misses > 0 && st.errors == 0,
               "%s: %llu evictions, %llu tiles read, %llu misses, %llu errors", files[f].name,
               (unsigned long long)st.evictions, (unsigned long long)st.tiles_read, (unsigned long long)st.misses,
@@ -170,6 +175,149 @@ static void test_same_bits(void)
         printf("%s: %llu tiles read, %llu evicted, peak %zu bytes under a limit of %d\n", files[f].name,
                (unsigned long long)st.tiles_read, (unsigned long long)st.evictions, st.peak_memory,
                files[f].kib * 1024);
+        sample_texture_destroy(resident);
+        sample_texture_destroy(src);
+        sample_texsys_destroy(sys);
+    }
+}
+
+/* Every level of `src` as a single-part tiled OpenEXR written with the
+ * OpenEXR core library: MIPMAP_LEVELS with rounding `round`, channels R,
+ * G, B, A (as many as src has) of `type`, compression `comp` — the
+ * layouts sample_io_write_mip (ZIP only) does not write. */
+static void write_core_exr(const char *path, const sample_texture *src, int tile, exr_compression_t comp,
+                           exr_tile_round_mode_t round, exr_pixel_type_t type)
+{
+    static const char *const names[4] = {"R", "G", "B", "A"};
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    exr_context_t c = NULL;
+    const int nc = src->channels;
+    const size_t eb = type == EXR_PIXEL_HALF ? 2 : 4;
+    int part = 0, lv, k, ok;
+    int32_t nlx = 0, nly = 0;
+    ok = exr_start_write(&c, path, EXR_WRITE_FILE_DIRECTLY, &init) == EXR_ERR_SUCCESS &&
+         exr_add_part(c, "texture", EXR_STORAGE_TILED, &part) == EXR_ERR_SUCCESS &&
+         exr_initialize_required_attr_simple(c, part, src->width, src->height, comp) == EXR_ERR_SUCCESS &&
+         exr_set_tile_descriptor(c, part, (uint32_t)tile, (uint32_t)tile, EXR_TILE_MIPMAP_LEVELS, round) ==
+             EXR_ERR_SUCCESS;
+    for (k = 0; ok && k < nc; ++k)
+        ok = exr_add_channel(c, part, names[k], type, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1) == EXR_ERR_SUCCESS;
+    ok = ok && exr_write_header(c) == EXR_ERR_SUCCESS && exr_get_tile_levels(c, part, &nlx, &nly) == EXR_ERR_SUCCESS;
+    CHECK(ok && nlx == src->nlevels, "%s: header (%d levels)", path, nlx);
+    for (lv = 0; ok && lv < nlx; ++lv) {
+        int32_t w = 0, h = 0, tx, ty, i, j;
+        unsigned char *px;
+        ok = exr_get_level_sizes(c, part, lv, lv, &w, &h) == EXR_ERR_SUCCESS;
+        px = (unsigned char *)malloc((size_t)w * (size_t)h * (size_t)nc * eb);
+        for (j = 0; ok && j < h; ++j)
+            for (i = 0; i < w; ++i) {
+                float v[4];
+                unsigned char *p = px + ((size_t)j * (size_t)w + (size_t)i) * (size_t)nc * eb;
+                sample_texture_texel(src, lv, i, j, v);
+                for (k = 0; k < nc; ++k) {
+                    uint16_t hv = sample_float_to_half(v[k]);
+                    memcpy(p + (size_t)k * eb, eb == 2 ? (void *)&hv : (void *)&v[k], eb);
+                }
+            }
+        for (ty = 0; ok && ty * tile < h; ++ty)
+            for (tx = 0; ok && tx * tile < w; ++tx) {
+                exr_encode_pipeline_t e = EXR_ENCODE_PIPELINE_INITIALIZER;
+                exr_chunk_info_t ci;
+                ok = exr_write_tile_chunk_info(c, part, tx, ty, lv, lv, &ci) == EXR_ERR_SUCCESS;
+                /* OpenEXR 3.1's exr_write_tile_chunk_info cuts edge tiles
+                 * at level 0's data window, not the level's: a level's
+                 * edge tile is sized here (OpenEXR file layout, "Tiles":
+                 * a tile past a level's edge holds only the pixels
+                 * inside). */
+                ci.width = w - tx * tile < tile ? w - tx * tile : tile;
+                ci.height = h - ty * tile < tile ? h - ty * tile : tile;
+                ci.unpacked_size = (uint64_t)ci.width * (uint64_t)ci.height * (uint64_t)nc * eb;
+                ok = ok && exr_encoding_initialize(c, part, &ci, &e) == EXR_ERR_SUCCESS;
+                for (k = 0; ok && k < e.channel_count; ++k) {
+                    exr_coding_channel_info_t *ch = &e.channels[k];
+                    int n = 0;
+                    while (strcmp(ch->channel_name, names[n])) ++n;
+                    ch->encode_from_ptr = px + (((size_t)ty * (size_t)tile * (size_t)w + (size_t)tx * (size_t)tile) *
+                                                    (size_t)nc + (size_t)n) * eb;
+                    ch->user_pixel_stride = (int32_t)((size_t)nc * eb);
+                    ch->user_line_stride = (int32_t)((size_t)w * (size_t)nc * eb);
+                    ch->user_bytes_per_element = (int16_t)eb;
+                    ch->user_data_type = (uint16_t)type;
+                }
+                ok = ok && exr_encoding_choose_default_routines(c, part, &e) == EXR_ERR_SUCCESS &&
+                     exr_encoding_run(c, part, &e) == EXR_ERR_SUCCESS;
+                exr_encoding_destroy(c, &e);
+            }
+        free(px);
+    }
+    CHECK(ok, "%s: tiles written", path);
+    exr_finish(&c);
+}
+
+/* Layouts the direct OpenEXR tile reader takes (PIZ and uncompressed,
+ * half and float, 1 to 4 channels, decoded as stored or converted from
+ * another colour space) give the resident texture's bits, every tile decoded by
+ * it; a ROUND_UP file (power-of-two sides: the same level sizes) is left
+ * to OpenImageIO, with the same bits. */
+static void test_direct_reader(void)
+{
+    static const struct {
+        const char *name;
+        sample_format fmt;
+        int nc, w, h, tile;
+        exr_compression_t comp;
+        exr_tile_round_mode_t round;
+        exr_pixel_type_t type;
+        int direct;
+        const char *cs; /* decoded from this colour space; NULL: the file's */
+    } files[] = {
+        {"piz.exr", SAMPLE_FORMAT_F16, 4, 77, 45, 16, EXR_COMPRESSION_PIZ, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1, NULL},
+        {"raw3.exr", SAMPLE_FORMAT_F32, 3, 40, 64, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_FLOAT, 1,
+         NULL},
+        {"raw2.exr", SAMPLE_FORMAT_F16, 2, 93, 70, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
+         NULL},
+        {"raw1.exr", SAMPLE_FORMAT_F16, 1, 90, 70, 8, EXR_COMPRESSION_NONE, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
+         NULL},
+        /* Converted: decoded as float, then the plan (io_plan_apply). */
+        {"aces.exr", SAMPLE_FORMAT_F16, 4, 50, 60, 16, EXR_COMPRESSION_PIZ, EXR_TILE_ROUND_DOWN, EXR_PIXEL_HALF, 1,
+         "acescg"},
+        {"up.exr", SAMPLE_FORMAT_F16, 4, 64, 32, 16, EXR_COMPRESSION_ZIP, EXR_TILE_ROUND_UP, EXR_PIXEL_HALF, 0, NULL},
+    };
+    size_t f;
+    for (f = 0; f < sizeof files / sizeof files[0]; ++f) {
+        sample_texsys *sys = new_system(12 / 1024.0, 4);
+        sample_texsys_stats st;
+        char path[1024];
+        sample_texture *src = io_test_texture(files[f].w, files[f].h, files[f].nc, files[f].fmt, 31u + (unsigned)f,
+                                              SAMPLE_MIPGEN_BOX, 0);
+        sample_texture *resident = NULL;
+        const sample_texture *cached = NULL;
+        sample_error e;
+        write_core_exr(io_path(path, sizeof path, io_scratch, files[f].name), src, files[f].tile, files[f].comp,
+                       files[f].round, files[f].type);
+        if (files[f].cs) {
+            sample_io_options o;
+            sample_mip_params mip;
+            sample_io_options_init(&o);
+            o.mip_wrap_from_file = 1;
+            o.colorspace = files[f].cs;
+            sample_mip_params_init(&mip);
+            CHECK(io_read_texture_col(path, ts_col, &o, &mip, &resident, &e) == SAMPLE_OK, "%s", e.message);
+            CHECK(sample_texsys_open_colorspace(sys, path, files[f].cs, &cached, &e) == SAMPLE_OK, "%s", e.message);
+        } else {
+            resident = ts_resident(path);
+            cached = open_ok(sys, path);
+        }
+        if (resident && cached) {
+            CHECK(compare_all(sys, cached, resident) == 0, "%s: cached texels differ from resident ones",
+                  files[f].name);
+            sample_texsys_stats_get(sys, &st);
+            CHECK(st.evictions > 0 && st.errors == 0 &&
+                      st.tiles_direct == (files[f].direct ? st.tiles_read : 0),
+                  "%s: %llu of %llu tiles read directly, %llu evictions, %llu errors", files[f].name,
+                  (unsigned long long)st.tiles_direct, (unsigned long long)st.tiles_read,
+                  (unsigned long long)st.evictions, (unsigned long long)st.errors);
+        }
         sample_texture_destroy(resident);
         sample_texture_destroy(src);
         sample_texsys_destroy(sys);
@@ -253,7 +401,9 @@ static void test_truncated(void)
     n = count_fill(x.sys, x.t, x.resident, &other);
     CHECK(n > 0 && n < 32 * 32 && other == 0, "%d texels read the fill, %d neither fill nor texel", n, other);
     before = sample_texsys_texture_error(x.sys, x.t, &first);
-    CHECK(before > 0 && first.message[0], "error recorded: %s", first.message);
+    CHECK(before > 0 && strstr(first.message, x.path) && strstr(first.message, "of level ") &&
+              strstr(first.message, "tile ("),
+          "error recorded, naming the file, the tile and the level: %s", first.message);
     /* Once failed, a tile reads the fill again without another error. */
     CHECK(count_fill(x.sys, x.t, x.resident, &other) == n, "the same texels again");
     CHECK(sample_texsys_texture_error(x.sys, x.t, NULL) == before, "no new error");
@@ -608,6 +758,7 @@ int main(int argc, char **argv)
     io_scratch = argv[2];
     texsample = argc > 3 && argv[3][0] ? argv[3] : NULL;
     RUN(test_same_bits);
+    RUN(test_direct_reader);
     RUN(test_truncated);
     RUN(test_corrupt);
     RUN(test_gone_and_unreadable);

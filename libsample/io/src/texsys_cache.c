@@ -5,6 +5,7 @@
  * free an evicted tile only once no batch that could hold it is running.
  */
 #include "texsys_internal.h"
+#include "exr_tile.h"
 
 #include <stdlib.h>
 
@@ -208,8 +209,10 @@ static void ts_evict_one(sample_texsys *sys)
 }
 
 /* Room for `bytes` more under the limit, evicting as needed, then the
- * tile's memory; NULL when it cannot be had. */
-static ts_tile *ts_tile_alloc(ts_file *f, int lv, size_t slot, size_t px_bytes)
+ * tile's memory; NULL when it cannot be had. Its texels are zeroed only
+ * where `partial` (a tile at a level's right or bottom edge, whose texels
+ * outside the level no load writes): a full tile is written whole. */
+static ts_tile *ts_tile_alloc(ts_file *f, int lv, size_t slot, size_t px_bytes, int partial)
 {
     sample_texsys *sys = f->h.sys;
     const size_t bytes = sizeof(ts_tile) + px_bytes;
@@ -220,9 +223,11 @@ static ts_tile *ts_tile_alloc(ts_file *f, int lv, size_t slot, size_t px_bytes)
     if (sys->fail_allocs > 0) {
         sys->fail_allocs--;
     } else {
-        t = (ts_tile *)calloc(1, bytes);
+        t = (ts_tile *)malloc(bytes);
     }
     if (t) {
+        memset(t, 0, sizeof *t);
+        if (partial) memset(t + 1, 0, px_bytes);
         t->file = f;
         t->lv = lv;
         t->slot = slot;
@@ -235,14 +240,27 @@ static ts_tile *ts_tile_alloc(ts_file *f, int lv, size_t slot, size_t px_bytes)
     return t;
 }
 
-/* A loaded tile into the ring and its slot. */
-static void ts_publish(ts_file *f, ts_tile *t, size_t texel_bytes)
+/* A tile allocated but not loaded: its memory back. */
+static void ts_tile_discard(ts_file *f, ts_tile *t)
+{
+    sample_texsys *sys = f->h.sys;
+    pthread_mutex_lock(&sys->lock);
+    sys->resident -= t->bytes;
+    note_memory(sys);
+    pthread_mutex_unlock(&sys->lock);
+    free(t);
+}
+
+/* A loaded tile into the ring and its slot; `direct`: decoded by the
+ * direct OpenEXR tile reader. */
+static void ts_publish(ts_file *f, ts_tile *t, size_t texel_bytes, int direct)
 {
     sample_texsys *sys = f->h.sys;
     pthread_mutex_lock(&sys->lock);
     atomic_store_explicit(&t->used, 1, memory_order_relaxed);
     ring_insert(sys, t);
     sys->st.tiles_read++;
+    if (direct) sys->st.tiles_direct++;
     sys->st.bytes_read += (uint64_t)(t->bytes - sizeof(ts_tile)) / texel_bytes * texel_bytes;
     atomic_store_explicit(&f->slots[t->lv][t->slot], t, memory_order_release);
     pthread_mutex_unlock(&sys->lock);
@@ -274,19 +292,23 @@ static int close_lru_reader(sample_texsys *sys, const ts_file *f)
     if (!best) return 0;
     io_reader_close(best->reader);
     best->reader = NULL;
+    io_exr_tile_close(best->exr);
+    best->exr = NULL;
     best->open = 0;
     sys->open_files--;
     ts_unlock(&best->io_lock);
     return 1;
 }
 
+/* f's reader open (io_lock held): the direct OpenEXR tile reader unless
+ * it once refused the file, else OpenImageIO's. */
 static sample_status ts_reader_acquire(ts_file *f, sample_error *err)
 {
     sample_texsys *sys = f->h.sys;
     sample_status st;
     pthread_mutex_lock(&sys->lock);
     f->last_open = ++sys->clock;
-    if (f->reader) {
+    if (f->reader || f->exr) {
         pthread_mutex_unlock(&sys->lock);
         return SAMPLE_OK;
     }
@@ -299,7 +321,11 @@ static sample_status ts_reader_acquire(ts_file *f, sample_error *err)
     sys->st.files_opened++;
     pthread_mutex_unlock(&sys->lock);
     st = sample_io_check_regular_file(f->path, "texture", err);
-    if (st == SAMPLE_OK) st = io_reader_open(f->path, NULL, 0, NULL, &f->reader, err);
+    if (st == SAMPLE_OK && !f->exr_refused) {
+        st = io_exr_tile_open(f->path, f->tex, f->log2, &f->plan, &f->exr, err);
+        f->exr_refused = st == SAMPLE_OK && !f->exr;
+    }
+    if (st == SAMPLE_OK && !f->exr) st = io_reader_open(f->path, NULL, 0, NULL, &f->reader, err);
     if (st != SAMPLE_OK) {
         pthread_mutex_lock(&sys->lock);
         sys->open_files--;
@@ -313,14 +339,31 @@ static sample_status ts_reader_acquire(ts_file *f, sample_error *err)
 
 static int min_int(int a, int b) { return a < b ? a : b; }
 
+/* The texels of level lv's tile (tx, ty) inside the level: w × h. */
+static void tile_extent(const ts_file *f, int lv, int tx, int ty, int *w, int *h)
+{
+    const struct sample_level *L = &f->tex->level[lv];
+    const int side = 1 << f->log2;
+    *w = min_int(side, L->w - tx * side);
+    *h = min_int(side, L->h - ty * side);
+}
+
+static int tile_partial(const ts_file *f, int lv, int tx, int ty)
+{
+    int w, h;
+    tile_extent(f, lv, tx, ty, &w, &h);
+    return w < 1 << f->log2 || h < 1 << f->log2;
+}
+
 /* Texels of level lv's tile (tx, ty) of `from` (resident) into t. */
 static void copy_tile(const ts_file *f, const sample_texture *from, int lv, int tx, int ty, ts_tile *t)
 {
     const struct sample_level *L = &from->level[lv];
     const int side = 1 << f->log2, i0 = tx * side, j0 = ty * side;
-    const int w = min_int(side, L->w - i0), h = min_int(side, L->h - j0);
     const size_t tb = from->texel_bytes;
+    int w, h;
     int j;
+    tile_extent(f, lv, tx, ty, &w, &h);
     for (j = 0; j < h; ++j)
         memcpy(t->px + (size_t)j * (size_t)side * tb, L->data + (size_t)(j0 + j) * L->stride + (size_t)i0 * tb,
                (size_t)w * tb);
@@ -370,53 +413,75 @@ static ts_tile *load_whole(ts_file *f, int lv, int tx, int ty, sample_error *err
                     pthread_mutex_unlock(&sys->lock);
                     if (!room) continue;
                 }
-                t = ts_tile_alloc(f, k, slot, tile_px_bytes(f));
+                t = ts_tile_alloc(f, k, slot, tile_px_bytes(f), tile_partial(f, k, x, y));
                 if (!t) {
                     if (wanted)
                         sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a tile of '%s'", f->path);
                     continue;
                 }
                 copy_tile(f, tex, k, x, y, t);
-                ts_publish(f, t, tex->texel_bytes);
+                ts_publish(f, t, tex->texel_bytes, 0);
                 if (wanted) want = t;
             }
     sample_texture_destroy(tex);
     return want;
 }
 
-/* A tile of a tiled file: read_tiles, then the plan (conversion,
- * premultiplication, narrowing) as whole levels get it. */
+/* The plan keeps the file's texels as they are (no colour conversion, no
+ * premultiplication, no narrowing): a reader may decode straight into the
+ * tile. */
+static int plan_is_identity(const ts_file *f)
+{
+    const io_plan *p = &f->plan;
+    const size_t rb = p->read_as == IO_HALF ? 2 : p->read_as == IO_FLOAT ? 4 : 0;
+    return !p->convert && !p->premultiply && rb * (size_t)p->nchan == f->tex->texel_bytes;
+}
+
+/* A tile of a tiled file, through the direct OpenEXR tile reader or
+ * OpenImageIO's read_tiles. Where the plan is the identity the direct
+ * reader decodes into the tile itself; otherwise the texels are read as
+ * plan.read_as, then the plan (conversion, premultiplication, narrowing)
+ * applies as whole levels get it (io_plan_apply), so the bits are
+ * sample_io_read_texture's. */
 static ts_tile *load_tile(ts_file *f, int lv, int tx, int ty, size_t slot, sample_error *err)
 {
-    const struct sample_level *L = &f->tex->level[lv];
     const int side = 1 << f->log2, i0 = tx * side, j0 = ty * side;
-    const int w = min_int(side, L->w - i0), h = min_int(side, L->h - j0);
-    const size_t tb = f->tex->texel_bytes, n = (size_t)w * (size_t)h;
+    const size_t tb = f->tex->texel_bytes, line = (size_t)side * tb;
+    const size_t rb = (size_t)f->plan.nchan * (f->plan.read_as == IO_HALF ? 2 : 4);
     unsigned char *buf;
     ts_tile *t;
-    int j;
+    int w, h, j;
     sample_status st = ts_reader_acquire(f, err);
     if (st != SAMPLE_OK) return NULL;
-    buf = (unsigned char *)malloc(n * (size_t)f->plan.nchan * 4);
-    if (!buf) {
-        sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes to read a tile", n * 16);
-        return NULL;
-    }
-    st = io_reader_read_tiles(f->reader, lv, i0, j0, i0 + w, j0 + h, f->plan.read_as, f->plan.nchan, buf, err);
-    if (st == SAMPLE_OK) st = io_plan_apply(f->h.sys->col, &f->plan, buf, n, err);
-    if (st != SAMPLE_OK) {
-        free(buf);
-        return NULL;
-    }
-    t = ts_tile_alloc(f, lv, slot, tile_px_bytes(f));
+    tile_extent(f, lv, tx, ty, &w, &h);
+    t = ts_tile_alloc(f, lv, slot, tile_px_bytes(f), w < side || h < side);
     if (!t) {
         sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a tile of '%s' under the memory limit", f->path);
-        free(buf);
         return NULL;
     }
-    for (j = 0; j < h; ++j) memcpy(t->px + (size_t)j * (size_t)side * tb, buf + (size_t)j * (size_t)w * tb, (size_t)w * tb);
-    free(buf);
-    ts_publish(f, t, tb);
+    if (f->exr && plan_is_identity(f)) {
+        st = io_exr_tile_read(f->exr, lv, tx, ty, w, h, t->px, tb, line, err);
+    } else {
+        const size_t n = (size_t)w * (size_t)h;
+        buf = (unsigned char *)malloc(n * (size_t)f->plan.nchan * 4);
+        if (!buf)
+            st = sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate %zu bytes to read a tile",
+                                  n * (size_t)f->plan.nchan * 4);
+        else if (f->exr)
+            st = io_exr_tile_read(f->exr, lv, tx, ty, w, h, buf, rb, rb * (size_t)w, err);
+        else
+            st = io_reader_read_tiles(f->reader, lv, i0, j0, i0 + w, j0 + h, f->plan.read_as, f->plan.nchan, buf,
+                                      err);
+        if (st == SAMPLE_OK) st = io_plan_apply(f->h.sys->col, &f->plan, buf, n, err);
+        for (j = 0; st == SAMPLE_OK && j < h; ++j)
+            memcpy(t->px + (size_t)j * line, buf + (size_t)j * (size_t)w * tb, (size_t)w * tb);
+        free(buf);
+    }
+    if (st != SAMPLE_OK) {
+        ts_tile_discard(f, t);
+        return NULL;
+    }
+    ts_publish(f, t, tb, f->exr != NULL);
     return t;
 }
 
@@ -518,6 +583,7 @@ void io_ts_file_free(ts_file *f)
     }
     if (f->open) sys->open_files--;
     io_reader_close(f->reader);
+    io_exr_tile_close(f->exr);
     if (f->tex) sample_texture_destroy(f->tex);
     ts_lock_destroy(&f->io_lock);
     free(f->path);

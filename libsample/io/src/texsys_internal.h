@@ -7,6 +7,7 @@
  *                  limit, and the epochs that keep evicted tiles alive
  *                  until no batch can still read them
  *   texsys_udim.c  UDIM sets: names, and one virtual texture of tiles
+ *   exr_tile.c     the direct OpenEXR tile reader (exr_tile.h)
  *
  * A texture of the system is a sample_texture (libsample/src/texel.h)
  * whose texel source is a ts_file (or a ts_udim): libsample's filters
@@ -87,7 +88,12 @@ struct ts_file {
     int has_wrap;
     sample_wrap wrap_s, wrap_t;
     ts_lock io_lock;
+    /* The file's tiles come through one of two readers (doc/texture-system.md,
+     * "Files"): the direct OpenEXR tile reader (exr_tile.h) where it takes
+     * the file, else OpenImageIO's. Either counts as the file open. */
     io_reader *reader;  /* io_lock; NULL: closed */
+    struct io_exr_tile *exr; /* io_lock; NULL: closed or not taken */
+    int exr_refused;    /* io_lock: the direct reader did not take it */
     int open;           /* sys->lock: counted among the open files */
     uint64_t last_open; /* sys->lock: when its reader was last used */
     unsigned long nerrors;   /* sys->lock */

@@ -173,6 +173,10 @@ typedef struct sample_texsys_stats {
     /* Bytes of the cube maps and volumes held whole (section 2), outside
      * max_memory_mb and not in `memory`. */
     size_t held_memory;
+    /* Of tiles_read, those the direct OpenEXR tile reader decoded (the
+     * others came through OpenImageIO or a whole-file read;
+     * doc/texture-system.md, "Files"). */
+    uint64_t tiles_direct;
 } sample_texsys_stats;
 
 SAMPLE_IO_API void sample_texsys_stats_get(sample_texsys *sys, sample_texsys_stats *stats);
