@@ -71,8 +71,9 @@ typedef struct fast_taps {
     };
     int col[4];                  /* texel index; −1: the border colour */
     float fu, fv;                /* α, β: the fractional parts (eq. 8.13) */
-    int inside;                  /* 1: every tap inside the level (and tile), no
-                                  * border; 0: rows and columns; TAPS_SOURCE */
+    int inside;                  /* 1: a block of consecutive taps in the level
+                                  * (and tile; axis_index), no border; 0: rows
+                                  * and columns; TAPS_SOURCE */
 } fast_taps;
 
 /* fast_taps.inside of taps read texel by texel through the source. */
@@ -123,9 +124,13 @@ static int kind_taps(sample_filter kind)
 
 /* Indices (double)i0 + first + k, k < n, on an axis of len texels, exactly
  * as ls_wrap_index maps them. i0 is integral (a floor). A run inside the axis
- * maps to itself (returns 1); REPEAT below 2^24 is an integer modulo (the
- * same true modulo as ls_wrap_index's exact fmod); anything else asks
- * ls_wrap_index (both return 0). */
+ * maps to itself; REPEAT below 2^24 is an integer modulo (the same true
+ * modulo as ls_wrap_index's exact fmod); anything else asks ls_wrap_index.
+ * Returns 1 when the indices are consecutive (out[k] = out[0] + k), as a
+ * run inside the axis is and a repeated run that does not straddle the
+ * edge: the readers then take the block as one piece of the level (a
+ * repeating texture seen from afar, as the plane's far rows, is mostly
+ * such runs); 0 otherwise. */
 SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
                               int out[4])
 {
@@ -138,6 +143,10 @@ SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, i
     if (mode == SAMPLE_WRAP_REPEAT && fabsf(i0) < 16777216.0f) {
         int r = ((int)i0 + first) % len;
         if (r < 0) r += len;
+        if (r <= len - n) {
+            for (k = 0; k < n; ++k) out[k] = r + k;
+            return 1;
+        }
         for (k = 0; k < n; ++k) {
             out[k] = r;
             if (++r == len) r = 0;
