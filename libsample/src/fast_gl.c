@@ -182,6 +182,26 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
     }
 }
 
+/* The first texel of the tile holding texel (i, j) of level lv of a
+ * texture in tiles (texel.h, tile_side): the batch's memo when that tile is
+ * the one last addressed on the level (ls_tile_memo), else the source's
+ * (remembered); NULL where the source lacks the tile. */
+SAMPLE_FORCE_INLINE const unsigned char *tile_origin(const sample_ctx *c, int lv, int i, int j)
+{
+    const struct ls_texel_source *src = c->tex->source;
+    const int m = src->tile_side - 1, x = i & ~m, y = j & ~m;
+    ls_tile_memo *memo = c->tiles;
+    const unsigned char *p;
+    if (memo && memo->x[lv] == x && memo->y[lv] == y) return memo->p[lv];
+    p = src->texel(src, lv, x, y, 0);
+    if (memo && p) {
+        memo->x[lv] = x;
+        memo->y[lv] = y;
+        memo->p[lv] = p;
+    }
+    return p;
+}
+
 /* Taps of a texture whose source holds its levels in tiles (texel.h,
  * tile_side), their indices col[] (the level's) and y[] made: an n × n
  * block inside the level (`in`) and inside one tile is addressed in that
@@ -193,13 +213,12 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
 SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb,
                                     int prefetch, fast_taps *tp)
 {
-    const struct ls_texel_source *src = c->tex->source;
-    const int side = src->tile_side, m = side - 1, x0 = tp->col[0] & m;
+    const int side = c->tex->source->tile_side, m = side - 1, x0 = tp->col[0] & m, y0 = y[0] & m;
     const unsigned char *p;
     int k;
-    if (in && x0 + n <= side && (y[0] & m) + n <= side && (p = src->texel(src, lv, tp->col[0], y[0], 0))) {
+    if (in && x0 + n <= side && y0 + n <= side && (p = tile_origin(c, lv, tp->col[0], y[0]))) {
         const size_t rs = (size_t)side * tb;
-        p -= (size_t)x0 * tb; /* the start of the block's first row in the tile */
+        p += (size_t)y0 * rs; /* the start of the block's first row in the tile */
         for (k = 0; k < n; ++k, p += rs) {
             tp->col[k] = x0 + k;
             tp->row[k] = p;
@@ -474,7 +493,12 @@ SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, 
         tp->col[0] = i;
         tp->col[1] = i + 1;
         tp->inside = 1;
-        taps_rows_inside(&lev[lv[k]], j, 2, tb, 1, tp);
+        if (tex_resident(c->tex)) {
+            taps_rows_inside(&lev[lv[k]], j, 2, tb, 1, tp);
+        } else {
+            const int y[4] = {j, j + 1};
+            plan_tiles(c, lv[k], 2, 1, y, tb, 1, tp);
+        }
     }
 }
 #endif
@@ -489,7 +513,7 @@ SAMPLE_FORCE_INLINE void plan_taps_block(const sample_ctx *c, const sample_query
     size_t k = 0;
 #if SAMPLE_VEC_AVX2
     if ((fmt == SAMPLE_FORMAT_F32 || fmt == SAMPLE_FORMAT_F16) && !wrap_transforms_coord(c->smp->wrap_s) &&
-        !wrap_transforms_coord(c->smp->wrap_t) && tex_resident(c->tex))
+        !wrap_transforms_coord(c->smp->wrap_t))
         for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, pl + k);
 #else
     (void)fmt;
@@ -627,7 +651,8 @@ static int aniso_address_tiles(const sample_ctx *c, int lv, int n, const int *ii
     for (k = 0; k < n; ++k) {
         const unsigned char *p;
         if ((ii[k] & m) + 2 <= side && (jj[k] & m) + 2 <= side) {
-            if (!(p = src->texel(src, lv, ii[k], jj[k], 0))) return 0;
+            if (!(p = tile_origin(c, lv, ii[k], jj[k]))) return 0;
+            p += (size_t)(jj[k] & m) * rs + (size_t)(ii[k] & m) * tb;
             at->p[which][k] = p;
             at->stride[which][k] = rs;
             SAMPLE_PREFETCH(p);
@@ -841,11 +866,14 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
 
 /* The batch loop, generic over the texel format and channel count; each
  * instantiation below has them as constants. */
-SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
+SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *cp, const sample_batch_args *a, sample_format fmt,
                                  int nc, aniso_fn aniso)
 {
     const size_t tb = texel_bytes(fmt, nc);
-    const sample_sampler *smp = c->smp;
+    const sample_sampler *smp = cp->smp;
+    const sample_ctx *c = cp;
+    sample_ctx cm;
+    ls_tile_memo memo;
     lod_choice mn = lod_select(c, 1.0f), mg = lod_select(c, -1.0f);
     /* λ only picks between two identical choices: a non-mipmapped min filter
      * whose per-level filter is the mag filter's (lod_select then returns
@@ -856,6 +884,14 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
     size_t i;
+    if (!tex_resident(cp->tex)) {
+        /* This batch's tile memo: its pointers are valid until the batch
+         * ends (sample_batch's tex_reads_end). */
+        for (i = 0; i < SAMPLE_MAX_LEVELS; ++i) memo.x[i] = memo.y[i] = -1;
+        cm = *cp;
+        cm.tiles = &memo;
+        c = &cm;
+    }
     if (smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC || smp->footprint == SAMPLE_FOOTPRINT_FELINE) {
         /* A software pipeline FAST_AHEAD_ANISO queries deep: query i + D is
          * planned (its probes' lines asked for) right after query i ran, so
