@@ -433,11 +433,12 @@ SAMPLE_FORCE_INLINE void plan_taps(const sample_ctx *c, const sample_query *q, s
  * order — u = s·w, a = u − ½, ⌊a⌋, a − ⌊a⌋, the in-level test against
  * w − 2 — so the same bits; a u that recon_texel_coord would clamp is
  * ±inf here and fails the test. Any other query, or level, goes through
- * plan_taps. Only where the build has AVX2 (256-bit integer lanes;
- * measured in doc/history/performance-passes.md). */
+ * plan_taps. A texture in tiles (`resident` 0) has the block then addressed
+ * in its tile (plan_tiles). Only where the build has AVX2 (256-bit integer
+ * lanes; measured in doc/history/performance-passes.md). */
 
 SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, size_t tb, int linear, int which,
-                                    fast_plan *pl)
+                                    int resident, fast_plan *pl)
 {
     const struct sample_level *lev = c->tex->level;
     int lv[4], ok[4], k, in;
@@ -493,7 +494,7 @@ SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, 
         tp->col[0] = i;
         tp->col[1] = i + 1;
         tp->inside = 1;
-        if (tex_resident(c->tex)) {
+        if (resident) {
             taps_rows_inside(&lev[lv[k]], j, 2, tb, 1, tp);
         } else {
             const int y[4] = {j, j + 1};
@@ -512,9 +513,10 @@ SAMPLE_FORCE_INLINE void plan_taps_block(const sample_ctx *c, const sample_query
 {
     size_t k = 0;
 #if SAMPLE_VEC_AVX2
+    const int resident = tex_resident(c->tex);
     if ((fmt == SAMPLE_FORMAT_F32 || fmt == SAMPLE_FORMAT_F16) && !wrap_transforms_coord(c->smp->wrap_s) &&
         !wrap_transforms_coord(c->smp->wrap_t))
-        for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, pl + k);
+        for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, resident, pl + k);
 #else
     (void)fmt;
 #endif
@@ -858,7 +860,9 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
              * flight (measured: doc/history/performance-passes.md). */
             plan_gl_lods(c, a, i, m, fixed, plan);
             plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 0, plan);
-            plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 1, plan);
+            /* A fixed choice of one level (no mipmaps) has no second
+             * level's taps to plan. */
+            if (!fixed || fixed->level1 >= 0) plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 1, plan);
         }
         for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, NULL, fmt, nc, tb, 1, linear, NULL);
     }
