@@ -126,11 +126,9 @@ static int kind_taps(sample_filter kind)
  * as ls_wrap_index maps them. i0 is integral (a floor). A run inside the axis
  * maps to itself; REPEAT below 2^24 is an integer modulo (the same true
  * modulo as ls_wrap_index's exact fmod); anything else asks ls_wrap_index.
- * Returns 1 when the indices are consecutive (out[k] = out[0] + k), as a
- * run inside the axis is and a repeated run that does not straddle the
- * edge: the readers then take the block as one piece of the level (a
- * repeating texture seen from afar, as the plane's far rows, is mostly
- * such runs); 0 otherwise. */
+ * Returns 1 when the indices are consecutive, as a run inside the axis and
+ * a repeated run not straddling the edge are (a repeating texture seen
+ * from afar: the readers take the block whole), else 0. */
 SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
                               int out[4])
 {
@@ -182,10 +180,9 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
     }
 }
 
-/* The first texel of the tile holding texel (i, j) of level lv of a
- * texture in tiles (texel.h, tile_side): the batch's memo when that tile is
- * the one last addressed on the level (ls_tile_memo), else the source's
- * (remembered); NULL where the source lacks the tile. */
+/* The first texel of the tile holding texel (i, j) of level lv (texel.h,
+ * tile_side): the batch's memo's (ls_tile_memo), else the source's, then
+ * remembered; NULL where the source lacks the tile. */
 SAMPLE_FORCE_INLINE const unsigned char *tile_origin(const sample_ctx *c, int lv, int i, int j)
 {
     const struct ls_texel_source *src = c->tex->source;
@@ -860,8 +857,7 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
              * flight (measured: doc/history/performance-passes.md). */
             plan_gl_lods(c, a, i, m, fixed, plan);
             plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 0, plan);
-            /* A fixed choice of one level (no mipmaps) has no second
-             * level's taps to plan. */
+            /* A fixed choice of one level has no second level's taps. */
             if (!fixed || fixed->level1 >= 0) plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 1, plan);
         }
         for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, NULL, fmt, nc, tb, 1, linear, NULL);
@@ -888,9 +884,7 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *cp, const sample_batch_
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
     size_t i;
-    if (!tex_resident(cp->tex)) {
-        /* This batch's tile memo: its pointers are valid until the batch
-         * ends (sample_batch's tex_reads_end). */
+    if (!tex_resident(cp->tex)) { /* valid until the batch ends (ls_tile_memo) */
         for (i = 0; i < SAMPLE_MAX_LEVELS; ++i) memo.x[i] = memo.y[i] = -1;
         cm = *cp;
         cm.tiles = &memo;
