@@ -8,7 +8,11 @@
  *
  *   perf_probe FILTER SET FORMAT [QUERIES [RUNS]]
  *   (FILTER, SET, FORMAT as `texsample bench` names them; env PB_SCALAR=1:
- *   the reference path, PB_SIZE: texture side, default 2048)
+ *   the reference path, PB_SIZE: texture side, default 2048; PB_TILE=b:
+ *   the texture held in tiles of 2^b texels a side, as a tile cache holds
+ *   it (sample_texture_tiled_copy; b = 6: OpenImageIO's 64²); PB_BATCH:
+ *   queries per sample_batch call, default 256 — 16 is the texture
+ *   system's chunk)
  */
 #define _GNU_SOURCE
 #include "probe_util.h"
@@ -68,6 +72,18 @@ int main(int argc, char **argv)
         img.format = SAMPLE_FORMAT_SRGB8;
     }
     if (!(tex = probe_texture(&img))) return 1;
+    if (getenv("PB_TILE")) {
+        sample_texture *tiled;
+        sample_error err;
+        if (sample_texture_tiled_copy(tex, atoi(getenv("PB_TILE")), &tiled, &err) != SAMPLE_OK) {
+            fprintf(stderr, "%s\n", err.message);
+            return 1;
+        }
+        sample_texture_destroy(tex);
+        tex = tiled;
+    }
+    if (getenv("PB_BATCH")) probe_batch = strtoul(getenv("PB_BATCH"), NULL, 10);
+    if (probe_batch < 1) probe_batch = 1;
     bench_queries((bench_set)si, size, q, n);
     smp = eng[ei].smp;
     best = probe_time_batches(getenv("PB_SCALAR") ? sample_batch_reference : sample_batch, tex, &smp, q, n, runs,

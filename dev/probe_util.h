@@ -62,12 +62,17 @@ static sample_texture *probe_texture(const sample_image *img)
     return NULL;
 }
 
+/* Queries per sample_batch call in probe_time_batches: the bench's 256,
+ * or what a probe sets (perf_probe's PB_BATCH: 16 is the texture
+ * system's chunk, TS_CHUNK in libsample/io/src/texsys_internal.h). */
+static size_t probe_batch = 256;
+
 /* A batch entry point: sample_batch, or sample_batch_reference. */
 typedef sample_status (*probe_batch_fn)(const sample_texture *, const sample_sampler *, const sample_batch_args *);
 
 /* The best CPU time of `runs` passes (after one untimed warm-up) of
- * `batch` over the n queries in batches of 256, as the bench calls
- * sample_batch; −1 if a call fails. */
+ * `batch` over the n queries in batches of probe_batch (256, as the bench
+ * calls sample_batch); −1 if a call fails. */
 static double probe_time_batches(probe_batch_fn batch, const sample_texture *tex, const sample_sampler *smp,
                                  const sample_query *q, size_t n, int runs, float *out)
 {
@@ -76,10 +81,10 @@ static double probe_time_batches(probe_batch_fn batch, const sample_texture *tex
     for (r = 0; r <= runs; ++r) {
         double t0 = probe_cpu_now(), t;
         size_t b;
-        for (b = 0; b < n; b += 256) {
+        for (b = 0; b < n; b += probe_batch) {
             sample_batch_args a;
             memset(&a, 0, sizeof a);
-            a.count = n - b < 256 ? n - b : 256;
+            a.count = n - b < probe_batch ? n - b : probe_batch;
             a.queries = q + b;
             a.rgba = out + 4 * b;
             if (batch(tex, smp, &a) != SAMPLE_OK) return -1.0;

@@ -9,7 +9,8 @@
  * supply reads as its fill colour: exact values by hand, and the fast
  * path's reads of a source with missing tiles the reference path's bits.
  * The fast path addresses a block inside one tile with one texel() call
- * (texel.h, tile_side): counted.
+ * (texel.h, tile_side), and consecutive blocks in one tile with one call
+ * a batch (ls_tile_memo): counted.
  */
 #include "check.h"
 #include "query_gen.h"
@@ -224,6 +225,57 @@ static void test_one_call_per_block(void)
     sample_texture_destroy(tex);
 }
 
+/* Bilinear reads of a 64 × 64 texture in tiles of 8 (REPEAT), in runs of
+ * four queries whose blocks lie in one tile, every other run one period
+ * to the right (s in [1, 2): its block repeated into the level, not
+ * straddling its edge). The fast path reads a repeated block as one block
+ * (fast_gl.c, axis_index) and asks the source once per run of blocks in
+ * one tile (the batch's tile memo, ls_tile_memo): one texel() call per run
+ * in one batch, one per run and batch in batches of two (the memo lives
+ * for one batch); the reference path four per block; the same bits as the
+ * resident texture's. */
+static void test_one_call_per_tile_run(void)
+{
+    sample_texture *tex = make_texture(SAMPLE_FORMAT_F16, 4, 64, 64), *tiled = NULL;
+    sample_sampler s;
+    sample_batch_args a;
+    int i;
+    CHECK(sample_texture_tiled_copy(tex, 3, &tiled, NULL) == SAMPLE_OK, "tiled copy");
+    inner_texel = tiled->source->texel;
+    tiled->source->texel = counted_texel;
+    sample_sampler_init(&s);
+    s.min_filter = s.mag_filter = SAMPLE_LINEAR;
+    for (i = 0; i < NQ; ++i) {
+        const int r = i / 4, x = 8 * (r % 8) + i % 4, y = 8 * ((r / 8) % 8) + i % 3;
+        memset(&qs[i], 0, sizeof qs[i]);
+        qs[i].s = ((float)x + 0.75f) / 64.0f + (float)(r & 1);
+        qs[i].t = ((float)y + 0.75f) / 64.0f;
+    }
+    sample_some(tex, &s, 0, 1, 0);
+    texel_calls = 0;
+    sample_some(tiled, &s, 1, 1, 0);
+    CHECK(texel_calls == NQ / 4, "fast path: %lu texel() calls for %d runs of 4 blocks in a tile", texel_calls,
+          NQ / 4);
+    CHECK(same_results(), "tiled and resident textures differ");
+    texel_calls = 0;
+    sample_some(tiled, &s, 1, 1, 1);
+    CHECK(texel_calls == 4 * NQ, "reference path: %lu texel() calls for %d blocks", texel_calls, NQ);
+    CHECK(same_results(), "fast and reference paths differ");
+    texel_calls = 0;
+    memset(&a, 0, sizeof a);
+    for (i = 0; i < NQ; i += 2) {
+        a.count = 2;
+        a.queries = qs + i;
+        a.rgba = rgba[0] + 4 * i;
+        CHECK(sample_batch(tiled, &s, &a) == SAMPLE_OK, "sample_batch");
+    }
+    CHECK(texel_calls == NQ / 2, "batches of 2: %lu texel() calls, %d wanted", texel_calls, NQ / 2);
+    CHECK(!memcmp(rgba[0], rgba[1], sizeof rgba[0]), "batches of 2 differ");
+    tiled->source->texel = inner_texel;
+    sample_texture_destroy(tiled);
+    sample_texture_destroy(tex);
+}
+
 static void test_bad_arguments(void)
 {
     sample_texture *out = (sample_texture *)&out;
@@ -247,6 +299,7 @@ int main(void)
     RUN(test_missing_tile_reads_fill);
     RUN(test_missing_tiles_fast_path);
     RUN(test_one_call_per_block);
+    RUN(test_one_call_per_tile_run);
     RUN(test_bad_arguments);
     return check_finish();
 }

@@ -19,4 +19,5 @@ void ls_ctx_init(sample_ctx *c, const sample_texture *tex, const sample_sampler 
     c->env = LS_ENV_NONE;
     c->face = 0;
     c->q3 = NULL;
+    c->tiles = NULL;
 }

@@ -12,6 +12,19 @@
 #include "wrap.h"
 
 struct isa_kernels;
+
+/* The tile each level's texels were last addressed in, for a texture whose
+ * source holds its levels in tiles (texel.h, tile_side): texel (x, y) of
+ * level lv, the first of its tile, is at p[lv]; x[lv] = −1: none yet. A
+ * memo of one batch only, which is as long as texel()'s pointers stay
+ * valid (texel.h, struct ls_texel_source). Consecutive queries of a
+ * coherent batch (a renderer's scanlines, the bench's plane) mostly fall in
+ * the tile the query before them read, and then skip the source's call. */
+typedef struct ls_tile_memo {
+    int x[SAMPLE_MAX_LEVELS], y[SAMPLE_MAX_LEVELS];
+    const unsigned char *p[SAMPLE_MAX_LEVELS];
+} ls_tile_memo;
+
 typedef struct sample_ctx {
     const sample_texture *tex;
     const sample_sampler *smp;
@@ -30,6 +43,8 @@ typedef struct sample_ctx {
      * kinds): the anisotropic filter places probes that leave the face
      * by direction (footprint_aniso.c). */
     const sample_query3 *q3;
+    /* The fast path's tile memo for this batch (fast_gl.c); NULL: none. */
+    ls_tile_memo *tiles;
 } sample_ctx;
 
 /* The context of a batch: level_base and q (GL 4.6 §8.14.3) from the

@@ -71,8 +71,9 @@ typedef struct fast_taps {
     };
     int col[4];                  /* texel index; −1: the border colour */
     float fu, fv;                /* α, β: the fractional parts (eq. 8.13) */
-    int inside;                  /* 1: every tap inside the level (and tile), no
-                                  * border; 0: rows and columns; TAPS_SOURCE */
+    int inside;                  /* 1: a block of consecutive taps in the level
+                                  * (and tile; axis_index), no border; 0: rows
+                                  * and columns; TAPS_SOURCE */
 } fast_taps;
 
 /* fast_taps.inside of taps read texel by texel through the source. */
@@ -123,9 +124,11 @@ static int kind_taps(sample_filter kind)
 
 /* Indices (double)i0 + first + k, k < n, on an axis of len texels, exactly
  * as ls_wrap_index maps them. i0 is integral (a floor). A run inside the axis
- * maps to itself (returns 1); REPEAT below 2^24 is an integer modulo (the
- * same true modulo as ls_wrap_index's exact fmod); anything else asks
- * ls_wrap_index (both return 0). */
+ * maps to itself; REPEAT below 2^24 is an integer modulo (the same true
+ * modulo as ls_wrap_index's exact fmod); anything else asks ls_wrap_index.
+ * Returns 1 when the indices are consecutive, as a run inside the axis and
+ * a repeated run not straddling the edge are (a repeating texture seen
+ * from afar: the readers take the block whole), else 0. */
 SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, int first, int linear,
                               int out[4])
 {
@@ -138,6 +141,10 @@ SAMPLE_FORCE_INLINE int axis_index(sample_wrap mode, float i0, int len, int n, i
     if (mode == SAMPLE_WRAP_REPEAT && fabsf(i0) < 16777216.0f) {
         int r = ((int)i0 + first) % len;
         if (r < 0) r += len;
+        if (r <= len - n) {
+            for (k = 0; k < n; ++k) out[k] = r + k;
+            return 1;
+        }
         for (k = 0; k < n; ++k) {
             out[k] = r;
             if (++r == len) r = 0;
@@ -173,6 +180,25 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
     }
 }
 
+/* The first texel of the tile holding texel (i, j) of level lv (texel.h,
+ * tile_side): the batch's memo's (ls_tile_memo), else the source's, then
+ * remembered; NULL where the source lacks the tile. */
+SAMPLE_FORCE_INLINE const unsigned char *tile_origin(const sample_ctx *c, int lv, int i, int j)
+{
+    const struct ls_texel_source *src = c->tex->source;
+    const int m = src->tile_side - 1, x = i & ~m, y = j & ~m;
+    ls_tile_memo *memo = c->tiles;
+    const unsigned char *p;
+    if (memo && memo->x[lv] == x && memo->y[lv] == y) return memo->p[lv];
+    p = src->texel(src, lv, x, y, 0);
+    if (memo && p) {
+        memo->x[lv] = x;
+        memo->y[lv] = y;
+        memo->p[lv] = p;
+    }
+    return p;
+}
+
 /* Taps of a texture whose source holds its levels in tiles (texel.h,
  * tile_side), their indices col[] (the level's) and y[] made: an n × n
  * block inside the level (`in`) and inside one tile is addressed in that
@@ -184,13 +210,12 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
 SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb,
                                     int prefetch, fast_taps *tp)
 {
-    const struct ls_texel_source *src = c->tex->source;
-    const int side = src->tile_side, m = side - 1, x0 = tp->col[0] & m;
+    const int side = c->tex->source->tile_side, m = side - 1, x0 = tp->col[0] & m, y0 = y[0] & m;
     const unsigned char *p;
     int k;
-    if (in && x0 + n <= side && (y[0] & m) + n <= side && (p = src->texel(src, lv, tp->col[0], y[0], 0))) {
+    if (in && x0 + n <= side && y0 + n <= side && (p = tile_origin(c, lv, tp->col[0], y[0]))) {
         const size_t rs = (size_t)side * tb;
-        p -= (size_t)x0 * tb; /* the start of the block's first row in the tile */
+        p += (size_t)y0 * rs; /* the start of the block's first row in the tile */
         for (k = 0; k < n; ++k, p += rs) {
             tp->col[k] = x0 + k;
             tp->row[k] = p;
@@ -405,11 +430,12 @@ SAMPLE_FORCE_INLINE void plan_taps(const sample_ctx *c, const sample_query *q, s
  * order — u = s·w, a = u − ½, ⌊a⌋, a − ⌊a⌋, the in-level test against
  * w − 2 — so the same bits; a u that recon_texel_coord would clamp is
  * ±inf here and fails the test. Any other query, or level, goes through
- * plan_taps. Only where the build has AVX2 (256-bit integer lanes;
- * measured in doc/history/performance-passes.md). */
+ * plan_taps. A texture in tiles (`resident` 0) has the block then addressed
+ * in its tile (plan_tiles). Only where the build has AVX2 (256-bit integer
+ * lanes; measured in doc/history/performance-passes.md). */
 
 SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, size_t tb, int linear, int which,
-                                    fast_plan *pl)
+                                    int resident, fast_plan *pl)
 {
     const struct sample_level *lev = c->tex->level;
     int lv[4], ok[4], k, in;
@@ -465,7 +491,12 @@ SAMPLE_FORCE_INLINE void plan_taps4(const sample_ctx *c, const sample_query *q, 
         tp->col[0] = i;
         tp->col[1] = i + 1;
         tp->inside = 1;
-        taps_rows_inside(&lev[lv[k]], j, 2, tb, 1, tp);
+        if (resident) {
+            taps_rows_inside(&lev[lv[k]], j, 2, tb, 1, tp);
+        } else {
+            const int y[4] = {j, j + 1};
+            plan_tiles(c, lv[k], 2, 1, y, tb, 1, tp);
+        }
     }
 }
 #endif
@@ -479,9 +510,10 @@ SAMPLE_FORCE_INLINE void plan_taps_block(const sample_ctx *c, const sample_query
 {
     size_t k = 0;
 #if SAMPLE_VEC_AVX2
+    const int resident = tex_resident(c->tex);
     if ((fmt == SAMPLE_FORMAT_F32 || fmt == SAMPLE_FORMAT_F16) && !wrap_transforms_coord(c->smp->wrap_s) &&
-        !wrap_transforms_coord(c->smp->wrap_t) && tex_resident(c->tex))
-        for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, pl + k);
+        !wrap_transforms_coord(c->smp->wrap_t))
+        for (; k + 4 <= m; k += 4) plan_taps4(c, q + k, tb, linear, which, resident, pl + k);
 #else
     (void)fmt;
 #endif
@@ -618,7 +650,8 @@ static int aniso_address_tiles(const sample_ctx *c, int lv, int n, const int *ii
     for (k = 0; k < n; ++k) {
         const unsigned char *p;
         if ((ii[k] & m) + 2 <= side && (jj[k] & m) + 2 <= side) {
-            if (!(p = src->texel(src, lv, ii[k], jj[k], 0))) return 0;
+            if (!(p = tile_origin(c, lv, ii[k], jj[k]))) return 0;
+            p += (size_t)(jj[k] & m) * rs + (size_t)(ii[k] & m) * tb;
             at->p[which][k] = p;
             at->stride[which][k] = rs;
             SAMPLE_PREFETCH(p);
@@ -824,7 +857,8 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
              * flight (measured: doc/history/performance-passes.md). */
             plan_gl_lods(c, a, i, m, fixed, plan);
             plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 0, plan);
-            plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 1, plan);
+            /* A fixed choice of one level has no second level's taps. */
+            if (!fixed || fixed->level1 >= 0) plan_taps_block(c, a->queries + i, m, fmt, tb, linear, 1, plan);
         }
         for (k = 0; k < m; ++k) run_query(c, a, i + k, &plan[k], NULL, NULL, fmt, nc, tb, 1, linear, NULL);
     }
@@ -832,11 +866,14 @@ SAMPLE_FORCE_INLINE void gl_blocks(const sample_ctx *cp, const sample_batch_args
 
 /* The batch loop, generic over the texel format and channel count; each
  * instantiation below has them as constants. */
-SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_args *a, sample_format fmt,
+SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *cp, const sample_batch_args *a, sample_format fmt,
                                  int nc, aniso_fn aniso)
 {
     const size_t tb = texel_bytes(fmt, nc);
-    const sample_sampler *smp = c->smp;
+    const sample_sampler *smp = cp->smp;
+    const sample_ctx *c = cp;
+    sample_ctx cm;
+    ls_tile_memo memo;
     lod_choice mn = lod_select(c, 1.0f), mg = lod_select(c, -1.0f);
     /* λ only picks between two identical choices: a non-mipmapped min filter
      * whose per-level filter is the mag filter's (lod_select then returns
@@ -847,6 +884,12 @@ SAMPLE_FORCE_INLINE void fast_gl_batch(const sample_ctx *c, const sample_batch_a
                  smp->min_filter == SAMPLE_CUBIC) &&
                 mn.kind == mg.kind && mn.level0 == mg.level0 && mn.level1 < 0 && mg.level1 < 0;
     size_t i;
+    if (!tex_resident(cp->tex)) { /* valid until the batch ends (ls_tile_memo) */
+        for (i = 0; i < SAMPLE_MAX_LEVELS; ++i) memo.x[i] = memo.y[i] = -1;
+        cm = *cp;
+        cm.tiles = &memo;
+        c = &cm;
+    }
     if (smp->footprint == SAMPLE_FOOTPRINT_ANISOTROPIC || smp->footprint == SAMPLE_FOOTPRINT_FELINE) {
         /* A software pipeline FAST_AHEAD_ANISO queries deep: query i + D is
          * planned (its probes' lines asked for) right after query i ran, so
