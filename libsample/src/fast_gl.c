@@ -178,8 +178,9 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
  * block inside the level (`in`) and inside one tile is addressed in that
  * tile (one texel() call; rows T texels apart) and then read exactly as a
  * resident level's block; any other — across a tile's edge (about 3 % of
- * bilinear blocks in 64² tiles), wrapped, or in a tile the source lacks
- * (texel() NULL: the fill colour) — is read texel by texel through the
+ * bilinear blocks in 64² tiles), wrapped, on a level the source holds
+ * otherwise (tile_levels), or in a tile the source lacks (texel() NULL:
+ * the fill colour) — is read texel by texel through the
  * source (TAPS_SOURCE, tap_v4), which is what the reference path reads. */
 SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb,
                                     int prefetch, fast_taps *tp)
@@ -188,7 +189,8 @@ SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, 
     const int side = src->tile_side, m = side - 1, x0 = tp->col[0] & m;
     const unsigned char *p;
     int k;
-    if (in && x0 + n <= side && (y[0] & m) + n <= side && (p = src->texel(src, lv, tp->col[0], y[0], 0))) {
+    if (in && x0 + n <= side && (y[0] & m) + n <= side && tex_source_level_in_tiles(src, lv) &&
+        (p = src->texel(src, lv, tp->col[0], y[0], 0))) {
         const size_t rs = (size_t)side * tb;
         p -= (size_t)x0 * tb; /* the start of the block's first row in the tile */
         for (k = 0; k < n; ++k, p += rs) {
@@ -605,7 +607,8 @@ SAMPLE_FORCE_INLINE float keep_if(float x, int in)
  * inside one tile where it is (one texel() call), one across a tile's
  * edge copied texel by texel into at->scratch (rows 2 texels apart), the
  * same bytes, so bilerp_block reads the same values either way. Returns 0
- * where a block lies in a tile the source lacks (its fill colour is not
+ * on a level the source does not hold in tiles (tile_levels), where a
+ * block lies in a tile the source lacks (its fill colour is not
  * a texel of this format) or the scratch is full: fp_aniso_probes then
  * reads the query (plan_tiles, texel by texel where needed). */
 static int aniso_address_tiles(const sample_ctx *c, int lv, int n, const int *ii, const int *jj, size_t tb,
@@ -615,6 +618,7 @@ static int aniso_address_tiles(const sample_ctx *c, int lv, int n, const int *ii
     const int side = src->tile_side, m = side - 1;
     const size_t rs = (size_t)side * tb;
     int k, d;
+    if (!tex_source_level_in_tiles(src, lv)) return 0;
     for (k = 0; k < n; ++k) {
         const unsigned char *p;
         if ((ii[k] & m) + 2 <= side && (jj[k] & m) + 2 <= side) {
