@@ -47,12 +47,6 @@ static void run_some(sample_texsys *sys, const sample_texture *tex, const sample
     CHECK((sys ? sample_texsys_batch(sys, tex, s, &a) : sample_batch(tex, s, &a)) == SAMPLE_OK, "batch");
 }
 
-static void run(sample_texsys *sys, const sample_texture *tex, const sample_sampler *s, const sample_query *q,
-                size_t n, int k)
-{
-    run_some(sys, tex, s, q, n, k, 1);
-}
-
 static int same(void)
 {
     return !memcmp(rgba[0], rgba[1], sizeof rgba[0]) && !memcmp(dds[0], dds[1], sizeof dds[0]) &&
@@ -414,6 +408,29 @@ static sample_texture *assemble(sample_texture *const tiles[4], int present_mask
     return out;
 }
 
+/* The queries qs of the 2 × 2 set `set` against the tiles side by side
+ * (`big`) sampled at (s / 2, t / 2) with the fill as its border, ∂/∂s and
+ * ∂/∂t scaled back: with derivatives and stats or values alone (`all`);
+ * 1 if the bits are the same. */
+static int udim_same_bits(sample_texsys *sys, const sample_texture *set, const sample_texture *big,
+                          const sample_sampler *s, int all)
+{
+    sample_query half[NQ];
+    sample_sampler sb = *s;
+    size_t i;
+    for (i = 0; i < NQ; ++i) {
+        half[i].s = qs[i].s * 0.5f, half[i].t = qs[i].t * 0.5f;
+        half[i].dsdx = qs[i].dsdx * 0.5f, half[i].dtdx = qs[i].dtdx * 0.5f;
+        half[i].dsdy = qs[i].dsdy * 0.5f, half[i].dtdy = qs[i].dtdy * 0.5f;
+    }
+    sb.wrap_s = sb.wrap_t = SAMPLE_WRAP_CLAMP_TO_BORDER;
+    memcpy(sb.border_color, fill, sizeof fill);
+    run_some(NULL, big, &sb, half, NQ, 0, all);
+    for (i = 0; all && i < 4 * NQ; ++i) dds[0][i] *= 0.5f, ddt[0][i] *= 0.5f;
+    run_some(sys, set, s, qs, NQ, 1, all);
+    return same();
+}
+
 static void test_udim(void)
 {
     static const char *const patterns[2] = {"udim_<UDIM>.exr", "uv_<uvtile>.exr"};
@@ -446,8 +463,7 @@ static void test_udim(void)
         /* The set against one texture of the tiles side by side, sampled
          * at (s / 2, t / 2) with the fill as its border. */
         for (kind = 0; kind < TS_KINDS; ++kind) {
-            sample_sampler s, sb;
-            sample_query half[NQ];
+            sample_sampler s;
             size_t i;
             ts_sampler(&s, kind);
             for (i = 0; i < NQ; ++i) {
@@ -457,17 +473,8 @@ static void test_udim(void)
                 qs[i].dtdx = frand(-0.3f, 0.3f);
                 qs[i].dsdy = frand(-0.3f, 0.3f);
                 qs[i].dtdy = frand(-0.3f, 0.3f);
-                half[i].s = qs[i].s * 0.5f, half[i].t = qs[i].t * 0.5f;
-                half[i].dsdx = qs[i].dsdx * 0.5f, half[i].dtdx = qs[i].dtdx * 0.5f;
-                half[i].dsdy = qs[i].dsdy * 0.5f, half[i].dtdy = qs[i].dtdy * 0.5f;
             }
-            sb = s;
-            sb.wrap_s = sb.wrap_t = SAMPLE_WRAP_CLAMP_TO_BORDER;
-            memcpy(sb.border_color, fill, sizeof fill);
-            run(NULL, big, &sb, half, NQ, 0);
-            for (i = 0; i < 4 * NQ; ++i) dds[0][i] *= 0.5f, ddt[0][i] *= 0.5f;
-            run(sys, set, &s, qs, NQ, 1);
-            if (!same()) ++fails;
+            if (!udim_same_bits(sys, set, big, &s, 1)) ++fails;
         }
         CHECK(fails == 0, "%s: %d filters differ from the tiles side by side", patterns[p], fails);
         {
@@ -549,8 +556,7 @@ static void test_udim_fast(void)
               "%s: %d levels, tiles of %d on %d levels", names[p], set->nlevels, set->source->tile_side,
               set->source->tile_levels);
         for (kind = 0; kind < 8; ++kind) {
-            sample_sampler s, sb;
-            sample_query half[NQ];
+            sample_sampler s;
             size_t i;
             sample_sampler_init(&s);
             s.mag_filter = kind % 4 == 2 ? SAMPLE_CUBIC : SAMPLE_LINEAR;
@@ -567,17 +573,8 @@ static void test_udim_fast(void)
                 qs[i].t = rnd() % 3 ? 1.0f + frand(-0.15f, 0.15f) : frand(-0.1f, 2.1f);
                 qs[i].dsdx = d * e * cosf(a), qs[i].dtdx = d * e * sinf(a);
                 qs[i].dsdy = -d * sinf(a), qs[i].dtdy = d * cosf(a);
-                half[i].s = qs[i].s * 0.5f, half[i].t = qs[i].t * 0.5f;
-                half[i].dsdx = qs[i].dsdx * 0.5f, half[i].dtdx = qs[i].dtdx * 0.5f;
-                half[i].dsdy = qs[i].dsdy * 0.5f, half[i].dtdy = qs[i].dtdy * 0.5f;
             }
-            sb = s;
-            sb.wrap_s = sb.wrap_t = SAMPLE_WRAP_CLAMP_TO_BORDER;
-            memcpy(sb.border_color, fill, sizeof fill);
-            run_some(NULL, big, &sb, half, NQ, 0, kind < 4);
-            for (i = 0; kind < 4 && i < 4 * NQ; ++i) dds[0][i] *= 0.5f, ddt[0][i] *= 0.5f;
-            run_some(sys, set, &s, qs, NQ, 1, kind < 4);
-            if (!same() && fails++ < 4)
+            if (!udim_same_bits(sys, set, big, &s, kind < 4) && fails++ < 4)
                 fprintf(stderr, "%s: filter %d%s differs from the tiles side by side\n", names[p], kind % 4,
                         kind < 4 ? "" : " (values only)");
         }
