@@ -180,8 +180,8 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
  * resident level's block; any other — across a tile's edge (about 3 % of
  * bilinear blocks in 64² tiles), wrapped, on a level the source holds
  * otherwise (tile_levels), or in a tile the source lacks (texel() NULL:
- * the fill colour) — is read texel by texel through the
- * source (TAPS_SOURCE, tap_v4), which is what the reference path reads. */
+ * the fill colour) — is read texel by texel through the source
+ * (TAPS_SOURCE, tap_v4), which is what the reference path reads. */
 SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb,
                                     int prefetch, fast_taps *tp)
 {
