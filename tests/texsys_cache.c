@@ -50,12 +50,6 @@ static void run_some(sample_texsys *sys, const sample_texture *tex, const sample
     CHECK((sys ? sample_texsys_batch(sys, tex, s, &a) : sample_batch(tex, s, &a)) == SAMPLE_OK, "batch");
 }
 
-static void run(sample_texsys *sys, const sample_texture *tex, const sample_sampler *s, const sample_query *q,
-                size_t n, int k)
-{
-    run_some(sys, tex, s, q, n, k, 1);
-}
-
 static int same(void)
 {
     return !memcmp(rgba[0], rgba[1], sizeof rgba[0]) && !memcmp(dds[0], dds[1], sizeof dds[0]) &&
@@ -536,6 +530,7 @@ static sample_texture *assemble(sample_texture *const tiles[4], int present_mask
     sample_image lv[SAMPLE_MAX_LEVELS];
     sample_texture *out = NULL;
     int k, n = tiles[0]->nlevels, u, v, i, j;
+    memset(lv, 0, sizeof lv);
     for (k = 0; k < n; ++k) {
         int w, h;
         float *px;
@@ -561,6 +556,29 @@ static sample_texture *assemble(sample_texture *const tiles[4], int present_mask
     CHECK(sample_texture_create_levels(lv, n, &out, NULL) == SAMPLE_OK, "assemble");
     for (k = 0; k < n; ++k) free((void *)lv[k].data);
     return out;
+}
+
+/* The queries qs of the 2 × 2 set `set` against the tiles side by side
+ * (`big`) sampled at (s / 2, t / 2) with the fill as its border, ∂/∂s and
+ * ∂/∂t scaled back: with derivatives and stats or values alone (`all`);
+ * 1 if the bits are the same. */
+static int udim_same_bits(sample_texsys *sys, const sample_texture *set, const sample_texture *big,
+                          const sample_sampler *s, int all)
+{
+    sample_query half[NQ];
+    sample_sampler sb = *s;
+    size_t i;
+    for (i = 0; i < NQ; ++i) {
+        half[i].s = qs[i].s * 0.5f, half[i].t = qs[i].t * 0.5f;
+        half[i].dsdx = qs[i].dsdx * 0.5f, half[i].dtdx = qs[i].dtdx * 0.5f;
+        half[i].dsdy = qs[i].dsdy * 0.5f, half[i].dtdy = qs[i].dtdy * 0.5f;
+    }
+    sb.wrap_s = sb.wrap_t = SAMPLE_WRAP_CLAMP_TO_BORDER;
+    memcpy(sb.border_color, fill, sizeof fill);
+    run_some(NULL, big, &sb, half, NQ, 0, all);
+    for (i = 0; all && i < 4 * NQ; ++i) dds[0][i] *= 0.5f, ddt[0][i] *= 0.5f;
+    run_some(sys, set, s, qs, NQ, 1, all);
+    return same();
 }
 
 static void test_udim(void)
@@ -595,8 +613,7 @@ static void test_udim(void)
         /* The set against one texture of the tiles side by side, sampled
          * at (s / 2, t / 2) with the fill as its border. */
         for (kind = 0; kind < TS_KINDS; ++kind) {
-            sample_sampler s, sb;
-            sample_query half[NQ];
+            sample_sampler s;
             size_t i;
             ts_sampler(&s, kind);
             for (i = 0; i < NQ; ++i) {
@@ -606,17 +623,8 @@ static void test_udim(void)
                 qs[i].dtdx = frand(-0.3f, 0.3f);
                 qs[i].dsdy = frand(-0.3f, 0.3f);
                 qs[i].dtdy = frand(-0.3f, 0.3f);
-                half[i].s = qs[i].s * 0.5f, half[i].t = qs[i].t * 0.5f;
-                half[i].dsdx = qs[i].dsdx * 0.5f, half[i].dtdx = qs[i].dtdx * 0.5f;
-                half[i].dsdy = qs[i].dsdy * 0.5f, half[i].dtdy = qs[i].dtdy * 0.5f;
             }
-            sb = s;
-            sb.wrap_s = sb.wrap_t = SAMPLE_WRAP_CLAMP_TO_BORDER;
-            memcpy(sb.border_color, fill, sizeof fill);
-            run(NULL, big, &sb, half, NQ, 0);
-            for (i = 0; i < 4 * NQ; ++i) dds[0][i] *= 0.5f, ddt[0][i] *= 0.5f;
-            run(sys, set, &s, qs, NQ, 1);
-            if (!same()) ++fails;
+            if (!udim_same_bits(sys, set, big, &s, 1)) ++fails;
         }
         CHECK(fails == 0, "%s: %d filters differ from the tiles side by side", patterns[p], fails);
         {
@@ -648,6 +656,99 @@ static void test_udim(void)
             sample_texture_texel(tiles[0], 0, 15, 5, a);
             sample_texture_texel(tiles[1], 0, 0, 5, b);
             CHECK(out[0] == 0.5f * a[0] + 0.5f * b[0], "across the edge: %g, texels %g %g", out[0], a[0], b[0]);
+        }
+        sample_texture_destroy(big);
+        sample_texsys_destroy(sys);
+    }
+    for (k = 0; k < 4; ++k) sample_texture_destroy(tiles[k]);
+}
+
+/* texel() calls of the set's source, counted (test_udim_fast). */
+static const unsigned char *(*udim_inner)(const struct ls_texel_source *, int, int, int, int);
+static unsigned long udim_calls;
+static const unsigned char *udim_counted(const struct ls_texel_source *src, int lv, int i, int j, int layer)
+{
+    ++udim_calls;
+    return udim_inner(src, lv, i, j, layer);
+}
+
+/* UDIM sets on the fast path (texsys_udim.c, declare_tiles): 32 × 32
+ * tiles in file tiles of 8 declare tiles of 8 on the levels 32, 16, 8 and
+ * read the levels 4, 2, 1 (where a tile of 8 spans files) texel by texel;
+ * random queries crossing the edges between UDIM tiles, a complete set and
+ * one lacking tile (1, 0), give the tiles side by side's bits for
+ * bilinear, trilinear, bicubic and anisotropic ×16, with derivatives and
+ * values alone (the planned-ahead anisotropic probes); bilinear blocks
+ * inside a tile take at most one texel() call each. */
+static void test_udim_fast(void)
+{
+    static const char *const names[2] = {"fast_<UDIM>.exr", "fastm_<UDIM>.exr"};
+    static const int masks[2] = {15, 13};
+    sample_texture *tiles[4];
+    int k, p;
+    for (k = 0; k < 4; ++k) tiles[k] = io_test_texture(32, 32, 4, SAMPLE_FORMAT_F32, 60u + (unsigned)k, SAMPLE_MIPGEN_BOX, 0);
+    for (p = 0; p < 2; ++p) {
+        sample_texsys *sys = new_system(1.0 / 32.0, 4);
+        sample_texture *big = assemble(tiles, masks[p]);
+        const sample_texture *set;
+        char path[1024];
+        int kind, fails = 0;
+        for (k = 0; k < 4; ++k) {
+            char name[64];
+            if (!(masks[p] >> k & 1)) continue;
+            snprintf(name, sizeof name, "fast%s_%04d.exr", p ? "m" : "", 1001 + k % 2 + 10 * (k / 2));
+            ts_write(io_path(path, sizeof path, io_scratch, name), tiles[k], 8, SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_REPEAT,
+                     1);
+        }
+        set = open_ok(sys, io_path(path, sizeof path, io_scratch, names[p]));
+        if (!set) continue;
+        CHECK(set->nlevels == 6 && set->source->tile_side == 8 && set->source->tile_levels == 3,
+              "%s: %d levels, tiles of %d on %d levels", names[p], set->nlevels, set->source->tile_side,
+              set->source->tile_levels);
+        for (kind = 0; kind < 8; ++kind) {
+            sample_sampler s;
+            size_t i;
+            sample_sampler_init(&s);
+            s.mag_filter = kind % 4 == 2 ? SAMPLE_CUBIC : SAMPLE_LINEAR;
+            s.min_filter = kind % 4 == 0   ? SAMPLE_LINEAR
+                           : kind % 4 == 2 ? SAMPLE_CUBIC_MIPMAP_LINEAR
+                                           : SAMPLE_LINEAR_MIPMAP_LINEAR;
+            if (kind % 4 == 3) s.footprint = SAMPLE_FOOTPRINT_ANISOTROPIC, s.max_anisotropy = 16.0f;
+            for (i = 0; i < NQ; ++i) {
+                /* Near the edges s = 1, t = 1 of the tiles most of the time;
+                 * footprints from a texel of level 0 to the whole set. */
+                const float d = ldexpf(frand(0.5f, 1.0f), -(int)(rnd() % 7)) * (i % 3 == 0 ? 1.0f : 1.0f / 32.0f);
+                const float a = frand(0.0f, 6.2831853f), e = i % 2 ? 1.0f : frand(1.0f, 16.0f);
+                qs[i].s = rnd() % 3 ? 1.0f + frand(-0.15f, 0.15f) : frand(-0.1f, 2.1f);
+                qs[i].t = rnd() % 3 ? 1.0f + frand(-0.15f, 0.15f) : frand(-0.1f, 2.1f);
+                qs[i].dsdx = d * e * cosf(a), qs[i].dtdx = d * e * sinf(a);
+                qs[i].dsdy = -d * sinf(a), qs[i].dtdy = d * cosf(a);
+            }
+            if (!udim_same_bits(sys, set, big, &s, kind < 4) && fails++ < 4)
+                fprintf(stderr, "%s: filter %d%s differs from the tiles side by side\n", names[p], kind % 4,
+                        kind < 4 ? "" : " (values only)");
+        }
+        CHECK(fails == 0, "%s: %d filters differ from the tiles side by side", names[p], fails);
+        {
+            /* Bilinear on level 0, each 2 × 2 block inside one file tile
+             * of tile (0, 0) or (0, 1): at most one texel() call a query
+             * (the reference path makes four). */
+            sample_sampler s;
+            size_t i;
+            sample_sampler_init(&s);
+            s.min_filter = s.mag_filter = SAMPLE_LINEAR;
+            for (i = 0; i < NQ; ++i) {
+                memset(&qs[i], 0, sizeof qs[i]);
+                qs[i].s = (float)(8 * (int)(rnd() % 4) + 2) / 32.0f + 0.3f / 32.0f;
+                qs[i].t = (float)(8 * (int)(rnd() % 8) + 2) / 32.0f + 0.3f / 32.0f;
+            }
+            udim_inner = set->source->texel;
+            set->source->texel = udim_counted;
+            udim_calls = 0;
+            run_some(sys, set, &s, qs, NQ, 1, 0);
+            set->source->texel = udim_inner;
+            CHECK(udim_calls > 0 && udim_calls <= NQ, "%s: %lu texel() calls for %d bilinear queries", names[p],
+                  udim_calls, (int)NQ);
         }
         sample_texture_destroy(big);
         sample_texsys_destroy(sys);
@@ -766,6 +867,7 @@ int main(int argc, char **argv)
     RUN(test_open_file_limit);
     RUN(test_independent_systems);
     RUN(test_udim);
+    RUN(test_udim_fast);
     RUN(test_bad_arguments);
     RUN(test_lookup_cli);
     io_colour_close(ts_col);

@@ -182,7 +182,7 @@ SAMPLE_FORCE_INLINE void taps_rows_inside(const struct sample_level *L, int y0, 
 
 /* The first texel of the tile holding texel (i, j) of level lv (texel.h,
  * tile_side): the batch's memo's (ls_tile_memo), else the source's, then
- * remembered; NULL where the source lacks the tile. */
+ * remembered; NULL where the source lacks the tile or its level (tile_levels). */
 SAMPLE_FORCE_INLINE const unsigned char *tile_origin(const sample_ctx *c, int lv, int i, int j)
 {
     const struct ls_texel_source *src = c->tex->source;
@@ -190,7 +190,7 @@ SAMPLE_FORCE_INLINE const unsigned char *tile_origin(const sample_ctx *c, int lv
     ls_tile_memo *memo = c->tiles;
     const unsigned char *p;
     if (memo && memo->x[lv] == x && memo->y[lv] == y) return memo->p[lv];
-    p = src->texel(src, lv, x, y, 0);
+    p = tex_source_level_in_tiles(src, lv) ? src->texel(src, lv, x, y, 0) : NULL;
     if (memo && p) {
         memo->x[lv] = x;
         memo->y[lv] = y;
@@ -204,9 +204,9 @@ SAMPLE_FORCE_INLINE const unsigned char *tile_origin(const sample_ctx *c, int lv
  * block inside the level (`in`) and inside one tile is addressed in that
  * tile (one texel() call; rows T texels apart) and then read exactly as a
  * resident level's block; any other — across a tile's edge (about 3 % of
- * bilinear blocks in 64² tiles), wrapped, or in a tile the source lacks
- * (texel() NULL: the fill colour) — is read texel by texel through the
- * source (TAPS_SOURCE, tap_v4), which is what the reference path reads. */
+ * bilinear blocks in 64² tiles), wrapped, or where tile_origin is NULL (a
+ * tile the source lacks: the fill colour; a level not in tiles) — is read
+ * texel by texel through the source (TAPS_SOURCE, tap_v4), as the reference path reads. */
 SAMPLE_FORCE_INLINE void plan_tiles(const sample_ctx *c, int lv, int n, int in, const int y[4], size_t tb,
                                     int prefetch, fast_taps *tp)
 {
@@ -637,8 +637,8 @@ SAMPLE_FORCE_INLINE float keep_if(float x, int in)
  * inside one tile where it is (one texel() call), one across a tile's
  * edge copied texel by texel into at->scratch (rows 2 texels apart), the
  * same bytes, so bilerp_block reads the same values either way. Returns 0
- * where a block lies in a tile the source lacks (its fill colour is not
- * a texel of this format) or the scratch is full: fp_aniso_probes then
+ * where a block's tile_origin is NULL (a tile the source lacks, a level not
+ * in tiles) or the scratch is full: fp_aniso_probes then
  * reads the query (plan_tiles, texel by texel where needed). */
 static int aniso_address_tiles(const sample_ctx *c, int lv, int n, const int *ii, const int *jj, size_t tb,
                                int which, int *used, aniso_taps *at)

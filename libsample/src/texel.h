@@ -45,6 +45,11 @@ struct ls_texel_source {
      * or 4 × 4 block inside one tile as a resident level's block, with one
      * texel() call (fast_gl.c, plan_tiles; doc/architecture.md). */
     int tile_side;
+    /* With tile_side: 0, every level is held so; else only the levels
+     * below tile_levels are, and the planners read the others texel by
+     * texel through texel() (a UDIM set's levels where a tile of T texels
+     * would span several files: doc/texture-system.md, "UDIM"). */
+    int tile_levels;
     float fill[4];
 };
 
@@ -148,6 +153,13 @@ SAMPLE_FORCE_INLINE v4f tex_decode_v4(sample_format format, int nc, const unsign
 static inline int tex_addressable(const sample_texture *tex)
 {
     return tex->source == NULL || tex->source->tile_side > 0;
+}
+
+/* Whether the planners may address level lv of a source in tiles inside
+ * one tile (struct ls_texel_source: tile_side, tile_levels). */
+static inline int tex_source_level_in_tiles(const struct ls_texel_source *src, int lv)
+{
+    return src->tile_levels == 0 || lv < src->tile_levels;
 }
 
 /* Texel (i, j) of a resident level (its first layer). */

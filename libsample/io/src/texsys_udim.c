@@ -23,6 +23,7 @@ struct ts_udim {
     const char *colorspace; /* its tiles' (ts_file.colorspace) */
     int cols, rows;      /* the virtual texture's, powers of two */
     int used_cols, used_rows;
+    int tw[SAMPLE_MAX_LEVELS], th[SAMPLE_MAX_LEVELS]; /* a tile's extent at each level */
     ts_file *tile[UDIM_MAX * UDIM_MAX]; /* [v · cols + u]; NULL: missing */
     ts_udim *next;
 };
@@ -70,15 +71,48 @@ static int expand(const char *name, int u, int v, char *out, size_t size)
     return 1;
 }
 
+/* The texel of the tile's file; NULL (the fill colour) where the set lacks
+ * the tile. Where the set declares tiles (declare_tiles), the file's
+ * pointer addresses the file's whole cache tile, which is the virtual
+ * texture's tile. */
 static const unsigned char *udim_texel(const struct ls_texel_source *src, int lv, int i, int j, int layer)
 {
     const ts_udim *u = (const ts_udim *)src;
-    const struct sample_level *L = &u->tex->level[lv];
-    const int tw = L->w / u->cols, th = L->h / u->rows;
-    const ts_file *f = u->tile[(j / th) * u->cols + i / tw];
+    const int tw = u->tw[lv], th = u->th[lv], x = i / tw, y = j / th;
+    const ts_file *f = u->tile[y * u->cols + x];
     (void)layer;
     if (!f) return NULL;
-    return f->h.base.texel(&f->h.base, lv, i % tw, j % th, 0);
+    return f->h.base.texel(&f->h.base, lv, i - x * tw, j - y * th, 0);
+}
+
+/* The fast path's planners read a 2 × 2 or 4 × 4 block inside one tile
+ * of T texels with one texel() call (texel.h, tile_side). The virtual
+ * tile (tx, ty) of level k is one cache tile of one file when the files'
+ * tiles have one side T and, on each axis, the UDIM tile's extent at k is
+ * a multiple of T — the edges between UDIM tiles are then tile edges — or
+ * the set is one tile across on that axis (the virtual level is then the
+ * file's there, a tile past its edge keeping its shape as the file's
+ * does). Halving keeps neither once it is lost, so it holds for the levels
+ * [0, n): those are declared in tiles (tile_levels), and on the smaller
+ * ones, where a tile of T texels would hold texels of several files, the
+ * planners read texel by texel, as the reference path does at every
+ * level. A missing tile needs no tile of fill texels: texel() answers NULL
+ * there and the planners read the fill colour texel by texel, the
+ * reference path's bits (the fill is not a texel of every format). */
+static void declare_tiles(ts_udim *u)
+{
+    int k, n, log2 = -1, side;
+    for (k = 0; k < u->cols * u->rows; ++k) {
+        if (!u->tile[k]) continue;
+        if (log2 >= 0 && u->tile[k]->log2 != log2) return;
+        log2 = u->tile[k]->log2;
+    }
+    side = 1 << log2;
+    for (n = 0; n < u->tex->nlevels; ++n)
+        if ((u->cols > 1 && u->tw[n] % side) || (u->rows > 1 && u->th[n] % side)) break;
+    if (n == 0) return;
+    u->h.base.tile_side = side;
+    u->h.base.tile_levels = n;
 }
 
 static void udim_source_destroy(struct ls_texel_source *src) { (void)src; }
@@ -124,6 +158,8 @@ static sample_status build(sample_texsys *sys, ts_udim *u, sample_error *err)
     tex->nlevels = levels;
     tex->bytes = 0;
     for (k = 0; k < levels; ++k) {
+        u->tw[k] = t0->level[k].w;
+        u->th[k] = t0->level[k].h;
         tex->level[k].w = t0->level[k].w * u->cols;
         tex->level[k].h = t0->level[k].h * u->rows;
         tex->bytes += (size_t)tex->level[k].w * (size_t)tex->level[k].h * tex->texel_bytes;
@@ -136,6 +172,7 @@ static sample_status build(sample_texsys *sys, ts_udim *u, sample_error *err)
     memcpy(u->h.base.fill, sys->o.fill, sizeof u->h.base.fill);
     tex->source = &u->h.base;
     u->tex = tex;
+    declare_tiles(u);
     return SAMPLE_OK;
 }
 
