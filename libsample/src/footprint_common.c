@@ -277,6 +277,67 @@ uint32_t ls_fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4
     return ls_fp_run_read(c, &pl->rs, out, dds, ddt, st);
 }
 
+/* ---- Spans of a texture in tiles ---------------------------------------- */
+
+static inline int min_int(int a, int b) { return a < b ? a : b; }
+
+const unsigned char *ls_fp_span_tiles(const fp_level_rows *lr, double j, double ilo, int n, float (*buf)[4],
+                                      size_t *pitch)
+{
+    const sample_ctx *c = lr->c;
+    const sample_texture *tex = c->tex;
+    const struct ls_texel_source *src = tex->source;
+    const struct sample_level *L = &tex->level[lr->lv];
+    const tex_readers *rd = tex_readers_in(lr->k, tex);
+    const int side = src->tile_side, tr = lr->tr;
+    /* Along a walk row and across it: a level row's s and t, or a level
+     * column's t and s. In a tile, texels along a row are one texel apart,
+     * along a column `side` texels (texel.h, tile_side). */
+    const int along = tr ? L->h : L->w, across = tr ? L->w : L->h;
+    const sample_wrap along_m = tr ? c->smp->wrap_t : c->smp->wrap_s, across_m = tr ? c->smp->wrap_s : c->smp->wrap_t;
+    const size_t step = tr ? (size_t)side * tex->texel_bytes : tex->texel_bytes;
+    const int in_j = j >= 0.0 && j < (double)across;
+    /* ctx_texel's mapping of the walk row: itself inside the level, the
+     * wrap mode's index outside (−1: the border colour) unless an
+     * environment map finds it (then every texel goes through ctx_texel:
+     * −1 here too). */
+    const int jj = in_j ? (int)j : c->env != LS_ENV_NONE ? -1 : ls_wrap_index(across_m, j, across, 1);
+    int k = 0, t;
+    *pitch = 16;
+    while (k < n) {
+        const double i = ilo + k;
+        const int in_i = i >= 0.0 && i < (double)along;
+        const unsigned char *p = NULL;
+        int x = -1, m = 1;
+        if (jj >= 0) x = in_i ? (int)i : c->env != LS_ENV_NONE ? -1 : ls_wrap_index(along_m, i, along, 1);
+        if (x >= 0) {
+            /* The texels x, x + 1, … up to the tile's edge or the level's:
+             * all of them inside the level when i is; outside, as long as
+             * the wrap mode maps i + m to x + m (REPEAT does, up to the
+             * seam; a mirror's reflected run does not, texel by texel). */
+            const int lim = min_int(min_int(n - k, side - (x & (side - 1))), along - x);
+            if (in_i) m = lim;
+            else
+                while (m < lim && ls_wrap_index(along_m, i + m, along, 1) == x + m) ++m;
+            /* ctx_texel's layer: the query's face inside the level, the
+             * first layer through the wrap modes (tex_read). */
+            p = src->texel(src, lr->lv, tr ? jj : x, tr ? x : jj, in_i && in_j ? c->face : 0);
+        }
+        if (!p) {
+            /* The border, another face, or a tile the source cannot supply
+             * (read as its fill colour): texel by texel. */
+            for (t = 0; t < m; ++t) ctx_texel(c, lr->lv, tr ? j : i + t, tr ? i + t : j, 1, buf[k + t]);
+        } else if (m == n && lr->in_place) {
+            *pitch = step;
+            return p;
+        } else {
+            rd->row(tex->format, tex->channels, p, step, m, buf + k);
+        }
+        k += m;
+    }
+    return (const unsigned char *)buf;
+}
+
 /* ---- Cube maps: a footprint over several faces -------------------------- */
 
 /* The faces a cube-map query's footprint is read on (ls_fp_cube_read): the
