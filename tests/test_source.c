@@ -9,7 +9,10 @@
  * supply reads as its fill colour: exact values by hand, and the fast
  * path's reads of a source with missing tiles the reference path's bits.
  * The fast path addresses a block inside one tile with one texel() call
- * (texel.h, tile_side): counted.
+ * (texel.h, tile_side): counted. Blinn–Newell and EWA read a row's
+ * pieces inside tiles with one texel() call each (ls_fp_span_tiles):
+ * long footprints across tile and level edges under every wrap, and
+ * missing tiles, against the resident bits; the calls counted.
  */
 #include "check.h"
 #include "query_gen.h"
