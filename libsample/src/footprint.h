@@ -390,6 +390,36 @@ SAMPLE_FORCE_INLINE double fp_row_span(const fp_level_rows *lr, int r, double j,
 const unsigned char *ls_fp_span_tiles(const fp_level_rows *lr, double j, double ilo, int n, float (*buf)[4],
                                       size_t *pitch);
 
+/* ls_fp_span_tiles with its common case inline: a span inside the level
+ * and inside one tile (nearly every row in 64² tiles) is one texel() call
+ * and one run of the row reader; out of line it cost about 100
+ * instructions a row (doc/texture-system.md, "The fast path reads the
+ * tiles"). */
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_tile(const fp_level_rows *lr, double j, double ilo, int n,
+                                                      float (*buf)[4], size_t *pitch)
+{
+    const sample_texture *tex = lr->c->tex;
+    const struct ls_texel_source *src = tex->source;
+    const struct sample_level *L = &tex->level[lr->lv];
+    const int edge = ~(src->tile_side - 1);
+    if (j >= 0.0 && j < (double)(lr->tr ? L->w : L->h) && ilo >= 0.0 && ilo + n <= lr->wlim &&
+        ((int)ilo & edge) == (((int)ilo + n - 1) & edge)) {
+        const int i0 = (int)ilo, jj = (int)j;
+        const unsigned char *p = src->texel(src, lr->lv, lr->tr ? jj : i0, lr->tr ? i0 : jj, lr->c->face);
+        if (p) {
+            const size_t step = lr->tr ? (size_t)src->tile_side * tex->texel_bytes : tex->texel_bytes;
+            if (lr->in_place) {
+                *pitch = step;
+                return p;
+            }
+            tex_readers_in(lr->k, tex)->row(tex->format, tex->channels, p, step, n, buf);
+            *pitch = 16;
+            return (const unsigned char *)buf;
+        }
+    }
+    return ls_fp_span_tiles(lr, j, ilo, n, buf, pitch);
+}
+
 /* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of walk row
  * j as float RGBA, *pitch bytes apart from the returned pointer, exactly as
  * ctx_texel reads them (linear rule): a float RGBA span inside the level
@@ -411,7 +441,7 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
         }
         tex_readers_in(lr->k, c->tex)->row(c->tex->format, c->tex->channels, at, lr->pitch, n, buf);
     } else if (c->tex->source && c->tex->source->tile_side > 0) {
-        return ls_fp_span_tiles(lr, j, ilo, n, buf, pitch);
+        return fp_span_tile(lr, j, ilo, n, buf, pitch);
     } else if (!lr->tr) {
         for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
     } else {
