@@ -10,7 +10,10 @@
  * path's reads of a source with missing tiles the reference path's bits.
  * The fast path addresses a block inside one tile with one texel() call
  * (texel.h, tile_side), and consecutive blocks in one tile with one call
- * a batch (ls_tile_memo): counted.
+ * a batch (ls_tile_memo): counted. Blinn–Newell and EWA read a row's
+ * pieces inside tiles with one texel() call each (ls_fp_span_tiles):
+ * long footprints across tile and level edges under every wrap, and
+ * missing tiles, against the resident bits; the calls counted.
  */
 #include "check.h"
 #include "query_gen.h"
@@ -276,6 +279,134 @@ static void test_one_call_per_tile_run(void)
     sample_texture_destroy(tex);
 }
 
+/* Query i: an ellipse-like footprint (Jacobian columns a major and a
+ * minor axis, eccentricity 1 to 16, the major axis 1/40 to 3/10 of the
+ * texture, any direction) centred anywhere in [−0.3, 1.3]², so that rows
+ * and columns cross many tile edges and the level's edges. */
+static void fill_long_footprints(void)
+{
+    int i;
+    for (i = 0; i < NQ; ++i) {
+        const float a = frand(0.0f, 6.2831853f), major = frand(0.025f, 0.3f), minor = major / frand(1.0f, 16.0f);
+        const float ca = cosf(a), sa = sinf(a);
+        qs[i].s = frand(-0.3f, 1.3f);
+        qs[i].t = frand(-0.3f, 1.3f);
+        qs[i].dsdx = major * ca;
+        qs[i].dtdx = major * sa;
+        qs[i].dsdy = -minor * sa;
+        qs[i].dtdy = minor * ca;
+    }
+}
+
+/* Four wrap pairs that give each of REPEAT, CLAMP_TO_EDGE,
+ * MIRRORED_REPEAT and CLAMP_TO_BORDER to both axes: pair k. */
+static void wrap_pair(sample_sampler *s, int k)
+{
+    static const sample_wrap m[4] = {SAMPLE_WRAP_REPEAT, SAMPLE_WRAP_CLAMP_TO_EDGE, SAMPLE_WRAP_MIRRORED_REPEAT,
+                                     SAMPLE_WRAP_CLAMP_TO_BORDER};
+    s->wrap_s = m[k & 3];
+    s->wrap_t = m[(k + 1) & 3];
+}
+
+/* Blinn–Newell or EWA (k & 1) with wrap pair k / 2. */
+static void span_sampler(sample_sampler *s, int k)
+{
+    sample_sampler_init(s);
+    s->min_filter = SAMPLE_LINEAR_MIPMAP_LINEAR;
+    s->footprint = k & 1 ? SAMPLE_FOOTPRINT_EWA : SAMPLE_FOOTPRINT_BLINN_NEWELL;
+    wrap_pair(s, k / 2);
+    s->border_color[0] = 0.25f;
+    s->border_color[3] = 0.5f;
+}
+
+/* Blinn–Newell and EWA read each row of their footprint on a texture in
+ * tiles piece by piece, one texel() call per piece inside a tile
+ * (footprint.h, ls_fp_span_tiles): on a 64 × 48 texture (float, half
+ * and 8-bit; float RGBA read in place) in tiles of 4 and 8, long
+ * footprints across many tile edges and past the level's edges under
+ * every wrap pair above, with and without derivatives, give the resident
+ * texture's bits, and the texel() calls are fewer than half the texels
+ * read (a texel at a time, they would be at least as many). */
+static void test_footprint_spans_in_tiles(void)
+{
+    static const int fmt[3][2] = {{SAMPLE_FORMAT_F16, 4}, {SAMPLE_FORMAT_F32, 4}, {SAMPLE_FORMAT_UNORM8, 3}};
+    unsigned long calls = 0, texels = 0;
+    int f, tl, k, i, configs = 0, fails = 0;
+    for (f = 0; f < 3; ++f) {
+        sample_texture *tex = make_texture((sample_format)fmt[f][0], fmt[f][1], 64, 48);
+        for (tl = 2; tl <= 3; ++tl) {
+            sample_texture *tiled = NULL;
+            CHECK(sample_texture_tiled_copy(tex, tl, &tiled, NULL) == SAMPLE_OK, "tiled copy");
+            inner_texel = tiled->source->texel;
+            tiled->source->texel = counted_texel;
+            for (k = 0; k < 8; ++k) {
+                sample_sampler s;
+                span_sampler(&s, k);
+                fill_long_footprints();
+                sample_some(tex, &s, 0, k & 2, 0);
+                texel_calls = 0;
+                sample_some(tiled, &s, 1, k & 2, 0);
+                if (k & 2) { /* with stats: the texels read */
+                    calls += texel_calls;
+                    for (i = 0; i < NQ; ++i) texels += stats[1][i].texels;
+                }
+                ++configs;
+                if (!same_results() && ++fails <= 10)
+                    fprintf(stderr, "spans in tiles differ: %s x%d, tiles of %d, footprint %s, wraps %s %s\n",
+                            sample_format_name((sample_format)fmt[f][0]), fmt[f][1], 1 << tl,
+                            sample_footprint_name(s.footprint), sample_wrap_name(s.wrap_s),
+                            sample_wrap_name(s.wrap_t));
+            }
+            tiled->source->texel = inner_texel;
+            sample_texture_destroy(tiled);
+        }
+        sample_texture_destroy(tex);
+    }
+    CHECK(fails == 0, "%d of %d configurations differ between resident and tiled spans", fails, configs);
+    CHECK(texels > 0 && 2 * calls < texels, "%lu texel() calls for %lu texels read", calls, texels);
+}
+
+/* Tiles missing on levels 0 and 1 of a texture in tiles of 4: the
+ * footprint filters read their texels as the fill colour, exactly as the
+ * resident texture with those texels set to the fill colour reads them
+ * (float and half RGBA: the fill is exact in both). */
+static void test_footprint_spans_missing_tiles(void)
+{
+    static const float fill[4] = {0.125f, 2.0f, -1.0f, 0.5f};
+    static const int drop[3][3] = {{0, 1, 1}, {0, 3, 0}, {1, 0, 0}}; /* level, tile x, tile y */
+    int f, d, x, y, k, configs = 0, fails = 0;
+    for (f = 0; f < 2; ++f) {
+        const sample_format fm = f ? SAMPLE_FORMAT_F32 : SAMPLE_FORMAT_F16;
+        sample_texture *tex = make_texture(fm, 4, 64, 48), *tiled = NULL;
+        CHECK(sample_texture_tiled_copy(tex, 2, &tiled, NULL) == SAMPLE_OK, "tiled copy");
+        for (d = 0; d < 3; ++d) {
+            const struct sample_level *L = &tex->level[drop[d][0]];
+            CHECK(sample_texture_tile_drop(tiled, drop[d][0], drop[d][1], drop[d][2], fill) == SAMPLE_OK, "drop");
+            for (y = 4 * drop[d][2]; y < 4 * drop[d][2] + 4; ++y)
+                for (x = 4 * drop[d][1]; x < 4 * drop[d][1] + 4; ++x)
+                    ls_tex_encode(tex, fill, L->data + (size_t)y * L->stride + (size_t)x * tex->texel_bytes);
+        }
+        for (k = 0; k < 8; ++k) {
+            sample_sampler s;
+            span_sampler(&s, k);
+            fill_long_footprints();
+            for (x = 0; x < NQ; x += 2) { /* half of them near the missing tiles */
+                qs[x].s = frand(0.0f, 0.3f);
+                qs[x].t = frand(0.0f, 0.3f);
+            }
+            sample_some(tex, &s, 0, k & 2, 0);
+            sample_some(tiled, &s, 1, k & 2, 0);
+            ++configs;
+            if (!same_results() && ++fails <= 10)
+                fprintf(stderr, "missing tiles differ: %s, footprint %s, wraps %s %s\n", sample_format_name(fm),
+                        sample_footprint_name(s.footprint), sample_wrap_name(s.wrap_s), sample_wrap_name(s.wrap_t));
+        }
+        sample_texture_destroy(tiled);
+        sample_texture_destroy(tex);
+    }
+    CHECK(fails == 0, "%d of %d configurations differ with missing tiles", fails, configs);
+}
+
 static void test_bad_arguments(void)
 {
     sample_texture *out = (sample_texture *)&out;
@@ -300,6 +431,8 @@ int main(void)
     RUN(test_missing_tiles_fast_path);
     RUN(test_one_call_per_block);
     RUN(test_one_call_per_tile_run);
+    RUN(test_footprint_spans_in_tiles);
+    RUN(test_footprint_spans_missing_tiles);
     RUN(test_bad_arguments);
     return check_finish();
 }

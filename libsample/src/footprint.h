@@ -222,7 +222,8 @@ typedef struct fp_level_rows {
     int in_place; /* float RGBA: texels inside the level are read where they are */
     /* hlim is 0 unless the texture is resident: the in-level tests
      * (fp_span_at, the counting passes, the prefetches) then fail without
-     * a test of their own, and every texel is read through ctx_texel. */
+     * a test of their own, and every span is read through the source
+     * (fp_span_texels). */
     double jlo, u0, v0, wlim, hlim;
     const unsigned char *data; /* the level's texel (0, 0); NULL unless resident */
     const isa_kernels *k;      /* the batch's kernels (sample_ctx.isa) */
@@ -375,12 +376,58 @@ SAMPLE_FORCE_INLINE double fp_row_span(const fp_level_rows *lr, int r, double j,
     return ncol;
 }
 
+/* Texels ilo … ilo + n − 1 of walk row j of a texture whose source holds
+ * its levels in tiles (texel.h, tile_side), as fp_span_texels returns
+ * them, bit for bit what ctx_texel reads (footprint_common.c). The span,
+ * wrapped as ctx_texel wraps each texel, is cut where it leaves a tile or
+ * where the wrapped texels stop following each other; each piece is one
+ * texel() call and one run of the format's row reader (tex_readers) into
+ * buf. A float RGBA span in one tile is returned in place. A tile the
+ * source cannot supply (NULL), a border texel and a texel an environment
+ * map finds on another face are read through ctx_texel. The row's sums
+ * are then made over buf in one go, in the order a resident span's are:
+ * the same bits (footprint_rows.c). */
+const unsigned char *ls_fp_span_tiles(const fp_level_rows *lr, double j, double ilo, int n, float (*buf)[4],
+                                      size_t *pitch);
+
+/* ls_fp_span_tiles with its common case inline: a span inside the level
+ * and inside one tile (nearly every row in 64² tiles) is one texel() call
+ * and one run of the row reader; out of line it cost about 100
+ * instructions a row (doc/texture-system.md, "The fast path reads the
+ * tiles"). */
+SAMPLE_FORCE_INLINE const unsigned char *fp_span_tile(const fp_level_rows *lr, double j, double ilo, int n,
+                                                      float (*buf)[4], size_t *pitch)
+{
+    const sample_texture *tex = lr->c->tex;
+    const struct ls_texel_source *src = tex->source;
+    const struct sample_level *L = &tex->level[lr->lv];
+    const int edge = ~(src->tile_side - 1);
+    if (j >= 0.0 && j < (double)(lr->tr ? L->w : L->h) && ilo >= 0.0 && ilo + n <= lr->wlim &&
+        ((int)ilo & edge) == (((int)ilo + n - 1) & edge)) {
+        const int i0 = (int)ilo, jj = (int)j;
+        const unsigned char *p = src->texel(src, lr->lv, lr->tr ? jj : i0, lr->tr ? i0 : jj, lr->c->face);
+        if (p) {
+            const size_t step = lr->tr ? (size_t)src->tile_side * tex->texel_bytes : tex->texel_bytes;
+            if (lr->in_place) {
+                *pitch = step;
+                return p;
+            }
+            tex_readers_in(lr->k, tex)->row(tex->format, tex->channels, p, step, n, buf);
+            *pitch = 16;
+            return (const unsigned char *)buf;
+        }
+    }
+    return ls_fp_span_tiles(lr, j, ilo, n, buf, pitch);
+}
+
 /* The n ≤ SAMPLE_MAX_FOOTPRINT_TEXELS texels ilo … ilo + n − 1 of walk row
  * j as float RGBA, *pitch bytes apart from the returned pointer, exactly as
  * ctx_texel reads them (linear rule): a float RGBA span inside the level
  * (at, fp_span_at) in place (nothing to decode), another span inside the
- * level decoded in one go by the format's reader (tex_readers) into buf, anything else texel by texel
- * through ctx_texel into buf (pitch 16). Load with memcpy. */
+ * level decoded in one go by the format's reader (tex_readers) into buf, a
+ * span of a texture in tiles piece by piece (ls_fp_span_tiles), anything
+ * else texel by texel through ctx_texel into buf (pitch 16). Load with
+ * memcpy. */
 SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr, double j, double ilo, int n,
                                                         const unsigned char *at, float (*buf)[4], size_t *pitch)
 {
@@ -393,6 +440,8 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
             return at;
         }
         tex_readers_in(lr->k, c->tex)->row(c->tex->format, c->tex->channels, at, lr->pitch, n, buf);
+    } else if (c->tex->source && c->tex->source->tile_side > 0) {
+        return fp_span_tile(lr, j, ilo, n, buf, pitch);
     } else if (!lr->tr) {
         for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
     } else {

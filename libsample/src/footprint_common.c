@@ -277,6 +277,86 @@ uint32_t ls_fp_footprint_run(const sample_ctx *c, const fp_plan *pl, float out[4
     return ls_fp_run_read(c, &pl->rs, out, dds, ddt, st);
 }
 
+/* ---- Spans of a texture in tiles ---------------------------------------- */
+
+static inline int min_int(int a, int b) { return a < b ? a : b; }
+
+/* Texels i … i + m − 1 of walk row j through ctx_texel into out: the
+ * border, another face, a tile the source cannot supply. Out of line: a
+ * rare case whose inlined reads would crowd the common one's registers. */
+static SAMPLE_NOINLINE void span_by_texel(const fp_level_rows *lr, double j, double i, int m, float (*out)[4])
+{
+    int t;
+    for (t = 0; t < m; ++t) ctx_texel(lr->c, lr->lv, lr->tr ? j : i + t, lr->tr ? i + t : j, 1, out[t]);
+}
+
+/* A piece of a walk row outside the level along it (wrapped, env NONE):
+ * its first texel x = the wrap mode's index of i (−1: the border colour)
+ * and how many of the next texels follow it, x + 1, x + 2, … inside one
+ * tile of `side` and the level's `along` texels, at most `rest` (REPEAT
+ * up to its seam; a mirror's reflected run has 1). */
+static SAMPLE_NOINLINE int wrapped_piece(sample_wrap mode, double i, int along, int side, int rest, int *x)
+{
+    int m = 1, lim;
+    *x = ls_wrap_index(mode, i, along, 1);
+    if (*x < 0) return 1;
+    lim = min_int(min_int(rest, side - (*x & (side - 1))), along - *x);
+    while (m < lim && ls_wrap_index(mode, i + m, along, 1) == *x + m) ++m;
+    return m;
+}
+
+const unsigned char *ls_fp_span_tiles(const fp_level_rows *lr, double j, double ilo, int n, float (*buf)[4],
+                                      size_t *pitch)
+{
+    const sample_ctx *c = lr->c;
+    const sample_texture *tex = c->tex;
+    const struct ls_texel_source *src = tex->source;
+    const struct sample_level *L = &tex->level[lr->lv];
+    const int side = src->tile_side, tr = lr->tr;
+    /* Along a walk row and across it: a level row's s and t, or a level
+     * column's t and s. In a tile, texels along a row are one texel apart,
+     * along a column `side` texels (texel.h, tile_side). */
+    const int along = tr ? L->h : L->w, across = tr ? L->w : L->h;
+    const size_t step = tr ? (size_t)side * tex->texel_bytes : tex->texel_bytes;
+    const int in_j = j >= 0.0 && j < (double)across, wraps = c->env == LS_ENV_NONE;
+    /* ctx_texel's mapping of the walk row: itself inside the level, the
+     * wrap mode's index outside (−1: the border colour) unless an
+     * environment map finds it (then every texel goes through ctx_texel:
+     * −1 here too). */
+    const int jj = in_j ? (int)j : wraps ? ls_wrap_index(tr ? c->smp->wrap_s : c->smp->wrap_t, j, across, 1) : -1;
+    int k = 0;
+    *pitch = 16;
+    if (jj < 0) {
+        span_by_texel(lr, j, ilo, n, buf);
+        return (const unsigned char *)buf;
+    }
+    while (k < n) {
+        const double i = ilo + k;
+        const int in_i = i >= 0.0 && i < (double)along;
+        const unsigned char *p = NULL;
+        int x = -1, m = 1;
+        /* The texels x, x + 1, … up to the tile's edge or the level's:
+         * inside the level along the row, all of them. */
+        if (in_i) {
+            x = (int)i;
+            m = min_int(min_int(n - k, side - (x & (side - 1))), along - x);
+        } else if (wraps) {
+            m = wrapped_piece(tr ? c->smp->wrap_t : c->smp->wrap_s, i, along, side, n - k, &x);
+        }
+        /* ctx_texel's layer: the query's face inside the level, the first
+         * layer through the wrap modes (tex_read). */
+        if (x >= 0) p = src->texel(src, lr->lv, tr ? jj : x, tr ? x : jj, in_i && in_j ? c->face : 0);
+        if (!p) span_by_texel(lr, j, i, m, buf + k);
+        else if (m == n && lr->in_place) {
+            *pitch = step;
+            return p;
+        } else
+            tex_readers_in(lr->k, tex)->row(tex->format, tex->channels, p, step, m, buf + k);
+        k += m;
+    }
+    return (const unsigned char *)buf;
+}
+
 /* ---- Cube maps: a footprint over several faces -------------------------- */
 
 /* The faces a cube-map query's footprint is read on (ls_fp_cube_read): the
