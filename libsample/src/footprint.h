@@ -440,7 +440,7 @@ SAMPLE_FORCE_INLINE const unsigned char *fp_span_texels(const fp_level_rows *lr,
             return at;
         }
         tex_readers_in(lr->k, c->tex)->row(c->tex->format, c->tex->channels, at, lr->pitch, n, buf);
-    } else if (c->tex->source && c->tex->source->tile_side > 0) {
+    } else if (c->tex->source && c->tex->source->tile_side > 0 && tex_source_level_in_tiles(c->tex->source, lr->lv)) {
         return fp_span_tile(lr, j, ilo, n, buf, pitch);
     } else if (!lr->tr) {
         for (k = 0; k < n; ++k) ctx_texel(c, lr->lv, ilo + k, j, 1, buf[k]);
