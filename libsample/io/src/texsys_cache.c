@@ -196,7 +196,7 @@ static void ring_remove(sample_texsys *sys, ts_tile *t)
 static void ts_evict_one(sample_texsys *sys)
 {
     ts_tile *t = sys->hand;
-    while (atomic_exchange_explicit(&t->used, 0, memory_order_relaxed)) t = t->next;
+    while (atomic_exchange_explicit(&t->file->refs[t->lv][t->slot], 0, memory_order_relaxed)) t = t->next;
     sys->hand = t;
     ring_remove(sys, t);
     atomic_store_explicit(&t->file->slots[t->lv][t->slot], NULL, memory_order_release);
@@ -232,7 +232,6 @@ static ts_tile *ts_tile_alloc(ts_file *f, int lv, size_t slot, size_t px_bytes, 
         t->lv = lv;
         t->slot = slot;
         t->bytes = bytes;
-        t->px = (unsigned char *)(t + 1);
         sys->resident += bytes;
         note_memory(sys);
     }
@@ -257,7 +256,7 @@ static void ts_publish(ts_file *f, ts_tile *t, size_t texel_bytes, int direct)
 {
     sample_texsys *sys = f->h.sys;
     pthread_mutex_lock(&sys->lock);
-    atomic_store_explicit(&t->used, 1, memory_order_relaxed);
+    atomic_store_explicit(&f->refs[t->lv][t->slot], 1, memory_order_relaxed);
     ring_insert(sys, t);
     sys->st.tiles_read++;
     if (direct) sys->st.tiles_direct++;
@@ -365,7 +364,7 @@ static void copy_tile(const ts_file *f, const sample_texture *from, int lv, int 
     int j;
     tile_extent(f, lv, tx, ty, &w, &h);
     for (j = 0; j < h; ++j)
-        memcpy(t->px + (size_t)j * (size_t)side * tb, L->data + (size_t)(j0 + j) * L->stride + (size_t)i0 * tb,
+        memcpy(ts_px(t) + (size_t)j * (size_t)side * tb, L->data + (size_t)(j0 + j) * L->stride + (size_t)i0 * tb,
                (size_t)w * tb);
 }
 
@@ -460,7 +459,7 @@ static ts_tile *load_tile(ts_file *f, int lv, int tx, int ty, size_t slot, sampl
         return NULL;
     }
     if (f->exr && plan_is_identity(f)) {
-        st = io_exr_tile_read(f->exr, lv, tx, ty, w, h, t->px, tb, line, err);
+        st = io_exr_tile_read(f->exr, lv, tx, ty, w, h, ts_px(t), tb, line, err);
     } else {
         const size_t n = (size_t)w * (size_t)h;
         buf = (unsigned char *)malloc(n * (size_t)f->plan.nchan * 4);
@@ -474,7 +473,7 @@ static ts_tile *load_tile(ts_file *f, int lv, int tx, int ty, size_t slot, sampl
                                       err);
         if (st == SAMPLE_OK) st = io_plan_apply(f->h.sys->col, &f->plan, buf, n, err);
         for (j = 0; st == SAMPLE_OK && j < h; ++j)
-            memcpy(t->px + (size_t)j * line, buf + (size_t)j * (size_t)w * tb, (size_t)w * tb);
+            memcpy(ts_px(t) + (size_t)j * line, buf + (size_t)j * (size_t)w * tb, (size_t)w * tb);
         free(buf);
     }
     if (st != SAMPLE_OK) {
@@ -518,13 +517,13 @@ static const unsigned char *ts_texel(const struct ls_texel_source *src, int lv, 
     ts_tile *t = atomic_load_explicit(&f->slots[lv][slot], memory_order_acquire);
     (void)layer; /* 2D files */
     if (SAMPLE_LIKELY(t != NULL)) {
-        if (!atomic_load_explicit(&t->used, memory_order_relaxed))
-            atomic_store_explicit(&t->used, 1, memory_order_relaxed);
+        atomic_uchar *ref = &f->refs[lv][slot];
+        if (!atomic_load_explicit(ref, memory_order_relaxed)) atomic_store_explicit(ref, 1, memory_order_relaxed);
     } else {
         t = ts_miss(f, lv, i >> b, j >> b, slot);
     }
     if (t == &ts_failed) return NULL;
-    return t->px + (((size_t)(j & m) << b) + (size_t)(i & m)) * f->tex->texel_bytes;
+    return ts_px(t) + (((size_t)(j & m) << b) + (size_t)(i & m)) * f->tex->texel_bytes;
 }
 
 /* The texture's destroy hook does nothing: the system owns the file. */
@@ -548,18 +547,20 @@ sample_status io_ts_file_source_init(ts_file *f, sample_error *err)
         const struct sample_level *L = &f->tex->level[lv];
         f->ntx[lv] = (L->w + side - 1) / side;
         f->nty[lv] = (L->h + side - 1) / side;
-        table += (uint64_t)f->ntx[lv] * (uint64_t)f->nty[lv] * sizeof *f->slots[lv];
+        table += (uint64_t)f->ntx[lv] * (uint64_t)f->nty[lv] * (sizeof *f->slots[lv] + sizeof *f->refs[lv]);
     }
     /* The table of tile pointers lies outside the limit: one larger than
      * the whole cache (65536² in tiles of 4 would need 2 GiB) is refused
      * rather than allocated. */
     RETURN_ERROR_IF(table > f->h.sys->limit, err, SAMPLE_E_TOO_LARGE,
                     "'%s': its table of %llu tiles of %d texels a side needs %llu bytes, more than the cache's %zu",
-                    f->path, (unsigned long long)(table / sizeof *f->slots[0]), side, (unsigned long long)table,
+                    f->path, (unsigned long long)(table / (sizeof *f->slots[0] + sizeof *f->refs[0])), side, (unsigned long long)table,
                     f->h.sys->limit);
     for (lv = 0; lv < f->tex->nlevels; ++lv) {
         f->slots[lv] = (_Atomic(ts_tile *) *)calloc((size_t)f->ntx[lv] * (size_t)f->nty[lv], sizeof *f->slots[lv]);
-        RETURN_ERROR_IF(!f->slots[lv], err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate the tile table of '%s'", f->path);
+        f->refs[lv] = (atomic_uchar *)calloc((size_t)f->ntx[lv] * (size_t)f->nty[lv], sizeof *f->refs[lv]);
+        RETURN_ERROR_IF(!f->slots[lv] || !f->refs[lv], err, SAMPLE_E_OUT_OF_MEMORY,
+                        "cannot allocate the tile table of '%s'", f->path);
     }
     return SAMPLE_OK;
 }
@@ -571,6 +572,7 @@ void io_ts_file_free(ts_file *f)
     int lv;
     size_t k;
     for (lv = 0; lv < SAMPLE_MAX_LEVELS; ++lv) {
+        free(f->refs[lv]);
         if (!f->slots[lv]) continue;
         for (k = 0; k < (size_t)f->ntx[lv] * (size_t)f->nty[lv]; ++k) {
             ts_tile *t = atomic_load_explicit(&f->slots[lv][k], memory_order_relaxed);

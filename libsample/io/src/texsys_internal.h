@@ -67,9 +67,12 @@ typedef struct ts_tile {
     int lv;
     size_t slot;  /* index in file->slots[lv] */
     size_t bytes; /* what it counts against the limit */
-    atomic_int used; /* the clock's reference bit */
-    unsigned char *px; /* 2^log2 × 2^log2 texels, row after row */
 } ts_tile;
+
+/* A tile's 2^log2 × 2^log2 texels, row after row, follow its header in
+ * one allocation; a hit computes their address, so that it touches no
+ * line of the tile but the texels it reads. */
+static inline unsigned char *ts_px(ts_tile *t) { return (unsigned char *)(t + 1); }
 
 struct ts_file {
     ts_head h; /* first */
@@ -79,6 +82,10 @@ struct ts_file {
     int file_tiled; /* 1: tiles read from the file; 0: read whole */
     int ntx[SAMPLE_MAX_LEVELS], nty[SAMPLE_MAX_LEVELS];
     _Atomic(ts_tile *) *slots[SAMPLE_MAX_LEVELS]; /* NULL: absent */
+    /* The clock's reference bits, one a slot, beside the slots rather
+     * than in the tiles: a hit sets its bit without loading a line of the
+     * tile's header (a cache miss on a cold tile, before the texels' own). */
+    atomic_uchar *refs[SAMPLE_MAX_LEVELS];
     io_reader_info inf;
     io_plan plan;
     /* The colour space texels are decoded from: the open's, else the
