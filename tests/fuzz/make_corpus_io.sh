@@ -15,3 +15,14 @@ seed 3 rgba_half.exr exr_half
 seed 3 rgb_float.exr exr_float
 seed 4 rgb.hdr hdr_rgb
 seed 5 rgb8.tga tga_rgb8
+# Tiled, mip-mapped OpenEXR (8² tiles, ZIP and uncompressed, as maketx
+# writes them) for the texture system's tile readers (fuzz_io's second half:
+# the direct OpenEXR tile reader, OpenImageIO's read_tiles for .tx).
+tmp=$(mktemp -d)
+maketx "$img/rgba_half.exr" -o "$tmp/zip.exr" --tile 8 8 --compression zip -d half >/dev/null
+maketx "$img/rgba_half.exr" -o "$tmp/none.exr" --tile 8 8 --compression none -d half >/dev/null
+img=$tmp
+seed 3 zip.exr exr_tiled_zip
+seed 3 none.exr exr_tiled_none
+seed 7 zip.exr tx_tiled_zip
+rm -r "$tmp"
