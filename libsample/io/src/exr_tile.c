@@ -110,12 +110,11 @@ sample_status io_exr_tile_open(const char *path, const sample_texture *tex, int 
     io_exr_tile *x;
     *out = NULL;
     x = (io_exr_tile *)calloc(1, sizeof *x);
-    if (x) x->path = (char *)malloc(strlen(path) + 1);
+    if (x) x->path = io_strdup(path);
     if (!x || !x->path) {
         free(x);
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate an OpenEXR tile reader");
     }
-    strcpy(x->path, path);
     init.error_handler_fn = keep_message;
     /* A header the core cannot parse is OpenImageIO's to report, as
      * exr_read.cpp leaves it; a file whose chunk table is damaged fails

@@ -23,6 +23,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifdef __cplusplus
@@ -300,5 +301,16 @@ sample_status io_tga_guard_file(const char *path, sample_error *err);
 #ifdef __cplusplus
 }
 #endif
+
+/* A copy of s in memory of its own (malloc; NULL for NULL or when memory
+ * is refused): the C11 library has no strdup. */
+static inline char *io_strdup(const char *s)
+{
+    char *d;
+    if (!s) return NULL;
+    d = (char *)malloc(strlen(s) + 1);
+    if (d) memcpy(d, s, strlen(s) + 1);
+    return d;
+}
 
 #endif

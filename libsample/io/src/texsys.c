@@ -16,15 +16,6 @@ void sample_texsys_options_init(sample_texsys_options *o)
     o->max_open_files = 100;
 }
 
-static char *dup_string(const char *s)
-{
-    char *d;
-    if (!s) return NULL;
-    d = (char *)malloc(strlen(s) + 1);
-    if (d) strcpy(d, s);
-    return d;
-}
-
 sample_status sample_texsys_create(const sample_texsys_options *o, sample_texsys **out, sample_error *err)
 {
     sample_texsys_options defaults;
@@ -44,8 +35,8 @@ sample_status sample_texsys_create(const sample_texsys_options *o, sample_texsys
     sys = (sample_texsys *)calloc(1, sizeof *sys);
     if (!sys) return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture system");
     sys->o = *o;
-    sys->ocio_config = dup_string(o->ocio_config);
-    sys->colorspace = dup_string(o->colorspace);
+    sys->ocio_config = io_strdup(o->ocio_config);
+    sys->colorspace = io_strdup(o->colorspace);
     sys->o.ocio_config = sys->o.colorspace = NULL;
     sys->limit = (size_t)(o->max_memory_mb * 1048576.0);
     pthread_mutex_init(&sys->lock, NULL);
@@ -168,7 +159,7 @@ static sample_status open_new(sample_texsys *sys, const char *path, const char *
     ts_file *f = (ts_file *)calloc(1, sizeof *f);
     io_reader *r = NULL;
     sample_status st;
-    if (!f || !(f->path = dup_string(path))) {
+    if (!f || !(f->path = io_strdup(path))) {
         free(f);
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture entry");
     }

@@ -84,11 +84,10 @@ sample_status io_ts_whole_open(sample_texsys *sys, const char *path, const char 
         (kind = whole_kind(path, cs, err)) <= 0)
         return SAMPLE_OK;
     w = (ts_whole *)calloc(1, sizeof *w);
-    if (!w || !(w->path = (char *)malloc(strlen(path) + 1)) || !(w->tex = (sample_texture *)calloc(1, sizeof *w->tex))) {
+    if (!w || !(w->path = io_strdup(path)) || !(w->tex = (sample_texture *)calloc(1, sizeof *w->tex))) {
         whole_free(w);
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a texture entry");
     }
-    strcpy(w->path, path);
     if (cs) {
         snprintf(w->colorspace_own, sizeof w->colorspace_own, "%s", cs);
         w->colorspace = w->colorspace_own;

@@ -190,11 +190,10 @@ sample_status io_ts_udim_open(sample_texsys *sys, const char *name, const char *
             return SAMPLE_OK;
         }
     u = (ts_udim *)calloc(1, sizeof *u);
-    if (!u || !(u->name = (char *)malloc(strlen(name) + 1))) {
+    if (!u || !(u->name = io_strdup(name))) {
         free(u);
         return sample_error_set(err, SAMPLE_E_OUT_OF_MEMORY, "cannot allocate a UDIM set");
     }
-    strcpy(u->name, name);
     u->h.sys = sys;
     u->h.udim = 1;
     /* UDIM numbers 1001 to 1100: u < 10, v < 10. */
